@@ -1,0 +1,9 @@
+//! Bus models: an Avalon-MM host standing in for the lightweight HPS-to-FPGA bridge.
+
+mod avalon_host;
+mod register_bus;
+mod register_model;
+
+pub use avalon_host::AvalonHost;
+pub use register_bus::SimRegisterBus;
+pub use register_model::RegisterFileModel;

@@ -1,0 +1,9 @@
+//! The world the Skylux device lives in, modelled so the whole device runs on a laptop bit for
+//! bit as the hardware would: the bus models around the fabric now; the sensor, lens, sky and
+//! SDRAM models as the issues that need them land.
+//!
+//! `sim/` holds models only, never product logic: the product is `rtl/` and `hps/`.
+
+pub mod bus;
+
+pub use bus::{AvalonHost, RegisterFileModel, SimRegisterBus};
