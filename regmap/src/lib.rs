@@ -205,7 +205,7 @@ pub struct Location {
 
 /// Finds the register at a byte offset of the lightweight bridge window, if any.
 pub fn locate(offset: u32) -> Option<Location> {
-    if offset % 4 != 0 {
+    if !offset.is_multiple_of(4) {
         return None;
     }
     MAP.iter().find_map(|block| {

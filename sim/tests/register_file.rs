@@ -4,7 +4,6 @@
 //! sequences against the behavioural model.
 
 use rand::{Rng, SeedableRng};
-use rust_hdl::prelude::*;
 use skylux_regmap::*;
 use skylux_rtl::RegisterFile;
 use skylux_sim::{AvalonHost, RegisterFileModel};

@@ -55,7 +55,7 @@ impl<T: RegisterBus + ?Sized> RegisterBus for Box<T> {
 /// Checks an access of `len` bytes at `offset` against a window of `size` bytes with the
 /// given alignment, without overflowing on 32-bit targets.
 pub fn check_access(offset: u64, len: u64, size: u64, align: u64) -> Result<(), BusError> {
-    if offset % align != 0 {
+    if !offset.is_multiple_of(align) {
         return Err(BusError::Unaligned { offset, align });
     }
     match offset.checked_add(len) {

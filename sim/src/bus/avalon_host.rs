@@ -71,9 +71,7 @@ impl<D: AvalonAgent> AvalonHost<D> {
         d.avs_read().next = true;
         self.idle(1)?;
         self.driver.dut.avs_read().next = false;
-        for _ in 1..READ_LATENCY_CYCLES {
-            self.idle(1)?;
-        }
+        self.idle(READ_LATENCY_CYCLES as u64 - 1)?;
         self.driver.settle()?;
         let data = self.driver.dut.avs_readdata().to_u64() as u32;
         self.idle(1)?;

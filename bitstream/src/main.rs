@@ -1,0 +1,71 @@
+//! `skylux-bitstream`: Verilog export and the open-source checks.
+//!
+//! - `verilog [--out DIR]`: writes every block as `DIR/<block>.v` (default `target/verilog`).
+//! - `check`: lints, structurally checks and synthesises every block for the Cyclone V and
+//!   prints the resource table (Markdown) that BENCHMARKS.md carries.
+
+use skylux_bitstream::blocks::BLOCKS;
+use skylux_bitstream::xcheck;
+use std::path::PathBuf;
+
+/// Capacity of the 5CSEMA5 (hardware-facts.md §2: 32,070 ALMs, 397 M10K, 87 DSP blocks).
+const DEVICE_ALMS: u64 = 32_070;
+const DEVICE_M10K: u64 = 397;
+const DEVICE_DSP: u64 = 87;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let result = match args.first().map(String::as_str) {
+        Some("verilog") => export(
+            args.iter()
+                .position(|a| a == "--out")
+                .and_then(|i| args.get(i + 1))
+                .map(PathBuf::from),
+        ),
+        Some("check") => check(),
+        _ => Err("usage: skylux-bitstream verilog [--out DIR] | check".to_string()),
+    };
+    if let Err(e) = result {
+        eprintln!("skylux-bitstream: {e}");
+        std::process::exit(1);
+    }
+}
+
+fn export(out: Option<PathBuf>) -> Result<(), String> {
+    let dir = out.unwrap_or_else(|| PathBuf::from("target/verilog"));
+    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    for block in BLOCKS {
+        let path = dir.join(format!("{}.v", block.name));
+        std::fs::write(&path, (block.verilog)()).map_err(|e| format!("{}: {e}", path.display()))?;
+        println!("wrote {}", path.display());
+    }
+    Ok(())
+}
+
+fn check() -> Result<(), String> {
+    println!("| block | LUTs | carry ALUTs | FFs | ALMs (est.) | M10K | DSP | % of 5CSEMA5 ALMs |");
+    println!("|---|---|---|---|---|---|---|---|");
+    for block in BLOCKS {
+        let v = (block.verilog)();
+        let fail = |e: xcheck::ToolError| format!("{}: {e}", block.name);
+        xcheck::lint(block.name, &v).map_err(fail)?;
+        xcheck::structural_check(block.name, &v).map_err(fail)?;
+        let r = xcheck::synthesize(block.name, &v).map_err(fail)?;
+        let alms = r.alm_estimate();
+        if alms > DEVICE_ALMS || r.m10k > DEVICE_M10K || r.dsp > DEVICE_DSP {
+            return Err(format!("{} does not fit the 5CSEMA5: {r:?}", block.name));
+        }
+        println!(
+            "| {} | {} | {} | {} | {} | {} | {} | {:.1} % |",
+            block.name,
+            r.luts,
+            r.carry_aluts,
+            r.flip_flops,
+            alms,
+            r.m10k,
+            r.dsp,
+            100.0 * alms as f64 / DEVICE_ALMS as f64
+        );
+    }
+    Ok(())
+}

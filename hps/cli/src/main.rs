@@ -1,0 +1,33 @@
+//! `skylux`: the command-line tool of the Skylux device.
+
+mod demo;
+mod regs;
+
+use clap::{Parser, Subcommand};
+
+#[derive(Parser)]
+#[command(
+    name = "skylux",
+    version,
+    about = "Skylux: measure the sky, compute daylight inside"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Runs the main job on a built-in default (today: the deepest slice that works end to end,
+    /// the HPS driver against the cycle-accurate fabric model).
+    Demo,
+    /// Reads every register and prints it decoded, field by field.
+    Regs(regs::RegsArgs),
+}
+
+fn main() -> anyhow::Result<()> {
+    match Cli::parse().command {
+        Command::Demo => demo::run(),
+        Command::Regs(args) => regs::run(&args),
+    }
+}
