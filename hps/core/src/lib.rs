@@ -1,4 +1,5 @@
 //! The HPS side of Skylux: drivers for the fabric (over `skylux-bus`), and from later issues
 //! HDR synthesis, the sky, the sun and the daylighting engine.
 
+pub mod camera;
 pub mod fpga;
