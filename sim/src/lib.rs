@@ -5,5 +5,6 @@
 //! `sim/` holds models only, never product logic: the product is `rtl/` and `hps/`.
 
 pub mod bus;
+pub mod sensor;
 
 pub use bus::{AvalonHost, RegisterFileModel, SimRegisterBus};

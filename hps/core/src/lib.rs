@@ -2,4 +2,6 @@
 //! HDR synthesis, the sky, the sun and the daylighting engine.
 
 pub mod camera;
+pub mod campaign;
 pub mod fpga;
+pub mod hdr;

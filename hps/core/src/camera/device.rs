@@ -53,6 +53,28 @@ pub struct OrientationConfig {
     pub roll_deg: f64,
 }
 
+/// `[noise]` (optional; a Skylux extension of campaign.md): the sensor's noise at unity gain,
+/// used for noise-optimal HDR weights and for the noise bound the tests derive.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct NoiseConfig {
+    /// Digital numbers per photo-electron at unity analog gain. Default: a 12-bit full scale
+    /// (4095 DN) over the full well implied by the MT9P031's 38.1 dB peak SNR
+    /// (SNR_max = √N_full, so N_full = 10^(38.1/10) = 6457 e⁻): 0.634 DN/e⁻.
+    pub conversion_dn_per_e: f64,
+    /// Temporal read noise, DN RMS. Default 2.0: a typical figure for this sensor class, not a
+    /// datasheet value; calibrate it from dark frames.
+    pub read_noise_dn: f64,
+}
+
+impl Default for NoiseConfig {
+    fn default() -> Self {
+        Self {
+            conversion_dn_per_e: 4095.0 / 10f64.powf(38.1 / 10.0),
+            read_noise_dn: 2.0,
+        }
+    }
+}
+
 /// The whole `device.toml`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct DeviceConfig {
@@ -60,24 +82,43 @@ pub struct DeviceConfig {
     pub response: ResponseConfig,
     pub lens: LensConfig,
     pub orientation: OrientationConfig,
+    #[serde(default)]
+    pub noise: NoiseConfig,
 }
 
 /// Why a `device.toml` could not be used.
 #[derive(Debug, thiserror::Error)]
 pub enum DeviceError {
     #[error("{path}: {source}")]
-    Io { path: PathBuf, source: std::io::Error },
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
     #[error("{path}: {message}")]
     Parse { path: PathBuf, message: String },
     #[error("{path}: {field}: {reason}")]
-    Invalid { path: PathBuf, field: &'static str, reason: String },
+    Invalid {
+        path: PathBuf,
+        field: &'static str,
+        reason: String,
+    },
 }
 
 const KNOWN_KEYS: &[(&str, &[&str])] = &[
-    ("sensor", &["black_level_dn", "valid_min_dn", "valid_max_dn"]),
+    (
+        "sensor",
+        &["black_level_dn", "valid_min_dn", "valid_max_dn"],
+    ),
     ("response", &["cg", "weights"]),
-    ("lens", &["focal_px", "center_px", "distortion", "vignetting"]),
-    ("orientation", &["axis_azimuth_deg", "axis_altitude_deg", "roll_deg"]),
+    (
+        "lens",
+        &["focal_px", "center_px", "distortion", "vignetting"],
+    ),
+    (
+        "orientation",
+        &["axis_azimuth_deg", "axis_altitude_deg", "roll_deg"],
+    ),
+    ("noise", &["conversion_dn_per_e", "read_noise_dn"]),
 ];
 
 impl Default for DeviceConfig {
@@ -85,15 +126,27 @@ impl Default for DeviceConfig {
     /// centred on the 2592 x 1944 array, facing south 16° above the horizon.
     fn default() -> Self {
         Self {
-            sensor: SensorConfig { black_level_dn: 0.0, valid_min_dn: 40.0, valid_max_dn: 3100.0 },
-            response: ResponseConfig { cg: 1.0, weights: [0.2, 0.7, 0.1] },
+            sensor: SensorConfig {
+                black_level_dn: 0.0,
+                valid_min_dn: 40.0,
+                valid_max_dn: 3100.0,
+            },
+            response: ResponseConfig {
+                cg: 1.0,
+                weights: [0.2, 0.7, 0.1],
+            },
             lens: LensConfig {
                 focal_px: 1136.0,
                 center_px: [1296.0, 972.0],
                 distortion: [0.0; 4],
                 vignetting: vec![1.0, 0.0, 0.0, 0.0, 0.0],
             },
-            orientation: OrientationConfig { axis_azimuth_deg: 180.0, axis_altitude_deg: 16.0, roll_deg: 0.0 },
+            orientation: OrientationConfig {
+                axis_azimuth_deg: 180.0,
+                axis_altitude_deg: 16.0,
+                roll_deg: 0.0,
+            },
+            noise: NoiseConfig::default(),
         }
     }
 }
@@ -102,13 +155,19 @@ impl DeviceConfig {
     /// Reads and validates a `device.toml`. Returns the configuration and one warning per
     /// unknown key.
     pub fn read(path: &Path) -> Result<(Self, Vec<String>), DeviceError> {
-        let text = std::fs::read_to_string(path).map_err(|source| DeviceError::Io { path: path.into(), source })?;
+        let text = std::fs::read_to_string(path).map_err(|source| DeviceError::Io {
+            path: path.into(),
+            source,
+        })?;
         Self::parse(&text, path)
     }
 
     /// Parses and validates `device.toml` text; `path` only names the source in messages.
     pub fn parse(text: &str, path: &Path) -> Result<(Self, Vec<String>), DeviceError> {
-        let parse_error = |e: toml::de::Error| DeviceError::Parse { path: path.into(), message: describe(text, &e) };
+        let parse_error = |e: toml::de::Error| DeviceError::Parse {
+            path: path.into(),
+            message: describe(text, &e),
+        };
         let table: toml::Table = toml::from_str(text).map_err(parse_error)?;
         let mut warnings = vec![];
         for (key, value) in &table {
@@ -117,7 +176,10 @@ impl DeviceConfig {
                 Some((section, keys)) => {
                     if let Some(inner) = value.as_table() {
                         for k in inner.keys().filter(|k| !keys.contains(&k.as_str())) {
-                            warnings.push(format!("{}: unknown key `{section}.{k}` ignored", path.display()));
+                            warnings.push(format!(
+                                "{}: unknown key `{section}.{k}` ignored",
+                                path.display()
+                            ));
                         }
                     }
                 }
@@ -131,13 +193,25 @@ impl DeviceConfig {
     /// Writes the configuration as `device.toml`.
     pub fn write(&self, path: &Path) -> Result<(), DeviceError> {
         self.validate(path)?;
-        let text = toml::to_string_pretty(self).map_err(|e| DeviceError::Parse { path: path.into(), message: e.to_string() })?;
-        std::fs::write(path, text).map_err(|source| DeviceError::Io { path: path.into(), source })
+        let text = toml::to_string_pretty(self).map_err(|e| DeviceError::Parse {
+            path: path.into(),
+            message: e.to_string(),
+        })?;
+        std::fs::write(path, text).map_err(|source| DeviceError::Io {
+            path: path.into(),
+            source,
+        })
     }
 
     /// Checks every value for the range the model needs.
     pub fn validate(&self, path: &Path) -> Result<(), DeviceError> {
-        let bad = |field: &'static str, reason: String| Err(DeviceError::Invalid { path: path.into(), field, reason });
+        let bad = |field: &'static str, reason: String| {
+            Err(DeviceError::Invalid {
+                path: path.into(),
+                field,
+                reason,
+            })
+        };
         let finite: [(&'static str, &[f64]); 10] = [
             ("sensor.black_level_dn", &[self.sensor.black_level_dn]),
             ("sensor.valid_min_dn", &[self.sensor.valid_min_dn]),
@@ -150,7 +224,11 @@ impl DeviceConfig {
             ("lens.vignetting", &self.lens.vignetting),
             (
                 "orientation",
-                &[self.orientation.axis_azimuth_deg, self.orientation.axis_altitude_deg, self.orientation.roll_deg],
+                &[
+                    self.orientation.axis_azimuth_deg,
+                    self.orientation.axis_altitude_deg,
+                    self.orientation.roll_deg,
+                ],
             ),
         ];
         for (field, values) in finite {
@@ -160,28 +238,70 @@ impl DeviceConfig {
         }
         let s = &self.sensor;
         if !(0.0..=4095.0).contains(&s.black_level_dn) {
-            return bad("sensor.black_level_dn", format!("{} is outside 0..4095", s.black_level_dn));
+            return bad(
+                "sensor.black_level_dn",
+                format!("{} is outside 0..4095", s.black_level_dn),
+            );
         }
         if !(s.valid_min_dn >= 0.0 && s.valid_min_dn < s.valid_max_dn && s.valid_max_dn <= 4095.0) {
-            return bad("sensor.valid_min_dn", format!("need 0 <= valid_min_dn < valid_max_dn <= 4095, got {} and {}", s.valid_min_dn, s.valid_max_dn));
+            return bad(
+                "sensor.valid_min_dn",
+                format!(
+                    "need 0 <= valid_min_dn < valid_max_dn <= 4095, got {} and {}",
+                    s.valid_min_dn, s.valid_max_dn
+                ),
+            );
         }
         if s.valid_max_dn <= s.black_level_dn {
-            return bad("sensor.valid_max_dn", "must be above the black level".into());
+            return bad(
+                "sensor.valid_max_dn",
+                "must be above the black level".into(),
+            );
         }
         if self.response.cg <= 0.0 {
-            return bad("response.cg", format!("{} must be positive", self.response.cg));
+            return bad(
+                "response.cg",
+                format!("{} must be positive", self.response.cg),
+            );
         }
-        if self.response.weights.iter().any(|w| *w < 0.0) || self.response.weights.iter().sum::<f64>() <= 0.0 {
-            return bad("response.weights", "must be non-negative with a positive sum".into());
+        if self.response.weights.iter().any(|w| *w < 0.0)
+            || self.response.weights.iter().sum::<f64>() <= 0.0
+        {
+            return bad(
+                "response.weights",
+                "must be non-negative with a positive sum".into(),
+            );
         }
         if self.lens.focal_px <= 0.0 {
-            return bad("lens.focal_px", format!("{} must be positive", self.lens.focal_px));
+            return bad(
+                "lens.focal_px",
+                format!("{} must be positive", self.lens.focal_px),
+            );
         }
         if self.lens.vignetting.is_empty() || self.lens.vignetting.iter().sum::<f64>() <= 0.0 {
-            return bad("lens.vignetting", "needs at least a_0, and V(0) = sum of a_i must be positive".into());
+            return bad(
+                "lens.vignetting",
+                "needs at least a_0, and V(0) = sum of a_i must be positive".into(),
+            );
+        }
+        let n = &self.noise;
+        if !(n.conversion_dn_per_e.is_finite() && n.conversion_dn_per_e > 0.0) {
+            return bad(
+                "noise.conversion_dn_per_e",
+                format!("{} must be a positive number", n.conversion_dn_per_e),
+            );
+        }
+        if !(n.read_noise_dn.is_finite() && n.read_noise_dn >= 0.0) {
+            return bad(
+                "noise.read_noise_dn",
+                format!("{} must be a non-negative number", n.read_noise_dn),
+            );
         }
         if !(-90.0..=90.0).contains(&self.orientation.axis_altitude_deg) {
-            return bad("orientation.axis_altitude_deg", format!("{} is outside -90..90", self.orientation.axis_altitude_deg));
+            return bad(
+                "orientation.axis_altitude_deg",
+                format!("{} is outside -90..90", self.orientation.axis_altitude_deg),
+            );
         }
         Ok(())
     }

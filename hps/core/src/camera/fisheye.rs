@@ -14,7 +14,11 @@ pub struct KannalaBrandt {
 
 impl KannalaBrandt {
     pub fn new(focal_px: f64, distortion: [f64; 4]) -> Self {
-        let mut lens = Self { focal_px, distortion, max_theta_rad: 0.0 };
+        let mut lens = Self {
+            focal_px,
+            distortion,
+            max_theta_rad: 0.0,
+        };
         lens.max_theta_rad = lens.find_max_theta_rad();
         lens
     }

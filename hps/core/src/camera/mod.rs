@@ -8,7 +8,8 @@ mod fisheye;
 mod model;
 
 pub use device::{
-    DeviceConfig, DeviceError, LensConfig, OrientationConfig, ResponseConfig, SensorConfig,
+    DeviceConfig, DeviceError, LensConfig, NoiseConfig, OrientationConfig, ResponseConfig,
+    SensorConfig,
 };
 pub use fisheye::KannalaBrandt;
 pub use model::{alt_az_from_direction, direction_from_alt_az, CameraModel, ImagePoint};

@@ -61,7 +61,12 @@ impl CameraModel {
         let world_to_camera = DMat3::from_cols(x, y, axis).transpose();
         let lens = KannalaBrandt::new(config.lens.focal_px, config.lens.distortion);
         let max_theta_rad = lens.max_theta_rad();
-        Self { config, lens, world_to_camera, max_theta_rad }
+        Self {
+            config,
+            lens,
+            world_to_camera,
+            max_theta_rad,
+        }
     }
 
     /// The optical axis in world coordinates.
@@ -84,9 +89,16 @@ impl CameraModel {
             return None;
         }
         let r = self.lens.radius_px(theta);
-        let (cos_phi, sin_phi) = if rho > 0.0 { (d.x / rho, d.y / rho) } else { (1.0, 0.0) };
+        let (cos_phi, sin_phi) = if rho > 0.0 {
+            (d.x / rho, d.y / rho)
+        } else {
+            (1.0, 0.0)
+        };
         let [cx, cy] = self.config.lens.center_px;
-        Some(ImagePoint { x_px: cx + r * cos_phi, y_px: cy + r * sin_phi })
+        Some(ImagePoint {
+            x_px: cx + r * cos_phi,
+            y_px: cy + r * sin_phi,
+        })
     }
 
     /// The world direction imaged at a point, or `None` outside the lens model's range.
@@ -96,21 +108,34 @@ impl CameraModel {
         let r = (dx * dx + dy * dy).sqrt();
         let theta = self.lens.theta_rad(r)?;
         let (sin_t, cos_t) = theta.sin_cos();
-        let (cos_phi, sin_phi) = if r > 0.0 { (dx / r, dy / r) } else { (1.0, 0.0) };
+        let (cos_phi, sin_phi) = if r > 0.0 {
+            (dx / r, dy / r)
+        } else {
+            (1.0, 0.0)
+        };
         let camera = DVec3::new(sin_t * cos_phi, sin_t * sin_phi, cos_t);
         Some(self.world_to_camera.transpose() * camera)
     }
 
     /// Angle between a world direction and the optical axis, radians.
     pub fn off_axis_rad(&self, direction: DVec3) -> f64 {
-        direction.normalize().dot(self.axis()).clamp(-1.0, 1.0).acos()
+        direction
+            .normalize()
+            .dot(self.axis())
+            .clamp(-1.0, 1.0)
+            .acos()
     }
 
     /// Vignetting V(α) = Σ a_i cos(α)^i at off-axis angle α: relative response, 1 on axis
     /// for a normalised polynomial.
     pub fn vignetting(&self, off_axis_rad: f64) -> f64 {
         let c = off_axis_rad.cos();
-        self.config.lens.vignetting.iter().rev().fold(0.0, |acc, a| acc * c + a)
+        self.config
+            .lens
+            .vignetting
+            .iter()
+            .rev()
+            .fold(0.0, |acc, a| acc * c + a)
     }
 
     /// Solid angle seen by one pixel-sized area at image radius `r` (sr per square pixel):

@@ -1,0 +1,188 @@
+//! `captures/<stamp>/capture.toml`: one HDR capture (campaign.md).
+
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+/// Colours of the first 2x2 block of the raw frames.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Deserialize)]
+pub enum BayerPattern {
+    GRBG,
+    RGGB,
+    BGGR,
+    GBRG,
+}
+
+/// Colour channel of a Bayer sample.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Channel {
+    Red,
+    Green,
+    Blue,
+}
+
+impl BayerPattern {
+    /// Channel of the sample at (dx, dy) inside a 2x2 block.
+    pub fn channel(self, dx: usize, dy: usize) -> Channel {
+        use Channel::*;
+        let layout = match self {
+            BayerPattern::GRBG => [Green, Red, Blue, Green],
+            BayerPattern::RGGB => [Red, Green, Green, Blue],
+            BayerPattern::BGGR => [Blue, Green, Green, Red],
+            BayerPattern::GBRG => [Green, Blue, Red, Green],
+        };
+        layout[(dy & 1) * 2 + (dx & 1)]
+    }
+
+    /// Offsets (dx, dy) of the red sample, the two green samples and the blue sample.
+    pub fn offsets(self) -> [(usize, usize); 4] {
+        let mut r = (0, 0);
+        let mut g = vec![];
+        let mut b = (0, 0);
+        for dy in 0..2 {
+            for dx in 0..2 {
+                match self.channel(dx, dy) {
+                    Channel::Red => r = (dx, dy),
+                    Channel::Green => g.push((dx, dy)),
+                    Channel::Blue => b = (dx, dy),
+                }
+            }
+        }
+        [r, g[0], g[1], b]
+    }
+}
+
+/// `[readout]`: which part of the active array the frames hold.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Deserialize)]
+pub struct Readout {
+    pub col_start: u32,
+    pub row_start: u32,
+    /// 1: every pixel; k: read 2 columns/rows, skip 2(k − 1).
+    pub skip: u32,
+}
+
+impl Readout {
+    /// Full-array coordinate of raw column (or row) `i` (campaign.md:
+    /// `start + (i / 2) * 2k + (i % 2)`).
+    pub fn active_coordinate(start: u32, skip: u32, i: u32) -> u32 {
+        start + (i / 2) * 2 * skip + (i % 2)
+    }
+}
+
+/// One `[[exposure]]` entry.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+pub struct ExposureEntry {
+    pub file: String,
+    /// Commanded integration time, as written to the sensor, µs.
+    pub exposure_us: f64,
+    /// Analog gain.
+    pub gain: f64,
+    /// Start of this exposure after the capture's `time`, ms.
+    #[serde(default)]
+    pub offset_ms: f64,
+}
+
+/// The whole `capture.toml`.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+pub struct CaptureConfig {
+    /// Start of the exposure sequence, RFC 3339 with an explicit offset.
+    pub time: String,
+    pub bayer: BayerPattern,
+    pub sensor_temperature_c: Option<f64>,
+    pub readout: Readout,
+    pub exposure: Vec<ExposureEntry>,
+}
+
+/// Why a capture could not be used.
+#[derive(Debug, thiserror::Error)]
+pub enum CaptureError {
+    #[error("{path}: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("{path}: {message}")]
+    Parse { path: PathBuf, message: String },
+    #[error("{path}: {field}: {reason}")]
+    Invalid {
+        path: PathBuf,
+        field: String,
+        reason: String,
+    },
+}
+
+impl CaptureConfig {
+    /// Reads and validates `capture.toml`.
+    pub fn read(path: &Path) -> Result<Self, CaptureError> {
+        let text = std::fs::read_to_string(path).map_err(|source| CaptureError::Io {
+            path: path.into(),
+            source,
+        })?;
+        Self::parse(&text, path)
+    }
+
+    /// Parses and validates `capture.toml` text; `path` names the source in messages.
+    pub fn parse(text: &str, path: &Path) -> Result<Self, CaptureError> {
+        let config: Self = toml::from_str(text).map_err(|e: toml::de::Error| {
+            let line = e
+                .span()
+                .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1);
+            let message = match line {
+                Some(line) => format!("line {line}: {}", e.message().trim()),
+                None => e.message().trim().to_string(),
+            };
+            CaptureError::Parse {
+                path: path.into(),
+                message,
+            }
+        })?;
+        let bad = |field: String, reason: String| {
+            Err(CaptureError::Invalid {
+                path: path.into(),
+                field,
+                reason,
+            })
+        };
+        if config.exposure.is_empty() {
+            return bad(
+                "exposure".into(),
+                "a capture needs at least one [[exposure]]".into(),
+            );
+        }
+        if config.readout.skip == 0
+            || config.readout.col_start % 2 != 0
+            || config.readout.row_start % 2 != 0
+        {
+            return bad(
+                "readout".into(),
+                "skip must be at least 1 and the starts even".into(),
+            );
+        }
+        for (i, e) in config.exposure.iter().enumerate() {
+            if !(e.exposure_us.is_finite() && e.exposure_us > 0.0) {
+                return bad(
+                    format!("exposure[{i}].exposure_us"),
+                    format!("{} must be a positive number", e.exposure_us),
+                );
+            }
+            if !(e.gain.is_finite() && e.gain > 0.0) {
+                return bad(
+                    format!("exposure[{i}].gain"),
+                    format!("{} must be a positive number", e.gain),
+                );
+            }
+            if !e.offset_ms.is_finite() {
+                return bad(
+                    format!("exposure[{i}].offset_ms"),
+                    "must be a finite number".into(),
+                );
+            }
+            if e.file.is_empty() || e.file.contains("..") || Path::new(&e.file).is_absolute() {
+                return bad(
+                    format!("exposure[{i}].file"),
+                    format!("{:?} must name a file inside the capture folder", e.file),
+                );
+            }
+        }
+        Ok(config)
+    }
+}

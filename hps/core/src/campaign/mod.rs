@@ -1,0 +1,8 @@
+//! The measurement campaign format (shared/spec/campaign.md): the one reader of captures and
+//! raw frames, shared by the HDR synthesis, the loop and the simulator that writes campaigns.
+
+mod capture;
+mod raw_frame;
+
+pub use capture::{BayerPattern, CaptureConfig, CaptureError, Channel, ExposureEntry, Readout};
+pub use raw_frame::{RawFrame, RawFrameError, MAX_SAMPLE_DN};

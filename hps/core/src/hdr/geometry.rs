@@ -1,0 +1,69 @@
+//! Per-group geometry of a readout: where each 2x2 Bayer group looks, its vignetting and its
+//! solid angle. Computed once per camera and readout and reused for every capture, because
+//! the inverse lens map is the expensive part of mapping.
+
+use crate::camera::{CameraModel, ImagePoint};
+use crate::campaign::Readout;
+use glam::Vec3;
+
+/// Geometry of every group of a `width` x `height`-group map.
+#[derive(Clone, Debug)]
+pub struct GroupGeometry {
+    pub width: usize,
+    pub height: usize,
+    /// Unit direction (world frame) of each group's centre; NaN outside the lens model.
+    pub direction: Vec<Vec3>,
+    /// 1 / V(α) at each group's centre (0 outside the lens model).
+    pub inverse_vignetting: Vec<f32>,
+    /// Solid angle of each group, sr (0 outside the lens model).
+    pub solid_angle_sr: Vec<f32>,
+}
+
+impl GroupGeometry {
+    /// Geometry of the groups of raw frames of `raw_width` x `raw_height` samples read out
+    /// with `readout`.
+    pub fn new(
+        camera: &CameraModel,
+        readout: &Readout,
+        raw_width: usize,
+        raw_height: usize,
+    ) -> Self {
+        let (width, height) = (raw_width / 2, raw_height / 2);
+        let n = width * height;
+        let mut direction = vec![Vec3::NAN; n];
+        let mut inverse_vignetting = vec![0.0f32; n];
+        let mut solid_angle_sr = vec![0.0f32; n];
+        // A group covers two raw columns that are adjacent in the full array whatever the skip
+        // (campaign.md), so its centre is one pixel right of its first column's left edge; its
+        // footprint in the full array is (2 skip) x (2 skip) pixels.
+        let footprint_px2 = (2.0 * readout.skip as f64).powi(2);
+        for gy in 0..height {
+            let y = Readout::active_coordinate(readout.row_start, readout.skip, 2 * gy as u32)
+                as f64
+                + 1.0;
+            for gx in 0..width {
+                let x = Readout::active_coordinate(readout.col_start, readout.skip, 2 * gx as u32)
+                    as f64
+                    + 1.0;
+                let p = ImagePoint { x_px: x, y_px: y };
+                let i = gy * width + gx;
+                if let (Some(d), Some(omega)) = (camera.unproject(p), camera.solid_angle_per_px2(p))
+                {
+                    let v = camera.vignetting(camera.off_axis_rad(d));
+                    if v > 0.0 {
+                        direction[i] = d.as_vec3();
+                        inverse_vignetting[i] = (1.0 / v) as f32;
+                        solid_angle_sr[i] = (omega * footprint_px2) as f32;
+                    }
+                }
+            }
+        }
+        Self {
+            width,
+            height,
+            direction,
+            inverse_vignetting,
+            solid_angle_sr,
+        }
+    }
+}

@@ -1,0 +1,6 @@
+//! The image sensor as seen through its pixels: a luminance field imaged through the one
+//! camera model (`skylux_hps::camera`) into Bayer samples, with the MT9P031's noise.
+
+mod render;
+
+pub use render::{AnalogFrame, FrameRenderer, Noise};

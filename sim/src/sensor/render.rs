@@ -1,0 +1,170 @@
+//! Rendering raw frames from a known luminance field.
+//!
+//! Each 2x2 Bayer group images the field in the direction of its centre (the camera model's
+//! inverse map), so the truth of a group is one number. The scene is spectrally grey: every
+//! channel's black-subtracted mean signal is `x = L t g V(α) / (cg Σw)`, which makes the
+//! device's response `L = cg (w · RGB) / (t g V)` exact. Noise per sample: Poisson shot noise
+//! on `x / (K g)` electrons (K: DN per electron at unity gain), Gaussian read noise, then the
+//! black level, rounding to whole DN and clipping to 12 bits.
+
+use glam::DVec3;
+use rand_distr::{Distribution, Normal, Poisson};
+use rayon::prelude::*;
+use skylux_hps::camera::{CameraModel, ImagePoint};
+use skylux_hps::campaign::{RawFrame, Readout, MAX_SAMPLE_DN};
+use skylux_hps::hdr::Samples;
+
+/// Which noise to add.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub enum Noise {
+    /// Shot noise, read noise and quantisation, from the device's `[noise]` model.
+    Sensor { seed: u64 },
+    /// None at all: samples are the exact expected values (see [`AnalogFrame`]).
+    None,
+}
+
+/// A frame of unquantised, noiseless samples (DN as real numbers, black level included,
+/// unclipped): what an ideal ADC would read.
+#[derive(Clone, Debug)]
+pub struct AnalogFrame {
+    pub width: usize,
+    pub height: usize,
+    pub samples_dn: Vec<f64>,
+}
+
+impl Samples for AnalogFrame {
+    fn width(&self) -> usize {
+        self.width
+    }
+    fn height(&self) -> usize {
+        self.height
+    }
+    fn sample_dn(&self, x: usize, y: usize) -> f64 {
+        self.samples_dn[y * self.width + x]
+    }
+}
+
+/// Renders frames of one readout window through one camera.
+pub struct FrameRenderer<'a> {
+    pub camera: &'a CameraModel,
+    pub readout: Readout,
+    pub raw_width: usize,
+    pub raw_height: usize,
+}
+
+impl FrameRenderer<'_> {
+    /// Mean black-subtracted sample of each group (grey scene), before noise; 0 where the lens
+    /// images nothing.
+    fn mean_signal_dn(
+        &self,
+        luminance_cd_m2: &(dyn Fn(DVec3) -> f64 + Sync),
+        exposure_s: f64,
+        gain: f64,
+    ) -> Vec<f64> {
+        let (gw, gh) = (self.raw_width / 2, self.raw_height / 2);
+        let d = &self.camera.config;
+        let weight_sum: f64 = d.response.weights.iter().sum();
+        (0..gw * gh)
+            .into_par_iter()
+            .map(|i| {
+                let (gx, gy) = (i % gw, i / gw);
+                let x = Readout::active_coordinate(
+                    self.readout.col_start,
+                    self.readout.skip,
+                    2 * gx as u32,
+                ) as f64
+                    + 1.0;
+                let y = Readout::active_coordinate(
+                    self.readout.row_start,
+                    self.readout.skip,
+                    2 * gy as u32,
+                ) as f64
+                    + 1.0;
+                match self.camera.unproject(ImagePoint { x_px: x, y_px: y }) {
+                    Some(dir) => {
+                        let v = self.camera.vignetting(self.camera.off_axis_rad(dir));
+                        luminance_cd_m2(dir) * exposure_s * gain * v / (d.response.cg * weight_sum)
+                    }
+                    None => 0.0,
+                }
+            })
+            .collect()
+    }
+
+    /// An ideal frame: exact expected samples, no noise, no rounding, no clipping.
+    pub fn render_analog(
+        &self,
+        luminance_cd_m2: &(dyn Fn(DVec3) -> f64 + Sync),
+        exposure_s: f64,
+        gain: f64,
+    ) -> AnalogFrame {
+        let mean = self.mean_signal_dn(luminance_cd_m2, exposure_s, gain);
+        let black = self.camera.config.sensor.black_level_dn;
+        let gw = self.raw_width / 2;
+        let samples_dn = (0..self.raw_width * self.raw_height)
+            .map(|i| {
+                let (x, y) = (i % self.raw_width, i / self.raw_width);
+                black + mean[(y / 2) * gw + x / 2]
+            })
+            .collect();
+        AnalogFrame {
+            width: self.raw_width,
+            height: self.raw_height,
+            samples_dn,
+        }
+    }
+
+    /// A 12-bit raw frame with the sensor's noise.
+    pub fn render(
+        &self,
+        luminance_cd_m2: &(dyn Fn(DVec3) -> f64 + Sync),
+        exposure_s: f64,
+        gain: f64,
+        noise: Noise,
+    ) -> RawFrame {
+        let mean = self.mean_signal_dn(luminance_cd_m2, exposure_s, gain);
+        let d = &self.camera.config;
+        let black = d.sensor.black_level_dn;
+        let k = d.noise.conversion_dn_per_e * gain;
+        let read = Normal::new(0.0, d.noise.read_noise_dn.max(0.0)).expect("finite read noise");
+        let gw = self.raw_width / 2;
+        let seed = match noise {
+            Noise::Sensor { seed } => seed,
+            Noise::None => 0,
+        };
+        // One RNG stream per row, seeded from (seed, row): deterministic and parallel.
+        let rows: Vec<Vec<u16>> = (0..self.raw_height)
+            .into_par_iter()
+            .map(|y| {
+                let mut rng = <rand::rngs::StdRng as rand::SeedableRng>::seed_from_u64(
+                    seed ^ (y as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15),
+                );
+                (0..self.raw_width)
+                    .map(|x| {
+                        let m = mean[(y / 2) * gw + x / 2].max(0.0);
+                        let dn = match noise {
+                            Noise::None => black + m,
+                            Noise::Sensor { .. } => {
+                                let electrons = m / k;
+                                let shot = if electrons > 0.0 {
+                                    Poisson::new(electrons)
+                                        .map(|p| p.sample(&mut rng))
+                                        .unwrap_or(electrons)
+                                } else {
+                                    0.0
+                                };
+                                black + shot * k + read.sample(&mut rng)
+                            }
+                        };
+                        dn.round().clamp(0.0, MAX_SAMPLE_DN as f64) as u16
+                    })
+                    .collect()
+            })
+            .collect();
+        RawFrame {
+            width: self.raw_width,
+            height: self.raw_height,
+            samples_dn: rows.concat(),
+        }
+    }
+}
