@@ -2,6 +2,7 @@
 
 mod demo;
 mod regs;
+mod solpos;
 
 use clap::{Parser, Subcommand};
 
@@ -23,11 +24,14 @@ enum Command {
     Demo,
     /// Reads every register and prints it decoded, field by field.
     Regs(regs::RegsArgs),
+    /// Prints the sun's zenith and azimuth (NREL SPA) for one time and place, as CSV.
+    Solpos(solpos::SolposArgs),
 }
 
 fn main() -> anyhow::Result<()> {
     match Cli::parse().command {
         Command::Demo => demo::run(),
         Command::Regs(args) => regs::run(&args),
+        Command::Solpos(args) => solpos::run(&args),
     }
 }

@@ -5,3 +5,6 @@ pub mod camera;
 pub mod campaign;
 pub mod fpga;
 pub mod hdr;
+pub mod io;
+pub mod scene;
+pub mod sun;

@@ -10,13 +10,20 @@ use std::path::Path;
 fn model(distortion: [f64; 4], az: f64, alt: f64, roll: f64) -> CameraModel {
     let mut c = DeviceConfig::default();
     c.lens.distortion = distortion;
-    c.orientation = OrientationConfig { axis_azimuth_deg: az, axis_altitude_deg: alt, roll_deg: roll };
+    c.orientation = OrientationConfig {
+        axis_azimuth_deg: az,
+        axis_altitude_deg: alt,
+        roll_deg: roll,
+    };
     CameraModel::new(c)
 }
 
 fn angle_rad(a: DVec3, b: DVec3) -> f64 {
     // atan2 of |a x b| and a.b: accurate for tiny angles, unlike acos.
-    a.normalize().cross(b.normalize()).length().atan2(a.normalize().dot(b.normalize()))
+    a.normalize()
+        .cross(b.normalize())
+        .length()
+        .atan2(a.normalize().dot(b.normalize()))
 }
 
 proptest! {
@@ -90,7 +97,10 @@ fn pixel_solid_angles_integrate_to_the_cone() {
         for i in (cx - r_max - 2.0) as i64..(cx + r_max + 2.0) as i64 {
             for sj in 0..n {
                 for si in 0..n {
-                    let p = ImagePoint { x_px: i as f64 + (si as f64 + 0.5) / n as f64, y_px: j as f64 + (sj as f64 + 0.5) / n as f64 };
+                    let p = ImagePoint {
+                        x_px: i as f64 + (si as f64 + 0.5) / n as f64,
+                        y_px: j as f64 + (sj as f64 + 0.5) / n as f64,
+                    };
                     if ((p.x_px - cx).powi(2) + (p.y_px - cy).powi(2)).sqrt() <= r_max {
                         total += m.solid_angle_per_px2(p).unwrap() / (n * n) as f64;
                     }
@@ -146,7 +156,8 @@ fn reads_the_spec_example_and_writes_it_back() {
 
 #[test]
 fn unknown_keys_warn_and_bad_values_name_the_field() {
-    let extended = format!("{SPEC_EXAMPLE}\n[filters]\nnd = 3\n").replace("roll_deg = 0.0", "roll_deg = 0.0\nsource = \"bench\"");
+    let extended = format!("{SPEC_EXAMPLE}\n[filters]\nnd = 3\n")
+        .replace("roll_deg = 0.0", "roll_deg = 0.0\nsource = \"bench\"");
     let (_, warnings) = DeviceConfig::parse(&extended, Path::new("d.toml")).unwrap();
     assert_eq!(warnings.len(), 2, "{warnings:?}");
     assert!(warnings.iter().any(|w| w.contains("orientation.source")));
@@ -155,19 +166,44 @@ fn unknown_keys_warn_and_bad_values_name_the_field() {
         ("cg = 1.0", "cg = nan", "response.cg"),
         ("cg = 1.0", "cg = -2.0", "response.cg"),
         ("focal_px = 1136.0", "focal_px = 0.0", "lens.focal_px"),
-        ("valid_max_dn = 3100", "valid_max_dn = 20", "sensor.valid_min_dn"),
-        ("weights = [0.2, 0.7, 0.1]", "weights = [0.2, -0.7, 0.1]", "response.weights"),
-        ("axis_altitude_deg = 16.0", "axis_altitude_deg = 96.0", "orientation.axis_altitude_deg"),
-        ("distortion = [0.0, 0.0, 0.0, 0.0]", "distortion = [0.0, inf, 0.0, 0.0]", "lens.distortion"),
+        (
+            "valid_max_dn = 3100",
+            "valid_max_dn = 20",
+            "sensor.valid_min_dn",
+        ),
+        (
+            "weights = [0.2, 0.7, 0.1]",
+            "weights = [0.2, -0.7, 0.1]",
+            "response.weights",
+        ),
+        (
+            "axis_altitude_deg = 16.0",
+            "axis_altitude_deg = 96.0",
+            "orientation.axis_altitude_deg",
+        ),
+        (
+            "distortion = [0.0, 0.0, 0.0, 0.0]",
+            "distortion = [0.0, inf, 0.0, 0.0]",
+            "lens.distortion",
+        ),
     ];
     for (from, to, field) in cases {
-        let e = DeviceConfig::parse(&SPEC_EXAMPLE.replace(from, to), Path::new("d.toml")).unwrap_err().to_string();
+        let e = DeviceConfig::parse(&SPEC_EXAMPLE.replace(from, to), Path::new("d.toml"))
+            .unwrap_err()
+            .to_string();
         assert!(e.starts_with("d.toml: ") && e.contains(field), "{to}: {e}");
     }
     // Missing key and wrong type: named, with the line.
-    let e = DeviceConfig::parse(&SPEC_EXAMPLE.replace("cg = 1.0\n", ""), Path::new("d.toml")).unwrap_err().to_string();
+    let e = DeviceConfig::parse(&SPEC_EXAMPLE.replace("cg = 1.0\n", ""), Path::new("d.toml"))
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("cg"), "{e}");
-    let e = DeviceConfig::parse(&SPEC_EXAMPLE.replace("focal_px = 1136.0", "focal_px = \"wide\""), Path::new("d.toml")).unwrap_err().to_string();
+    let e = DeviceConfig::parse(
+        &SPEC_EXAMPLE.replace("focal_px = 1136.0", "focal_px = \"wide\""),
+        Path::new("d.toml"),
+    )
+    .unwrap_err()
+    .to_string();
     assert!(e.starts_with("d.toml: line 10:"), "{e}");
 }
 

@@ -59,7 +59,7 @@ impl KannalaBrandt {
     /// Angle from the axis of the ray that lands at `radius_px`, by safeguarded Newton
     /// iteration on the monotonic branch; `None` beyond the lens's invertible range.
     pub fn theta_rad(&self, radius_px: f64) -> Option<f64> {
-        if !(radius_px >= 0.0) {
+        if radius_px.is_nan() || radius_px < 0.0 {
             return None;
         }
         let max = self.max_theta_rad();

@@ -149,8 +149,8 @@ impl CaptureConfig {
             );
         }
         if config.readout.skip == 0
-            || config.readout.col_start % 2 != 0
-            || config.readout.row_start % 2 != 0
+            || !config.readout.col_start.is_multiple_of(2)
+            || !config.readout.row_start.is_multiple_of(2)
         {
             return bad(
                 "readout".into(),

@@ -1,0 +1,177 @@
+//! Where a scene primitive came from, and everything that can be wrong with a scene file.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// A file and a 1-based line in it: where a primitive starts, or where a bad token is.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct SourceLocation {
+    /// The file as it was given to the loader (or the label given to [`super::parse`]).
+    pub file: Arc<Path>,
+    /// 1-based line number.
+    pub line: usize,
+}
+
+impl fmt::Display for SourceLocation {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}", self.file.display(), self.line)
+    }
+}
+
+/// The three argument lists every RADIANCE primitive carries, in file order.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum ArgumentList {
+    String,
+    Integer,
+    Real,
+}
+
+impl fmt::Display for ArgumentList {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            ArgumentList::String => "string",
+            ArgumentList::Integer => "integer",
+            ArgumentList::Real => "real",
+        })
+    }
+}
+
+/// Why a scene could not be loaded. Every variant that comes from the text names the file and
+/// line (`at`), the primitive (as ``type `identifier` ``) and the field or type at fault, and
+/// what was expected.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneError {
+    #[error("cannot read scene file {}: {source}", path.display())]
+    Io {
+        path: PathBuf,
+        #[source]
+        source: std::io::Error,
+    },
+
+    #[error("{at}: not UTF-8 text (invalid byte sequence on this line); expected a RADIANCE scene description")]
+    NotUtf8 { at: SourceLocation },
+
+    #[error("{at}: quoted string opened with {quote} on this line is never closed; expected a closing {quote}")]
+    UnterminatedQuote { at: SourceLocation, quote: char },
+
+    #[error("{at}: unsupported inline command `{command}`: {reason}")]
+    UnsupportedCommand {
+        at: SourceLocation,
+        command: String,
+        reason: &'static str,
+    },
+
+    #[error("{at}: unsupported primitive type `{type_name}` (identifier `{identifier}`): {reason}; expected one of {}", super::parse::SUPPORTED_TYPES)]
+    UnsupportedType {
+        at: SourceLocation,
+        type_name: String,
+        identifier: String,
+        reason: &'static str,
+    },
+
+    #[error("{at}: file ends {context}; expected {expected}")]
+    UnexpectedEnd {
+        at: SourceLocation,
+        context: String,
+        expected: String,
+    },
+
+    #[error(
+        "{at}: {primitive}: {list} argument count is `{token}`; expected a non-negative integer"
+    )]
+    BadCount {
+        at: SourceLocation,
+        primitive: String,
+        list: ArgumentList,
+        token: String,
+    },
+
+    #[error("{at}: {primitive}: integer argument {index} is `{token}`; expected an integer")]
+    BadInteger {
+        at: SourceLocation,
+        primitive: String,
+        index: usize,
+        token: String,
+    },
+
+    #[error("{at}: {primitive}: {field} is `{token}`; expected a number")]
+    BadReal {
+        at: SourceLocation,
+        primitive: String,
+        field: String,
+        token: String,
+    },
+
+    #[error("{at}: {primitive}: {field} is `{token}`; expected a finite number")]
+    NonFiniteReal {
+        at: SourceLocation,
+        primitive: String,
+        field: String,
+        token: String,
+    },
+
+    #[error("{at}: {primitive}: found {found} {list} arguments; expected {expected}")]
+    ArgumentCount {
+        at: SourceLocation,
+        primitive: String,
+        list: ArgumentList,
+        found: usize,
+        expected: String,
+    },
+
+    #[error("{at}: {primitive}: {field} `{modifier}` is not defined; expected `void` or a material or pattern defined earlier{hint}")]
+    UnknownModifier {
+        at: SourceLocation,
+        primitive: String,
+        field: &'static str,
+        modifier: String,
+        hint: String,
+    },
+
+    #[error("{at}: {primitive}: {field} is {value}; expected {expected}")]
+    InvalidValue {
+        at: SourceLocation,
+        primitive: String,
+        field: String,
+        value: String,
+        expected: String,
+    },
+
+    #[error("{at}: {primitive}: degenerate polygon, {reason}; expected at least 3 vertices spanning a non-zero area")]
+    DegeneratePolygon {
+        at: SourceLocation,
+        primitive: String,
+        reason: String,
+    },
+}
+
+impl SceneError {
+    /// Where in the text the error is, if it comes from the text (not from reading the file).
+    pub fn location(&self) -> Option<&SourceLocation> {
+        match self {
+            SceneError::Io { .. } => None,
+            SceneError::NotUtf8 { at }
+            | SceneError::UnterminatedQuote { at, .. }
+            | SceneError::UnsupportedCommand { at, .. }
+            | SceneError::UnsupportedType { at, .. }
+            | SceneError::UnexpectedEnd { at, .. }
+            | SceneError::BadCount { at, .. }
+            | SceneError::BadInteger { at, .. }
+            | SceneError::BadReal { at, .. }
+            | SceneError::NonFiniteReal { at, .. }
+            | SceneError::ArgumentCount { at, .. }
+            | SceneError::UnknownModifier { at, .. }
+            | SceneError::InvalidValue { at, .. }
+            | SceneError::DegeneratePolygon { at, .. } => Some(at),
+        }
+    }
+}
+
+/// Line (1-based) of the first invalid UTF-8 byte, for [`SceneError::NotUtf8`].
+pub(crate) fn line_of_offset(bytes: &[u8], offset: usize) -> usize {
+    1 + bytes[..offset.min(bytes.len())]
+        .iter()
+        .filter(|&&b| b == b'\n')
+        .count()
+}

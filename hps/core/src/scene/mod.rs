@@ -1,0 +1,349 @@
+//! The room and its sky, read from RADIANCE scene files, and the virtual sensors from `.pts`.
+//!
+//! The subset read is listed in shared/spec/campaign.md ("Scene subset") and in
+//! [`SUPPORTED_TYPES`]: anything outside it, including `!command` lines and `xform`, is
+//! an error naming the file and line, never silently dropped. Geometry is in metres in the
+//! campaign world frame (+x east, +y north, +z up), in `f64` (`glam::DVec3`) so the
+//! Monte-Carlo engine can trace on it directly.
+//!
+//! ```no_run
+//! let scene = skylux_hps::scene::load_files(&["room/scene.rad", "sky.rad"])?;
+//! for surface in scene.surfaces() {
+//!     let material = scene.material(surface.modifier);
+//!     # let _ = material;
+//! }
+//! # Ok::<(), skylux_hps::scene::SceneError>(())
+//! ```
+
+mod error;
+mod lexer;
+mod material;
+mod parse;
+mod sensors;
+mod shape;
+
+pub use error::{ArgumentList, SceneError, SourceLocation};
+pub use material::{
+    Brightfunc, Glass, Glow, Light, Metal, Mirror, ModifierKind, Plastic, Trans,
+    GLASS_DEFAULT_REFRACTIVE_INDEX,
+};
+pub use parse::SUPPORTED_TYPES;
+pub use sensors::{load_sensors, parse_sensors, Sensor, SensorsError};
+pub use shape::{Cone, Cylinder, DistantSource, Polygon, Ring, Shape, Sphere, MIN_LENGTH_M};
+
+use error::line_of_offset;
+use lexer::Lexer;
+use parse::read_primitive;
+use std::collections::HashMap;
+use std::path::Path;
+use std::sync::Arc;
+
+/// Index of a modifier in [`Scene::modifiers`]. A modifier always refers to modifiers with a
+/// smaller index, so walking a chain of modifiers always ends.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct ModifierId(usize);
+
+impl ModifierId {
+    pub fn index(self) -> usize {
+        self.0
+    }
+}
+
+/// What a primitive names as its modifier: RADIANCE's built-in `void`, or the definition of
+/// that name most recent at that point in the files (reference manual §2.1: later definitions
+/// apply to the primitives after them and do not relink earlier ones).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
+pub enum ModifierRef {
+    Void,
+    Defined(ModifierId),
+}
+
+/// A material or pattern definition.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Modifier {
+    /// Its identifier.
+    pub name: String,
+    /// Its own modifier: `void`, or a pattern applied to it (a `glow` modified by a sky
+    /// `brightfunc`).
+    pub modifier: ModifierRef,
+    pub kind: ModifierKind,
+    /// Where it is defined.
+    pub origin: SourceLocation,
+}
+
+/// A surface of the scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Surface {
+    /// Its identifier (not necessarily unique).
+    pub name: String,
+    /// Its modifier, normally its material.
+    pub modifier: ModifierRef,
+    pub shape: Shape,
+    /// Where it is defined.
+    pub origin: SourceLocation,
+}
+
+/// A scene: modifiers and surfaces in file order, from one or more files.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Scene {
+    modifiers: Vec<Modifier>,
+    surfaces: Vec<Surface>,
+    /// The current definition of each modifier name, as the next primitive read would see it.
+    current: HashMap<String, ModifierId>,
+}
+
+/// Loads one scene file.
+pub fn load(path: impl AsRef<Path>) -> Result<Scene, SceneError> {
+    load_files(&[path])
+}
+
+/// Loads scene files in order into one scene, as `oconv room.rad sky.rad` would: modifiers
+/// defined in an earlier file can be used in a later one.
+pub fn load_files<P: AsRef<Path>>(paths: &[P]) -> Result<Scene, SceneError> {
+    let mut scene = Scene::new();
+    for path in paths {
+        scene.add_file(path)?;
+    }
+    Ok(scene)
+}
+
+/// Reads a scene from bytes in memory; `label` names it in errors and origins.
+pub fn parse(label: impl AsRef<Path>, bytes: &[u8]) -> Result<Scene, SceneError> {
+    let mut scene = Scene::new();
+    scene.add_bytes(label, bytes)?;
+    Ok(scene)
+}
+
+impl Scene {
+    /// An empty scene.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Appends the primitives of a scene file. On error the scene is left as it was.
+    pub fn add_file(&mut self, path: impl AsRef<Path>) -> Result<(), SceneError> {
+        let path = path.as_ref();
+        let bytes = std::fs::read(path).map_err(|source| SceneError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        self.add_bytes(path, &bytes)
+    }
+
+    /// Appends the primitives of scene text in memory; `label` names it in errors and origins.
+    /// On error the scene is left as it was.
+    pub fn add_bytes(&mut self, label: impl AsRef<Path>, bytes: &[u8]) -> Result<(), SceneError> {
+        let modifier_count = self.modifiers.len();
+        let surface_count = self.surfaces.len();
+        let mut replaced: Vec<(String, Option<ModifierId>)> = Vec::new();
+        let result = self.read(Arc::from(label.as_ref()), bytes, &mut replaced);
+        if result.is_err() {
+            self.modifiers.truncate(modifier_count);
+            self.surfaces.truncate(surface_count);
+            for (name, previous) in replaced.into_iter().rev() {
+                match previous {
+                    Some(id) => self.current.insert(name, id),
+                    None => self.current.remove(&name),
+                };
+            }
+        }
+        result
+    }
+
+    /// Materials and patterns, in definition order; [`ModifierId`] indexes this.
+    pub fn modifiers(&self) -> &[Modifier] {
+        &self.modifiers
+    }
+
+    /// Surfaces (including distant `source`s), in file order.
+    pub fn surfaces(&self) -> &[Surface] {
+        &self.surfaces
+    }
+
+    /// The modifier an id refers to (`None` only for an id from another scene).
+    pub fn modifier(&self, id: ModifierId) -> Option<&Modifier> {
+        self.modifiers.get(id.0)
+    }
+
+    /// The definition a primitive appended now would get for `name`.
+    pub fn modifier_named(&self, name: &str) -> Option<ModifierRef> {
+        if name == "void" {
+            return Some(ModifierRef::Void);
+        }
+        self.current.get(name).map(|&id| ModifierRef::Defined(id))
+    }
+
+    /// The material that shades a primitive with this modifier: the first material on the
+    /// modifier chain, patterns before it being applied to it (as RADIANCE's `rayshade`
+    /// walks it). `None` if the chain reaches `void` first: RADIANCE then lets rays pass.
+    pub fn material(&self, modifier: ModifierRef) -> Option<&Modifier> {
+        let mut next = modifier;
+        while let ModifierRef::Defined(id) = next {
+            let m = self.modifiers.get(id.0)?;
+            if m.kind.is_material() {
+                return Some(m);
+            }
+            next = m.modifier;
+        }
+        None
+    }
+
+    fn read(
+        &mut self,
+        file: Arc<Path>,
+        bytes: &[u8],
+        replaced: &mut Vec<(String, Option<ModifierId>)>,
+    ) -> Result<(), SceneError> {
+        let text = std::str::from_utf8(bytes).map_err(|e| SceneError::NotUtf8 {
+            at: SourceLocation {
+                file: file.clone(),
+                line: line_of_offset(bytes, e.valid_up_to()),
+            },
+        })?;
+        let mut lexer = Lexer::new(file, text);
+        while let Some(raw) = read_primitive(&mut lexer)? {
+            let modifier = self.modifier_named(raw.modifier).ok_or_else(|| {
+                let hint = if self.surfaces.iter().any(|s| s.name == raw.modifier) {
+                    format!(
+                        " (`{}` is a surface, and a surface cannot modify other primitives)",
+                        raw.modifier
+                    )
+                } else {
+                    String::new()
+                };
+                SceneError::UnknownModifier {
+                    at: raw.at.clone(),
+                    primitive: raw.describe(),
+                    field: "modifier",
+                    modifier: raw.modifier.to_string(),
+                    hint,
+                }
+            })?;
+            if raw.kind.is_modifier() {
+                let kind = material::build(&raw, &|name| self.modifier_named(name))?;
+                if kind.is_material() {
+                    self.check_no_material_below(&raw, modifier)?;
+                }
+                let id = ModifierId(self.modifiers.len());
+                self.modifiers.push(Modifier {
+                    name: raw.identifier.to_string(),
+                    modifier,
+                    kind,
+                    origin: raw.at.clone(),
+                });
+                let previous = self.current.insert(raw.identifier.to_string(), id);
+                replaced.push((raw.identifier.to_string(), previous));
+            } else {
+                let shape = shape::build(&raw)?;
+                self.surfaces.push(Surface {
+                    name: raw.identifier.to_string(),
+                    modifier,
+                    shape,
+                    origin: raw.at,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// A material's modifier chain may hold only patterns: RADIANCE stops with "conflicting
+    /// material" when it meets a second material while shading (raytexture in raytrace.c).
+    fn check_no_material_below(
+        &self,
+        raw: &parse::RawPrimitive<'_>,
+        modifier: ModifierRef,
+    ) -> Result<(), SceneError> {
+        match self.material(modifier) {
+            None => Ok(()),
+            Some(other) => Err(raw.invalid(
+                "modifier",
+                format!("`{}`, a {} material", other.name, other.kind.type_name()),
+                "`void` or a pattern (a material modified by another material is a \
+                 conflicting material in RADIANCE)",
+            )),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn later_definitions_shadow_earlier_ones_for_later_primitives_only() {
+        let scene = parse(
+            "m.rad",
+            b"void plastic m 0 0 5 .1 .1 .1 0 0\n\
+              m polygon a 0 0 9 0 0 0 1 0 0 0 1 0\n\
+              void plastic m 0 0 5 .9 .9 .9 0 0\n\
+              m polygon b 0 0 9 0 0 0 1 0 0 0 1 0\n",
+        )
+        .unwrap();
+        let reflectance = |s: &Surface| match &scene.material(s.modifier).unwrap().kind {
+            ModifierKind::Plastic(p) => p.reflectance_rgb.x,
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(reflectance(&scene.surfaces()[0]), 0.1);
+        assert_eq!(reflectance(&scene.surfaces()[1]), 0.9);
+        assert_eq!(
+            scene.modifier_named("m"),
+            Some(ModifierRef::Defined(ModifierId(1)))
+        );
+    }
+
+    #[test]
+    fn a_failed_file_leaves_the_scene_unchanged() {
+        let mut scene = parse("a.rad", b"void plastic m 0 0 5 .1 .1 .1 0 0\n").unwrap();
+        let before = scene.clone();
+        let err = scene
+            .add_bytes(
+                "b.rad",
+                b"void plastic m 0 0 5 .5 .5 .5 0 0\nvoid plastic n 0 0 5 1 1 1 0 0\n\
+                  m polygon p 0 0 9 0 0 0 1 0 0 0 1 0\nm bogus x 0 0 0\n",
+            )
+            .unwrap_err();
+        assert!(err.to_string().starts_with("b.rad:4:"), "{err}");
+        assert_eq!(scene, before);
+    }
+
+    #[test]
+    fn material_walks_patterns_to_the_material() {
+        let scene = parse(
+            "c.rad",
+            b"void brightfunc f 2 skybright skybright.cal 0 0\n\
+              f glow g 0 0 4 1 1 1 0\n\
+              g source s 0 0 4 0 0 1 180\n\
+              f source bare 0 0 4 0 0 1 180\n",
+        )
+        .unwrap();
+        let sky = &scene.surfaces()[0];
+        assert_eq!(scene.material(sky.modifier).unwrap().name, "g");
+        assert!(scene.material(scene.surfaces()[1].modifier).is_none());
+    }
+
+    #[test]
+    fn a_material_modified_by_a_material_is_refused() {
+        let err = parse(
+            "d.rad",
+            b"void plastic a 0 0 5 .5 .5 .5 0 0\na plastic b 0 0 5 .5 .5 .5 0 0\n",
+        )
+        .unwrap_err();
+        let text = err.to_string();
+        assert!(
+            text.starts_with("d.rad:2: plastic `b`: modifier is `a`"),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn a_surface_name_is_not_a_modifier() {
+        let err = parse(
+            "e.rad",
+            b"void plastic a 0 0 5 .5 .5 .5 0 0\na polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n\
+              p polygon q 0 0 9 0 0 0 1 0 0 0 1 0\n",
+        )
+        .unwrap_err();
+        assert!(err.to_string().contains("`p` is a surface"), "{err}");
+        assert_eq!(err.location().unwrap().line, 3);
+    }
+}

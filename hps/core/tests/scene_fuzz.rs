@@ -1,0 +1,264 @@
+//! Fuzzing the scene and sensor readers: random bytes, random token streams and mutations of
+//! the reference room never panic. They load, or fail with an error that names the file and a
+//! line inside it; and whatever loads satisfies what the engine will rely on (unit normals,
+//! positive areas and radii, modifier references that resolve to earlier definitions).
+
+use proptest::prelude::*;
+use skylux_hps::scene::{self, parse_sensors, ModifierRef, Scene, SceneError, Shape};
+use std::path::Path;
+
+const LABEL: &str = "fuzz.rad";
+
+fn reference_room() -> String {
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/scenes/test-module/scene.rad");
+    std::fs::read_to_string(&path).unwrap_or_else(|e| {
+        panic!(
+            "the shared reference room is missing: cannot read {} ({e}); expected the `shared` \
+             folder beside the workspace",
+            path.display()
+        )
+    })
+}
+
+/// Loads `bytes` and checks the outcome: an error that names `fuzz.rad` and a line that
+/// exists, or a scene whose invariants hold.
+fn check(bytes: &[u8]) -> Result<(), TestCaseError> {
+    let lines = 1 + bytes.iter().filter(|&&b| b == b'\n').count();
+    match scene::parse(LABEL, bytes) {
+        Err(err) => check_error(&err, lines),
+        Ok(scene) => check_scene(&scene),
+    }
+}
+
+fn check_error(err: &SceneError, lines: usize) -> Result<(), TestCaseError> {
+    let at = err.location().expect("errors from text carry a location");
+    prop_assert_eq!(&*at.file, Path::new(LABEL));
+    prop_assert!(
+        at.line >= 1 && at.line <= lines,
+        "line {} of {}",
+        at.line,
+        lines
+    );
+    let message = err.to_string();
+    prop_assert!(
+        message.starts_with(&format!("{LABEL}:{}: ", at.line)),
+        "{}",
+        message
+    );
+    Ok(())
+}
+
+fn check_scene(scene: &Scene) -> Result<(), TestCaseError> {
+    let unit = |v: glam::DVec3| v.is_finite() && (v.length() - 1.0).abs() < 1e-9;
+    for (index, m) in scene.modifiers().iter().enumerate() {
+        if let ModifierRef::Defined(id) = m.modifier {
+            prop_assert!(id.index() < index, "modifier {} refers forward", m.name);
+        }
+    }
+    for s in scene.surfaces() {
+        if let ModifierRef::Defined(id) = s.modifier {
+            prop_assert!(scene.modifier(id).is_some());
+        }
+        match &s.shape {
+            Shape::Polygon(p) => {
+                prop_assert!(p.vertices_m.len() >= 3);
+                prop_assert!(unit(p.normal), "{}: normal {}", s.name, p.normal);
+                prop_assert!(p.area_m2 > 0.0 && p.area_m2.is_finite(), "{}", p.area_m2);
+            }
+            Shape::Sphere(sp) => prop_assert!(sp.radius_m > 0.0),
+            Shape::Cylinder(c) => {
+                prop_assert!(c.radius_m > 0.0 && (c.end_m - c.start_m).length() > 0.0)
+            }
+            Shape::Cone(c) => prop_assert!(
+                c.start_radius_m >= 0.0
+                    && c.end_radius_m >= 0.0
+                    && c.start_radius_m + c.end_radius_m > 0.0
+            ),
+            Shape::Ring(r) => {
+                prop_assert!(unit(r.normal));
+                prop_assert!(0.0 <= r.inner_radius_m && r.inner_radius_m < r.outer_radius_m);
+            }
+            Shape::Source(src) => {
+                prop_assert!(unit(src.direction));
+                prop_assert!(src.angle_deg > 0.0 && src.angle_deg <= 360.0);
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Words a scene file is made of, including the troublesome ones.
+fn word() -> impl Strategy<Value = String> {
+    prop_oneof![
+        4 => prop::sample::select(vec![
+            "void", "m", "n", "sky", "plastic", "metal", "trans", "glass", "mirror", "light",
+            "glow", "brightfunc", "polygon", "sphere", "cylinder", "ring", "cone", "source",
+            "bubble", "alias", "texfunc", "!xform", "!", "#", "# c", "\"", "'", "\"a b\"",
+            "skybright", "skybright.cal",
+        ])
+        .prop_map(str::to_string),
+        6 => (0u32..14).prop_map(|n| n.to_string()),
+        6 => prop::sample::select(vec![
+            "0", "1", "-1", "0.5", ".5", "5.", "1e308", "-1e308", "1e-300", "nan", "inf", "-0",
+            "1e999", "abc", "4294967296", "18446744073709551616", "+3",
+        ])
+        .prop_map(str::to_string),
+        3 => (-1e3f64..1e3).prop_map(|v| v.to_string()),
+    ]
+}
+
+fn separator() -> impl Strategy<Value = &'static str> {
+    prop::sample::select(vec![" ", " ", "\n", "\t", "\r\n", "  # note\n"])
+}
+
+/// A primitive shaped like the real thing: a supported type, usually with the argument counts
+/// its type wants, and values that are often but not always valid, so that loads get deep into
+/// the typed checks and some scenes load.
+fn primitive() -> impl Strategy<Value = String> {
+    let value = prop_oneof![
+        6 => 0.0f64..1.0,
+        3 => (-3i32..4).prop_map(f64::from),
+        2 => -10.0f64..10.0,
+        1 => prop::sample::select(vec![0.0, 1e-7, -1e-7, 1e300, -1e300, 180.0, 360.0, 361.0]),
+    ];
+    (
+        prop::sample::select(vec![
+            ("plastic", 5),
+            ("metal", 5),
+            ("trans", 7),
+            ("glass", 3),
+            ("glass", 4),
+            ("mirror", 3),
+            ("light", 3),
+            ("glow", 4),
+            ("brightfunc", 7),
+            ("polygon", 9),
+            ("polygon", 12),
+            ("sphere", 4),
+            ("cylinder", 7),
+            ("ring", 8),
+            ("cone", 8),
+            ("source", 4),
+        ]),
+        prop::sample::select(vec!["void", "void", "m", "m", "m", "sky", "x"]),
+        prop::sample::select(vec!["m", "sky", "p"]),
+        prop::bool::weighted(0.85),
+        prop::collection::vec(value, 0..16),
+    )
+        .prop_map(|((kind, count), modifier, name, exact, mut reals)| {
+            if exact {
+                reals.resize(count, 0.5);
+            }
+            let strings = match kind {
+                "brightfunc" => "2 skybright skybright.cal",
+                _ => "0",
+            };
+            let reals: Vec<String> = reals.iter().map(f64::to_string).collect();
+            format!(
+                "{modifier} {kind} {name}\n{strings}\n0\n{} {}\n",
+                reals.len(),
+                reals.join(" ")
+            )
+        })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn random_bytes_never_panic(bytes in prop::collection::vec(any::<u8>(), 0..2048)) {
+        check(&bytes)?;
+    }
+
+    #[test]
+    fn random_ascii_text_never_panics(text in "[ -~\t\n]{0,1024}") {
+        check(text.as_bytes())?;
+    }
+
+    #[test]
+    fn random_token_streams_never_panic(
+        words in prop::collection::vec((word(), separator()), 0..200),
+    ) {
+        let text: String = words.iter().flat_map(|(w, s)| [w.as_str(), *s]).collect();
+        check(text.as_bytes())?;
+    }
+
+    #[test]
+    fn random_primitives_never_panic(
+        primitives in prop::collection::vec(primitive(), 1..12),
+    ) {
+        let text = format!("void plastic m 0 0 5 .5 .5 .5 0 0\n{}", primitives.concat());
+        check(text.as_bytes())?;
+    }
+
+    #[test]
+    fn mutated_reference_room_never_panics(
+        edits in prop::collection::vec((0usize..4, any::<prop::sample::Index>(), word()), 1..6),
+    ) {
+        let room = reference_room();
+        let mut words: Vec<String> = room.split_inclusive(char::is_whitespace).map(str::to_string).collect();
+        for (kind, at, replacement) in edits {
+            if words.is_empty() {
+                break;
+            }
+            let i = at.index(words.len());
+            match kind {
+                0 => { words.remove(i); }
+                1 => words[i] = format!("{replacement} "),
+                2 => words.insert(i, format!("{replacement}\n")),
+                _ => {
+                    let j = (i + 1) % words.len();
+                    words.swap(i, j);
+                }
+            }
+        }
+        check(words.concat().as_bytes())?;
+    }
+
+    #[test]
+    fn byte_flipped_reference_room_never_panics(
+        flips in prop::collection::vec((any::<prop::sample::Index>(), any::<u8>()), 1..8),
+    ) {
+        let mut bytes = reference_room().into_bytes();
+        for (at, value) in flips {
+            let i = at.index(bytes.len());
+            bytes[i] = value;
+        }
+        check(&bytes)?;
+    }
+
+    #[test]
+    fn random_sensor_files_never_panic(bytes in prop::collection::vec(any::<u8>(), 0..1024)) {
+        if let Ok(sensors) = parse_sensors("fuzz.pts", &bytes) {
+            for s in sensors {
+                prop_assert!(s.position_m.is_finite());
+                prop_assert!((s.direction.length() - 1.0).abs() < 1e-9);
+            }
+        }
+    }
+
+    #[test]
+    fn random_sensor_lines_never_panic(
+        lines in prop::collection::vec(prop::collection::vec(word(), 0..8), 0..20),
+    ) {
+        let text: String = lines.iter().map(|l| l.join(" ") + "\n").collect();
+        match parse_sensors("fuzz.pts", text.as_bytes()) {
+            Ok(sensors) => {
+                for (i, s) in sensors.iter().enumerate() {
+                    prop_assert_eq!(&s.name, &format!("S{}", i + 1));
+                    prop_assert!((s.direction.length() - 1.0).abs() < 1e-9);
+                }
+            }
+            Err(err) => prop_assert!(err.to_string().starts_with("fuzz.pts"), "{}", err),
+        }
+    }
+}
+
+#[test]
+fn the_unmutated_reference_room_passes_the_same_checks() {
+    let room = reference_room();
+    let scene = scene::parse(LABEL, room.as_bytes()).unwrap();
+    assert_eq!(scene.surfaces().len(), 44);
+    check(room.as_bytes()).unwrap();
+}
