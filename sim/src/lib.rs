@@ -5,6 +5,8 @@
 //! `sim/` holds models only, never product logic: the product is `rtl/` and `hps/`.
 
 pub mod bus;
+pub mod capture;
 pub mod sensor;
+pub mod sky;
 
 pub use bus::{AvalonHost, RegisterFileModel, SimRegisterBus};

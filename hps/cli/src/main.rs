@@ -1,6 +1,7 @@
 //! `skylux`: the command-line tool of the Skylux device.
 
 mod demo;
+mod hdr;
 mod regs;
 mod solpos;
 
@@ -21,7 +22,13 @@ struct Cli {
 enum Command {
     /// Runs the main job on a built-in default (today: the deepest slice that works end to end,
     /// the HPS driver against the cycle-accurate fabric model).
-    Demo,
+    Demo {
+        /// Folder for the simulated campaign and the results.
+        #[arg(long, default_value = "skylux-demo")]
+        out: std::path::PathBuf,
+    },
+    /// Merges a capture folder into a calibrated luminance map (OpenEXR).
+    Hdr(hdr::HdrArgs),
     /// Reads every register and prints it decoded, field by field.
     Regs(regs::RegsArgs),
     /// Prints the sun's zenith and azimuth (NREL SPA) for one time and place, as CSV.
@@ -30,7 +37,8 @@ enum Command {
 
 fn main() -> anyhow::Result<()> {
     match Cli::parse().command {
-        Command::Demo => demo::run(),
+        Command::Demo { out } => demo::run(&out),
+        Command::Hdr(args) => hdr::run(&args),
         Command::Regs(args) => regs::run(&args),
         Command::Solpos(args) => solpos::run(&args),
     }

@@ -1,10 +1,10 @@
 //! `captures/<stamp>/capture.toml`: one HDR capture (campaign.md).
 
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
 /// Colours of the first 2x2 block of the raw frames.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, Deserialize)]
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum BayerPattern {
     GRBG,
     RGGB,
@@ -52,7 +52,7 @@ impl BayerPattern {
 }
 
 /// `[readout]`: which part of the active array the frames hold.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, Deserialize)]
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Readout {
     pub col_start: u32,
     pub row_start: u32,
@@ -69,7 +69,7 @@ impl Readout {
 }
 
 /// One `[[exposure]]` entry.
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ExposureEntry {
     pub file: String,
     /// Commanded integration time, as written to the sensor, µs.
@@ -82,7 +82,7 @@ pub struct ExposureEntry {
 }
 
 /// The whole `capture.toml`.
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CaptureConfig {
     /// Start of the exposure sequence, RFC 3339 with an explicit offset.
     pub time: String,
@@ -118,6 +118,19 @@ impl CaptureConfig {
             source,
         })?;
         Self::parse(&text, path)
+    }
+
+    /// Writes `capture.toml` (after validating it, so no tool writes what it would refuse).
+    pub fn write(&self, path: &Path) -> Result<(), CaptureError> {
+        let text = toml::to_string(self).map_err(|e| CaptureError::Parse {
+            path: path.into(),
+            message: e.to_string(),
+        })?;
+        Self::parse(&text, path)?;
+        std::fs::write(path, text).map_err(|source| CaptureError::Io {
+            path: path.into(),
+            source,
+        })
     }
 
     /// Parses and validates `capture.toml` text; `path` names the source in messages.

@@ -1,8 +1,12 @@
 //! HDR synthesis: raw Bayer exposures to one calibrated luminance map, one value per 2x2
 //! Bayer group, with per-group flags, directions and solid angles.
 
+mod capture;
+mod exr_file;
 mod geometry;
 mod merge;
 
+pub use capture::{map_capture, CaptureMap, CaptureMapError};
+pub use exr_file::{read_exr, write_exr, MapFileError, DEVICE_ATTRIBUTE, READOUT_ATTRIBUTE};
 pub use geometry::GroupGeometry;
 pub use merge::{merge, Exposure, HdrError, LuminanceMap, MapFlag, Samples};
