@@ -4,6 +4,7 @@
 //!
 //! `sim/` holds models only, never product logic: the product is `rtl/` and `hps/`.
 
+pub mod analysis;
 pub mod bus;
 pub mod capture;
 pub mod sensor;

@@ -137,29 +137,19 @@ fn noiseless_merge_is_exact_over_150_db() {
     );
 }
 
-/// The noise-limited RMS relative error of an inverse-variance merge of the exposures that are
-/// valid for the true signal, for the noise model in device.toml.
+/// The noise-limited RMS relative error over `groups`, from the true luminance
+/// (`skylux_sim::analysis`, derived from the noise model, independent of the merge).
 fn noise_bound(s: &Setup, truth: &[f64], groups: &[usize]) -> f64 {
     let d = &s.camera.config;
-    let [wr, wg, wb] = d.response.weights;
-    let weight_sum = wr + wg + wb;
-    let q = wr * wr + 2.0 * (wg / 2.0).powi(2) + wb * wb;
-    let floor = d.noise.read_noise_dn.powi(2) + 1.0 / 12.0;
-    let mut sum = 0.0;
-    for &i in groups {
-        let v = 1.0 / s.geometry.inverse_vignetting[i] as f64;
-        let rate = truth[i] * v / d.response.cg; // black-subtracted weighted signal per second
-        let mut information = 0.0;
-        for t in EXPOSURES_S {
-            let x = rate * t / weight_sum + d.sensor.black_level_dn;
-            if x >= d.sensor.valid_min_dn && x <= d.sensor.valid_max_dn {
-                let var_s =
-                    q * (d.noise.conversion_dn_per_e * (x - d.sensor.black_level_dn) + floor);
-                information += t * t / var_s;
-            }
-        }
-        sum += 1.0 / information / (rate * rate);
-    }
+    let sum: f64 = groups
+        .iter()
+        .map(|&i| {
+            let rate = truth[i] / s.geometry.inverse_vignetting[i] as f64 / d.response.cg;
+            skylux_sim::analysis::hdr_relative_sigma_bound(d, &EXPOSURES_S, rate)
+                .unwrap()
+                .powi(2)
+        })
+        .sum();
     (sum / groups.len() as f64).sqrt()
 }
 

@@ -1,5 +1,6 @@
 //! `skylux`: the command-line tool of the Skylux device.
 
+mod bench;
 mod demo;
 mod hdr;
 mod regs;
@@ -21,12 +22,15 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Runs the main job on a built-in default (today: the deepest slice that works end to end,
-    /// the HPS driver against the cycle-accurate fabric model).
+    /// the HPS drivers against the cycle-accurate fabric model, then a simulated full-sensor
+    /// sky capture through HDR synthesis).
     Demo {
         /// Folder for the simulated campaign and the results.
         #[arg(long, default_value = "skylux-demo")]
         out: std::path::PathBuf,
     },
+    /// Measures speed next to a reference (`skylux bench hdr --json`).
+    Bench(bench::BenchArgs),
     /// Merges a capture folder into a calibrated luminance map (OpenEXR).
     Hdr(hdr::HdrArgs),
     /// Reads every register and prints it decoded, field by field.
@@ -39,6 +43,7 @@ fn main() -> anyhow::Result<()> {
     match Cli::parse().command {
         Command::Demo { out } => demo::run(&out),
         Command::Hdr(args) => hdr::run(&args),
+        Command::Bench(args) => bench::run(&args),
         Command::Regs(args) => regs::run(&args),
         Command::Solpos(args) => solpos::run(&args),
     }

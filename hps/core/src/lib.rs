@@ -7,4 +7,5 @@ pub mod fpga;
 pub mod hdr;
 pub mod io;
 pub mod scene;
+pub mod sky;
 pub mod sun;

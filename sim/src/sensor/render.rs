@@ -33,14 +33,15 @@ pub struct AnalogFrame {
 }
 
 impl Samples for AnalogFrame {
+    type Sample = f64;
     fn width(&self) -> usize {
         self.width
     }
     fn height(&self) -> usize {
         self.height
     }
-    fn sample_dn(&self, x: usize, y: usize) -> f64 {
-        self.samples_dn[y * self.width + x]
+    fn row(&self, y: usize) -> &[f64] {
+        &self.samples_dn[y * self.width..(y + 1) * self.width]
     }
 }
 

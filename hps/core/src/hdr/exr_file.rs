@@ -116,7 +116,7 @@ pub fn read_exr(
             .channel_data
             .list
             .iter()
-            .find(|c| c.name == Text::from(name))
+            .find(|c| c.name.to_string() == name)
             .ok_or_else(|| invalid(format!("channel {name} is missing")))?;
         Ok(c.sample_data.values_as_f32().collect())
     };

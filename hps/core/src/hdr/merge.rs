@@ -15,13 +15,20 @@ use rayon::prelude::*;
 /// Samples of a frame, in digital numbers. Raw 12-bit frames implement it; so can unquantised
 /// frames of a simulator, to test the merge's arithmetic apart from quantisation.
 pub trait Samples: Sync {
+    /// One sample's storage (u16 for raw frames).
+    type Sample: Copy + Into<f64>;
     fn width(&self) -> usize;
     fn height(&self) -> usize;
+    /// Row `y` of samples, DN.
+    fn row(&self, y: usize) -> &[Self::Sample];
     /// The sample at column `x`, row `y`, DN.
-    fn sample_dn(&self, x: usize, y: usize) -> f64;
+    fn sample_dn(&self, x: usize, y: usize) -> f64 {
+        self.row(y)[x].into()
+    }
 }
 
 impl Samples for RawFrame {
+    type Sample = u16;
     fn width(&self) -> usize {
         self.width
     }
@@ -29,8 +36,8 @@ impl Samples for RawFrame {
         self.height
     }
     #[inline]
-    fn sample_dn(&self, x: usize, y: usize) -> f64 {
-        self.samples_dn[y * self.width + x] as f64
+    fn row(&self, y: usize) -> &[u16] {
+        &self.samples_dn[y * self.width..(y + 1) * self.width]
     }
 }
 
@@ -132,9 +139,14 @@ pub fn merge<F: Samples>(
             let mut l = Vec::with_capacity(width);
             let mut f = Vec::with_capacity(width);
             let mut s = Vec::with_capacity(width);
+            // The two raw rows of this group row, per exposure: fetched once per row.
+            let rows: Vec<[&[F::Sample]; 2]> = exposures
+                .iter()
+                .map(|e| [e.frame.row(2 * gy), e.frame.row(2 * gy + 1)])
+                .collect();
             for gx in 0..width {
                 let inv_v = geometry.inverse_vignetting[gy * width + gx] as f64;
-                let (lum, flag, sigma) = merger.group(gx, gy, inv_v);
+                let (lum, flag, sigma) = merger.group(&rows, gx, inv_v);
                 l.push(lum);
                 f.push(flag);
                 s.push(sigma);
@@ -204,8 +216,14 @@ impl<'a, F: Samples> Merger<'a, F> {
         }
     }
 
-    /// Luminance, flag and relative sigma of group (gx, gy).
-    fn group(&self, gx: usize, gy: usize, inverse_vignetting: f64) -> (f32, MapFlag, f32) {
+    /// Luminance, flag and relative sigma of group `gx` of the row pair `rows` (per exposure).
+    #[inline]
+    fn group(
+        &self,
+        rows: &[[&[F::Sample]; 2]],
+        gx: usize,
+        inverse_vignetting: f64,
+    ) -> (f32, MapFlag, f32) {
         // Up to 8 exposures per sequence: fixed-size scratch, no allocation per group.
         let mut signal = [0.0f64; 16];
         let mut valid = [false; 16];
@@ -213,10 +231,9 @@ impl<'a, F: Samples> Merger<'a, F> {
         let (mut all_over, mut all_under) = (true, true);
         let n = self.exposures.len().min(16);
         for k in 0..n {
-            let frame = self.exposures[k].frame;
             let (mut s, mut ok, mut over, mut under) = (0.0, true, false, false);
             for ((dx, dy), w) in self.taps {
-                let x = frame.sample_dn(2 * gx + dx, 2 * gy + dy);
+                let x: f64 = rows[k][dy][2 * gx + dx].into();
                 over |= x > self.valid_max;
                 under |= x < self.valid_min;
                 ok &= x >= self.valid_min && x <= self.valid_max;
@@ -238,9 +255,9 @@ impl<'a, F: Samples> Merger<'a, F> {
                 MapFlag::UnderRange
             } else {
                 // Mixed: the shortest exposure decides (too bright there means too bright).
-                let frame = self.exposures[self.shortest].frame;
+                let shortest = &rows[self.shortest];
                 let over = self.taps.iter().any(|((dx, dy), _)| {
-                    frame.sample_dn(2 * gx + dx, 2 * gy + dy) > self.valid_max
+                    Into::<f64>::into(shortest[*dy][2 * gx + dx]) > self.valid_max
                 });
                 if over {
                     MapFlag::OverRange

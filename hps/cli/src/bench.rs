@@ -1,0 +1,234 @@
+//! `skylux bench ...`: speed measured side by side with a reference in the same run
+//! (BENCHMARKS.md keeps the figures).
+
+use anyhow::Context;
+use glam::DVec3;
+use skylux_hps::camera::{CameraModel, DeviceConfig, ImagePoint, OrientationConfig};
+use skylux_hps::campaign::{BayerPattern, RawFrame, Readout};
+use skylux_hps::hdr::{merge, Exposure, GroupGeometry, LuminanceMap, MapFlag};
+use std::time::Instant;
+
+#[derive(clap::Args)]
+pub struct BenchArgs {
+    #[command(subcommand)]
+    what: BenchWhat,
+}
+
+#[derive(clap::Subcommand)]
+enum BenchWhat {
+    /// HDR synthesis of five full 2592x1944 frames (1 µs to 500 ms, 150 dB), on one core and
+    /// on all cores, next to a naive baseline, with the accuracy against the simulated truth.
+    Hdr {
+        /// Print one JSON object instead of a table.
+        #[arg(long)]
+        json: bool,
+        /// Timed repetitions (the median is reported).
+        #[arg(long, default_value_t = 5)]
+        repeat: usize,
+    },
+}
+
+pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
+    match &args.what {
+        BenchWhat::Hdr { json, repeat } => bench_hdr(*json, (*repeat).max(1)),
+    }
+}
+
+const EXPOSURES_S: [f64; 5] = [1e-6, 2.659_148e-5, 7.071_068e-4, 1.880_302e-2, 0.5];
+const WIDTH: usize = 2592;
+const HEIGHT: usize = 1944;
+
+fn median_ms(repeat: usize, mut f: impl FnMut()) -> f64 {
+    let mut times: Vec<f64> = (0..repeat)
+        .map(|_| {
+            let t = Instant::now();
+            f();
+            t.elapsed().as_secs_f64() * 1e3
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[times.len() / 2]
+}
+
+fn bench_hdr(json: bool, repeat: usize) -> anyhow::Result<()> {
+    let mut device = DeviceConfig::default();
+    device.response.cg = 1.4;
+    device.sensor.black_level_dn = 10.0;
+    device.sensor.valid_min_dn = 50.0;
+    device.sensor.valid_max_dn = 3110.0;
+    device.lens.focal_px = 600.0;
+    device.lens.vignetting = vec![0.6, 0.3, 0.1, 0.0, 0.0];
+    device.orientation = OrientationConfig {
+        axis_azimuth_deg: 0.0,
+        axis_altitude_deg: 90.0,
+        roll_deg: 0.0,
+    };
+    let camera = CameraModel::new(device.clone());
+    let readout = Readout {
+        col_start: 0,
+        row_start: 0,
+        skip: 1,
+    };
+
+    let geometry_start = Instant::now();
+    let geometry = GroupGeometry::new(&camera, &readout, WIDTH, HEIGHT);
+    let geometry_ms = geometry_start.elapsed().as_secs_f64() * 1e3;
+
+    // A 1.2e2 to 3.8e9 cd/m² log ramp across the image (150 dB).
+    let v = DVec3::new(1.0, 0.4, 0.2).normalize();
+    let dots: Vec<f64> = geometry
+        .direction
+        .iter()
+        .filter(|d| d.is_finite())
+        .map(|d| d.as_dvec3().dot(v))
+        .collect();
+    let (lo, hi) = dots
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
+    let field = move |d: DVec3| {
+        1.2e2 * (3.8e9f64 / 1.2e2).powf(((d.dot(v) - lo) / (hi - lo)).clamp(0.0, 1.0))
+    };
+    let renderer = skylux_sim::sensor::FrameRenderer {
+        camera: &camera,
+        readout,
+        raw_width: WIDTH,
+        raw_height: HEIGHT,
+    };
+    let frames: Vec<RawFrame> = EXPOSURES_S
+        .iter()
+        .enumerate()
+        .map(|(k, &t)| {
+            renderer.render(
+                &field,
+                t,
+                1.0,
+                skylux_sim::sensor::Noise::Sensor {
+                    seed: 100 + k as u64,
+                },
+            )
+        })
+        .collect();
+    let exposures: Vec<Exposure> = frames
+        .iter()
+        .zip(EXPOSURES_S)
+        .map(|(f, t)| Exposure {
+            frame: f,
+            exposure_s: t,
+            gain: 1.0,
+        })
+        .collect();
+
+    let one_core = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .context("thread pool")?;
+    let mut map = None;
+    let single_core_ms = median_ms(repeat, || {
+        map = Some(one_core.install(|| merge(&exposures, &device, BayerPattern::GRBG, &geometry)));
+    });
+    let all_cores_ms = median_ms(repeat, || {
+        map = Some(merge(&exposures, &device, BayerPattern::GRBG, &geometry));
+    });
+    let map = map.unwrap()?;
+    let baseline_ms = median_ms(repeat.min(2), || {
+        std::hint::black_box(naive_merge(&exposures, &device, &camera));
+    });
+
+    // Accuracy against the truth, and the noise-limited bound for the same groups.
+    let (mut n, mut sum, mut sum2, mut bound2) = (0usize, 0.0, 0.0, 0.0);
+    let (mut min_l, mut max_l) = (f64::MAX, 0.0f64);
+    for i in 0..map.luminance_cd_m2.len() {
+        if map.flags[i] != MapFlag::Valid || !geometry.direction[i].is_finite() {
+            continue;
+        }
+        let truth = field(geometry.direction[i].as_dvec3());
+        let l = map.luminance_cd_m2[i] as f64;
+        let rate = truth / geometry.inverse_vignetting[i] as f64 / device.response.cg;
+        let Some(b) = skylux_sim::analysis::hdr_relative_sigma_bound(&device, &EXPOSURES_S, rate)
+        else {
+            continue;
+        };
+        let e = l / truth - 1.0;
+        n += 1;
+        sum += e;
+        sum2 += e * e;
+        bound2 += b * b;
+        min_l = min_l.min(l);
+        max_l = max_l.max(l);
+    }
+    let nf = n.max(1) as f64;
+    let result = serde_json::json!({
+        "frames": EXPOSURES_S.len(),
+        "width": WIDTH,
+        "height": HEIGHT,
+        "groups": map.width * map.height,
+        "threads": rayon::current_num_threads(),
+        "single_core_ms": single_core_ms,
+        "all_cores_ms": all_cores_ms,
+        "baseline_ms": baseline_ms,
+        "geometry_precompute_ms": geometry_ms,
+        "valid_groups": n,
+        "mean_rel_error": sum / nf,
+        "rms_rel_error": (sum2 / nf).sqrt(),
+        "rms_rel_bound": (bound2 / nf).sqrt(),
+        "dynamic_range_db": 20.0 * (max_l / min_l).log10(),
+    });
+    if json {
+        println!("{result}");
+    } else {
+        println!("{}", serde_json::to_string_pretty(&result)?);
+    }
+    Ok(())
+}
+
+/// The naive baseline: what a first implementation does. Per group, the lens is inverted and
+/// the vignetting evaluated again, every exposure's luminance is computed, and the valid ones
+/// are averaged with exposure-time weights; one thread.
+fn naive_merge(
+    exposures: &[Exposure],
+    device: &DeviceConfig,
+    camera: &CameraModel,
+) -> LuminanceMap {
+    let (w, h) = (WIDTH / 2, HEIGHT / 2);
+    let [wr, wg, wb] = device.response.weights;
+    let mut luminance = vec![f32::NAN; w * h];
+    let mut flags = vec![MapFlag::UnderRange; w * h];
+    for gy in 0..h {
+        for gx in 0..w {
+            let p = ImagePoint {
+                x_px: 2.0 * gx as f64 + 1.0,
+                y_px: 2.0 * gy as f64 + 1.0,
+            };
+            let Some(d) = camera.unproject(p) else {
+                continue;
+            };
+            let v = camera.vignetting(camera.off_axis_rad(d));
+            let (mut num, mut den) = (0.0, 0.0);
+            for e in exposures {
+                let s = |dx: usize, dy: usize| e.frame.at(2 * gx + dx, 2 * gy + dy) as f64;
+                let (g1, r, b, g2) = (s(0, 0), s(1, 0), s(0, 1), s(1, 1));
+                if [g1, r, b, g2]
+                    .iter()
+                    .all(|x| *x >= device.sensor.valid_min_dn && *x <= device.sensor.valid_max_dn)
+                {
+                    let k = device.sensor.black_level_dn;
+                    let signal = wr * (r - k) + wg * ((g1 - k) + (g2 - k)) / 2.0 + wb * (b - k);
+                    let l = device.response.cg * signal / (e.exposure_s * e.gain * v);
+                    num += e.exposure_s * l;
+                    den += e.exposure_s;
+                }
+            }
+            if den > 0.0 {
+                luminance[gy * w + gx] = (num / den) as f32;
+                flags[gy * w + gx] = MapFlag::Valid;
+            }
+        }
+    }
+    LuminanceMap {
+        width: w,
+        height: h,
+        relative_sigma: vec![f32::NAN; w * h],
+        luminance_cd_m2: luminance,
+        flags,
+    }
+}
