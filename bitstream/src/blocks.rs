@@ -16,7 +16,13 @@ fn fresh<B: Block + Default>() -> String {
 }
 
 /// All blocks, in data-path order.
-pub const BLOCKS: &[ExportedBlock] = &[ExportedBlock {
-    name: "register_file",
-    verilog: fresh::<skylux_rtl::RegisterFile>,
-}];
+pub const BLOCKS: &[ExportedBlock] = &[
+    ExportedBlock {
+        name: "register_file",
+        verilog: fresh::<skylux_rtl::RegisterFile>,
+    },
+    ExportedBlock {
+        name: "bayer_grouper",
+        verilog: fresh::<skylux_rtl::bayer::BayerGrouper>,
+    },
+];

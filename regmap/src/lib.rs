@@ -21,6 +21,7 @@ extern crate alloc;
 mod map;
 pub mod render;
 mod validate;
+pub mod words;
 
 pub use map::*;
 pub use validate::{validate, validate_blocks, LayoutError};

@@ -4,6 +4,7 @@
 //! cross-check harness in `skylux-bitstream`.
 
 pub mod avalon;
+pub mod bayer;
 pub mod drive;
 pub mod regfile;
 

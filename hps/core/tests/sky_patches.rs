@@ -49,9 +49,9 @@ fn directions_fall_into_patches_by_solid_angle() {
             .unwrap()] += 1;
     }
     let mut worst = 0.0f64;
-    for i in 0..p.len() {
+    for (i, &h) in hits.iter().enumerate() {
         let expected = n as f64 * p.solid_angle_sr(i) / std::f64::consts::TAU;
-        worst = worst.max(((hits[i] as f64 - expected) / expected.sqrt()).abs());
+        worst = worst.max(((h as f64 - expected) / expected.sqrt()).abs());
     }
     assert!(worst < 5.0, "worst deviation {worst} sigma");
     assert_eq!(
