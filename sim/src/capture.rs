@@ -53,6 +53,8 @@ pub struct CaptureSpec {
     pub exposures_us: Vec<f64>,
     pub gain: f64,
     pub seed: u64,
+    /// How each group integrates the scene (real pixels: `Footprint::Integrated`).
+    pub footprint: crate::sensor::Footprint,
 }
 
 /// Renders one HDR capture of `field` through `camera` with the sensor's noise and writes it
@@ -70,6 +72,7 @@ pub fn simulate_capture(
         readout: spec.readout,
         raw_width: spec.raw_width,
         raw_height: spec.raw_height,
+        footprint: spec.footprint,
     };
     let frames: Vec<RawFrame> = spec
         .exposures_us

@@ -92,6 +92,7 @@ fn noiseless_merge_is_exact_over_150_db() {
         readout: s.readout,
         raw_width: 512,
         raw_height: 384,
+        footprint: Default::default(),
     };
     let frames: Vec<_> = EXPOSURES_S
         .iter()
@@ -161,6 +162,7 @@ fn noisy_merge_is_unbiased_and_at_the_noise_bound() {
         readout: s.readout,
         raw_width: 512,
         raw_height: 384,
+        footprint: Default::default(),
     };
     let frames: Vec<_> = EXPOSURES_S
         .iter()

@@ -31,6 +31,7 @@ pub fn simulate(dir: &Path) -> DeviceConfig {
         exposures_us: vec![10.0, 1000.0, 100_000.0],
         gain: 1.0,
         seed: 7,
+        footprint: skylux_sim::sensor::Footprint::Integrated,
     };
     simulate_capture(dir, &camera, &move |d| sky.luminance_cd_m2(d), &spec).unwrap();
     device.write(&dir.join("device.toml")).unwrap();

@@ -93,6 +93,7 @@ fn bench_hdr(json: bool, repeat: usize) -> anyhow::Result<()> {
         readout,
         raw_width: WIDTH,
         raw_height: HEIGHT,
+        footprint: Default::default(),
     };
     let frames: Vec<RawFrame> = EXPOSURES_S
         .iter()

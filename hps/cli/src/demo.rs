@@ -116,6 +116,7 @@ fn hdr_slice(out_dir: &std::path::Path) -> anyhow::Result<()> {
         exposures_us: vec![1.0, 26.59, 707.1, 18_803.0, 500_000.0],
         gain: 1.0,
         seed: 2017,
+        footprint: skylux_sim::sensor::Footprint::Integrated,
     };
     let capture_dir = out_dir.join("captures").join("2017-05-08T1200");
     let field = |d: glam::DVec3| sky.luminance_cd_m2(d);

@@ -45,6 +45,7 @@ fn hdr_command_writes_a_map_and_reports_bad_input_clearly() {
         exposures_us: vec![10.0, 1000.0, 100_000.0],
         gain: 1.0,
         seed: 1,
+        footprint: skylux_sim::sensor::Footprint::Integrated,
     };
     simulate_capture(
         dir.path(),

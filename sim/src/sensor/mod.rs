@@ -3,4 +3,4 @@
 
 mod render;
 
-pub use render::{AnalogFrame, FrameRenderer, Noise};
+pub use render::{AnalogFrame, Footprint, FrameRenderer, Noise};

@@ -1,10 +1,15 @@
-//! The sun: where it is (NREL SPA, with ΔT and refraction), and a short formula to compare.
+//! The sun: where it is (NREL SPA, with ΔT and refraction), a short formula to compare, and
+//! its extraction from a measured luminance map.
 
 mod delta_t;
+pub mod extract;
 mod michalsky;
 pub mod position;
 
 pub use delta_t::{delta_t_s, DELTA_T_YEARS};
+pub use extract::{
+    extract_sun, remove_sun, ExtractedSun, NoSun, SunFlag, SunSearch, SOLAR_DISK_SR,
+};
 pub use michalsky::solar_position_michalsky;
 pub use position::{
     angle_between_deg, parse_time_utc, refraction_deg, solar_position, solar_position_with_delta_t,
