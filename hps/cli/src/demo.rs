@@ -89,13 +89,19 @@ fn hdr_slice(out_dir: &std::path::Path) -> anyhow::Result<()> {
 
     println!("Skylux demo, part 2: a simulated sky capture through HDR synthesis");
     let started = Instant::now();
-    let mut device = DeviceConfig::default();
-    device.orientation = OrientationConfig {
-        axis_azimuth_deg: 0.0,
-        axis_altitude_deg: 90.0,
-        roll_deg: 0.0,
+    let device = DeviceConfig {
+        orientation: OrientationConfig {
+            axis_azimuth_deg: 0.0,
+            axis_altitude_deg: 90.0,
+            roll_deg: 0.0,
+        },
+        // The whole hemisphere on the sensor's short side.
+        lens: skylux_hps::camera::LensConfig {
+            focal_px: 600.0,
+            ..DeviceConfig::default().lens
+        },
+        ..DeviceConfig::default()
     };
-    device.lens.focal_px = 600.0; // the whole hemisphere on the sensor's short side
     let camera = CameraModel::new(device.clone());
     let sky = SimulatedSky {
         zenith_luminance_cd_m2: 6000.0,

@@ -3,6 +3,7 @@
 mod bench;
 mod demo;
 mod hdr;
+mod illuminance;
 mod regs;
 mod solpos;
 
@@ -33,6 +34,8 @@ enum Command {
     Bench(bench::BenchArgs),
     /// Merges a capture folder into a calibrated luminance map (OpenEXR).
     Hdr(hdr::HdrArgs),
+    /// Computes workplane illuminance at sensor points by path tracing a RADIANCE scene and sky.
+    Illuminance(illuminance::IlluminanceArgs),
     /// Reads every register and prints it decoded, field by field.
     Regs(regs::RegsArgs),
     /// Prints the sun's zenith and azimuth (NREL SPA) for one time and place, as CSV.
@@ -43,6 +46,7 @@ fn main() -> anyhow::Result<()> {
     match Cli::parse().command {
         Command::Demo { out } => demo::run(&out),
         Command::Hdr(args) => hdr::run(&args),
+        Command::Illuminance(args) => illuminance::run(&args),
         Command::Bench(args) => bench::run(&args),
         Command::Regs(args) => regs::run(&args),
         Command::Solpos(args) => solpos::run(&args),

@@ -3,6 +3,7 @@
 
 pub mod camera;
 pub mod campaign;
+pub mod engine;
 pub mod fpga;
 pub mod hdr;
 pub mod io;

@@ -1,0 +1,37 @@
+//! The daylighting engine: Monte-Carlo path tracing of workplane illuminance on a RADIANCE
+//! scene, computing what `rtrace -I` computes (issue 5).
+//!
+//! One file per concept, as pbrt-v4: [`ray`], [`slab`] (the box test, the one operation the
+//! FPGA takes over, behind [`slab::BoxTest`]), [`bvh`], [`shapes`], [`material`], [`sky`],
+//! [`world`] (the traceable scene), [`integrator`] and [`illuminance`].
+//!
+//! ```no_run
+//! use skylux_hps::{engine, scene};
+//! let scene = scene::load_files(&["room/scene.rad", "sky.rad"])?;
+//! let sensors = scene::load_sensors("room/sensors.pts")?;
+//! let world = engine::World::new(&scene)?;
+//! let settings = engine::Settings { ambient_bounces: 5, samples_per_sensor: 1024, ..Default::default() };
+//! for s in engine::illuminance(&world, &sensors, &settings, &|_, _| {})? {
+//!     println!("{},{:.1},{:.1}", s.name, s.illuminance_lux, s.stderr_lux);
+//! }
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+pub mod bvh;
+mod error;
+pub mod illuminance;
+pub mod integrator;
+pub mod material;
+pub mod ray;
+pub mod rng;
+pub mod shapes;
+pub mod sky;
+pub mod slab;
+pub mod world;
+
+pub use error::EngineError;
+pub use illuminance::{
+    illuminance, lux_from_irradiance, SensorIlluminance, WHITE_EFFICACY_LM_PER_W,
+};
+pub use integrator::Settings;
+pub use world::World;

@@ -1,0 +1,290 @@
+//! The traceable scene: surfaces with their materials under a BVH, and the distant sources.
+
+use super::bvh::Bvh;
+use super::error::EngineError;
+use super::material::{glass_fractions, Emitter, Material, NormalMaterial};
+use super::ray::Ray;
+use super::shapes::{PreparedCone, PreparedPolygon, Primitive, ShapeHit};
+use super::sky::{DistantEmitter, DistantKind, SkyFunction};
+use super::slab::{BoxTest, SlabTest};
+use crate::scene::{Modifier, ModifierKind, ModifierRef, Scene, Shape, Surface};
+use glam::DVec3;
+
+/// Distance under which a ray leaving a curved surface ignores it (RADIANCE's `FTINY`, in
+/// metres); flat surfaces are excluded by identity instead.
+const CURVED_SELF_HIT_M: f64 = 1e-6;
+/// Most surfaces a shadow ray passes through (glass panes, invisible surfaces) before it is
+/// taken as blocked: a guard against a pathological stack of coincident panes.
+const MAX_SHADOW_CROSSINGS: usize = 64;
+
+/// A ray's closest surface hit.
+#[derive(Clone, Copy, Debug)]
+pub struct Hit {
+    pub t_m: f64,
+    pub normal: DVec3,
+    /// Index of the primitive in the world.
+    pub primitive: u32,
+}
+
+/// The scene as the integrator sees it.
+pub struct World {
+    primitives: Vec<Primitive>,
+    material_of: Vec<u32>,
+    materials: Vec<Material>,
+    bvh: Bvh,
+    box_test: Box<dyn BoxTest + Send>,
+    distant: Vec<DistantEmitter>,
+}
+
+impl std::fmt::Debug for World {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("World")
+            .field("primitives", &self.primitives.len())
+            .field("bvh_nodes", &self.bvh.node_count())
+            .field("distant_sources", &self.distant.len())
+            .finish()
+    }
+}
+
+impl World {
+    /// Prepares a loaded scene for tracing, with the software box test.
+    pub fn new(scene: &Scene) -> Result<Self, EngineError> {
+        Self::with_box_test(scene, Box::new(SlabTest))
+    }
+
+    /// As [`World::new`], with another box-test implementation (the FPGA unit).
+    pub fn with_box_test(
+        scene: &Scene,
+        box_test: Box<dyn BoxTest + Send>,
+    ) -> Result<Self, EngineError> {
+        let mut primitives = Vec::new();
+        let mut material_of = Vec::new();
+        let mut materials = Vec::new();
+        let mut material_index = std::collections::HashMap::new();
+        let mut distant = Vec::new();
+        for surface in scene.surfaces() {
+            let (material, patterns) = resolve(scene, surface)?;
+            if let Shape::Source(s) = &surface.shape {
+                let Some(m) = material else {
+                    continue; // void: RADIANCE ignores it
+                };
+                let (kind, radiance, illuminates) = match &m.kind {
+                    ModifierKind::Light(l) => (DistantKind::Light, l.radiance_w_sr_m2, true),
+                    ModifierKind::Glow(g) => (
+                        DistantKind::Glow,
+                        g.radiance_w_sr_m2,
+                        g.max_radius_m >= -1e-6,
+                    ),
+                    other => {
+                        return Err(EngineError::Unsupported {
+                            at: surface.origin.clone(),
+                            what: format!(
+                                "source `{}` has a {} material; only light and glow are traced \
+                                 on a distant source",
+                                surface.name,
+                                other.type_name()
+                            ),
+                        })
+                    }
+                };
+                if !illuminates {
+                    continue;
+                }
+                let half = 0.5 * s.angle_deg.to_radians();
+                distant.push(DistantEmitter {
+                    name: surface.name.clone(),
+                    kind,
+                    direction: s.direction,
+                    cos_half_angle: half.cos(),
+                    solid_angle_sr: s.solid_angle_sr(),
+                    radiance_w_sr_m2: radiance,
+                    patterns,
+                });
+                continue;
+            }
+            let key = surface.modifier;
+            let index = match material_index.get(&key) {
+                Some(&i) => i,
+                None => {
+                    let prepared = prepare_material(scene, surface, material, patterns)?;
+                    materials.push(prepared);
+                    let i = (materials.len() - 1) as u32;
+                    material_index.insert(key, i);
+                    i
+                }
+            };
+            primitives.push(match &surface.shape {
+                Shape::Polygon(p) => Primitive::Polygon(PreparedPolygon::new(p)),
+                Shape::Sphere(s) => Primitive::Sphere(s.clone()),
+                Shape::Cylinder(c) => Primitive::Cone(PreparedCone::from_cylinder(c)),
+                Shape::Cone(c) => Primitive::Cone(PreparedCone::from_cone(c)),
+                Shape::Ring(r) => Primitive::Ring(r.clone()),
+                Shape::Source(_) => unreachable!("handled above"),
+            });
+            material_of.push(index);
+        }
+        let bounds: Vec<_> = primitives.iter().map(|p| p.bounds()).collect();
+        Ok(World {
+            bvh: Bvh::build(&bounds),
+            primitives,
+            material_of,
+            materials,
+            box_test,
+            distant,
+        })
+    }
+
+    pub fn distant_sources(&self) -> &[DistantEmitter] {
+        &self.distant
+    }
+
+    pub fn primitive_count(&self) -> usize {
+        self.primitives.len()
+    }
+
+    pub fn material(&self, primitive: u32) -> &Material {
+        &self.materials[self.material_of[primitive as usize] as usize]
+    }
+
+    pub fn is_flat(&self, primitive: u32) -> bool {
+        self.primitives[primitive as usize].is_flat()
+    }
+
+    /// The closest surface along `ray`, not counting the flat surface `from` the ray leaves.
+    pub fn intersect(&self, ray: &Ray, from: Option<u32>) -> Option<Hit> {
+        let curved_from = from.filter(|&p| !self.is_flat(p));
+        self.bvh.closest(
+            self.box_test.as_ref(),
+            ray,
+            0.0,
+            f64::INFINITY,
+            |p, t_max| {
+                if Some(p) == from && curved_from.is_none() {
+                    return None;
+                }
+                let t_min = if Some(p) == curved_from {
+                    CURVED_SELF_HIT_M
+                } else {
+                    0.0
+                };
+                self.primitives[p as usize]
+                    .intersect(ray, t_min, t_max)
+                    .map(|ShapeHit { t_m, normal }| Hit {
+                        t_m,
+                        normal,
+                        primitive: p,
+                    })
+            },
+            |h| h.t_m,
+        )
+    }
+
+    /// What reaches `origin` from a distant source along unit `dir` through the scene: 1 if
+    /// nothing is in the way, the product of the transmissions of `glass` and smooth `trans`
+    /// surfaces crossed (RADIANCE traces shadow rays through them, glass.c and normal.c), 0 if
+    /// anything else blocks it.
+    pub fn shadow_transmission(&self, origin: DVec3, from: Option<u32>, dir: DVec3) -> DVec3 {
+        let mut ray = Ray::new(origin, dir);
+        let mut from = from;
+        let mut t = DVec3::ONE;
+        for _ in 0..MAX_SHADOW_CROSSINGS {
+            let Some(hit) = self.intersect(&ray, from) else {
+                return t;
+            };
+            match self.material(hit.primitive) {
+                Material::Invisible => {}
+                Material::Glass(g) => t *= glass_fractions(g, hit.normal.dot(dir).abs()).0,
+                Material::Normal(m) => {
+                    t *= m
+                        .shade(dir, hit.normal, self.is_flat(hit.primitive))
+                        .shadow_transmission()
+                }
+                Material::Mirror { .. } | Material::Emitter(_) => return DVec3::ZERO,
+            }
+            if t == DVec3::ZERO {
+                return t;
+            }
+            ray = Ray::new(ray.at(hit.t_m), dir);
+            from = Some(hit.primitive);
+        }
+        DVec3::ZERO
+    }
+}
+
+/// Walks a surface's modifier chain: its material (None for void) and every pattern on the
+/// chain, above and below the material (RADIANCE applies both: `rayshade` and `raytexture`).
+fn resolve<'a>(
+    scene: &'a Scene,
+    surface: &Surface,
+) -> Result<(Option<&'a Modifier>, Vec<SkyFunction>), EngineError> {
+    let mut patterns = Vec::new();
+    let mut material = None;
+    let mut next = surface.modifier;
+    while let ModifierRef::Defined(id) = next {
+        let Some(m) = scene.modifier(id) else { break };
+        match &m.kind {
+            ModifierKind::Brightfunc(b) => {
+                patterns.push(SkyFunction::from_brightfunc(b, &m.origin)?)
+            }
+            _ if material.is_none() => material = Some(m),
+            _ => {}
+        }
+        next = m.modifier;
+    }
+    Ok((material, patterns))
+}
+
+fn prepare_material(
+    scene: &Scene,
+    surface: &Surface,
+    material: Option<&Modifier>,
+    patterns: Vec<SkyFunction>,
+) -> Result<Material, EngineError> {
+    let Some(m) = material else {
+        return Ok(Material::Invisible);
+    };
+    let _ = scene;
+    let emitter = matches!(m.kind, ModifierKind::Light(_) | ModifierKind::Glow(_));
+    if !patterns.is_empty() && !emitter {
+        return Err(EngineError::Unsupported {
+            at: surface.origin.clone(),
+            what: format!(
+                "surface `{}`: a brightfunc pattern on a {} material; patterns are traced on \
+                 light and glow only",
+                surface.name,
+                m.kind.type_name()
+            ),
+        });
+    }
+    Ok(match &m.kind {
+        ModifierKind::Plastic(p) => Material::Normal(NormalMaterial::from(p)),
+        ModifierKind::Metal(p) => Material::Normal(NormalMaterial::from(p)),
+        ModifierKind::Trans(p) => Material::Normal(NormalMaterial::from(p)),
+        ModifierKind::Glass(g) => Material::Glass(g.clone()),
+        ModifierKind::Mirror(mirror) => {
+            if mirror.alternate_material.is_some() {
+                return Err(EngineError::Unsupported {
+                    at: m.origin.clone(),
+                    what: format!(
+                        "mirror `{}` with an alternate material is not traced yet",
+                        m.name
+                    ),
+                });
+            }
+            Material::Mirror {
+                reflectance_rgb: mirror.reflectance_rgb,
+            }
+        }
+        ModifierKind::Light(l) => Material::Emitter(Emitter {
+            radiance_w_sr_m2: l.radiance_w_sr_m2,
+            patterns,
+            illuminates: true,
+        }),
+        ModifierKind::Glow(g) => Material::Emitter(Emitter {
+            radiance_w_sr_m2: g.radiance_w_sr_m2,
+            patterns,
+            illuminates: g.max_radius_m >= -1e-6,
+        }),
+        ModifierKind::Brightfunc(_) => unreachable!("patterns are not materials"),
+    })
+}

@@ -1,0 +1,352 @@
+//! The engine against closed forms, independent of RADIANCE and of the engine's own code:
+//! each expected value below is derived in its comment from radiometry alone.
+//!
+//! Monte-Carlo results are accepted within 4 standard errors (a false failure about once in
+//! 16 000 runs; the seeds are fixed, so a run is repeatable) plus the stated modelling margin.
+
+use skylux_hps::engine::{self, Settings, World};
+use skylux_hps::scene::{self, Sensor};
+use std::f64::consts::PI;
+
+/// RADIANCE's WHTEFFICACY (color.h): lux per W/m² of grey irradiance.
+const LM_PER_W: f64 = 179.0;
+
+fn world(text: &str) -> World {
+    let scene = scene::parse("test.rad", text.as_bytes()).expect("scene parses");
+    World::new(&scene).expect("scene is traceable")
+}
+
+fn sensor(position: [f64; 3], direction: [f64; 3]) -> Vec<Sensor> {
+    let line = format!(
+        "{} {} {} {} {} {}\n",
+        position[0], position[1], position[2], direction[0], direction[1], direction[2]
+    );
+    scene::parse_sensors("test.pts", line.as_bytes()).unwrap()
+}
+
+fn run(w: &World, sensors: &[Sensor], ab: u32, ad: u32) -> engine::SensorIlluminance {
+    let settings = Settings {
+        ambient_bounces: ab,
+        samples_per_sensor: ad,
+        seed: 42,
+        ..Settings::default()
+    };
+    engine::illuminance(w, sensors, &settings, &|_, _| {})
+        .unwrap()
+        .remove(0)
+}
+
+fn assert_close(what: &str, got: &engine::SensorIlluminance, expect_lux: f64, margin_rel: f64) {
+    let err = got.illuminance_lux - expect_lux;
+    let allowed = 4.0 * got.stderr_lux + margin_rel * expect_lux.abs();
+    println!(
+        "{what}: {:.4} lux (± {:.4}) vs {:.4} closed form, error {:+.4} % ({:.2} σ)",
+        got.illuminance_lux,
+        got.stderr_lux,
+        expect_lux,
+        100.0 * err / expect_lux,
+        if got.stderr_lux > 0.0 {
+            err / got.stderr_lux
+        } else {
+            0.0
+        }
+    );
+    assert!(
+        err.abs() <= allowed,
+        "{what}: {} lux vs {expect_lux} expected (allowed ±{allowed})",
+        got.illuminance_lux
+    );
+}
+
+/// (a) Unobstructed sky of uniform radiance L on the upper hemisphere: E = ∫ L cos θ dω = π L.
+/// With a ground of radiance G below, a vertical sensor sees half of each: E = π (L + G) / 2.
+#[test]
+fn uniform_sky_hemisphere() {
+    let w = world(
+        "void glow sky_mat 0 0 4 2 2 2 0\nsky_mat source sky 0 0 4 0 0 1 180\n\
+         void glow ground_mat 0 0 4 0.5 0.5 0.5 0\nground_mat source ground 0 0 4 0 0 -1 180\n",
+    );
+    let up = run(&w, &sensor([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]), 1, 2000);
+    assert_close(
+        "horizontal sensor, uniform sky",
+        &up,
+        PI * 2.0 * LM_PER_W,
+        1e-12,
+    );
+    let side = run(&w, &sensor([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]), 1, 20_000);
+    assert_close(
+        "vertical sensor, sky and ground",
+        &side,
+        PI * (2.0 + 0.5) / 2.0 * LM_PER_W,
+        0.0,
+    );
+}
+
+/// (a') gensky's CIE overcast sky: `gensky ... -c -B 100` sets the zenith brightness so that
+/// the horizontal diffuse irradiance is 100 W/m² (Lz = B / (7π/9), from
+/// ∫ Lz (1 + 2 cos θ)/3 cos θ dω = 7π/9 Lz). skybright.cal also blends the sky into the ground
+/// near the horizon with weights (Dz + 1.01)^±10, so the exact value is computed here by
+/// quadrature of the .cal formula over θ (azimuthally uniform).
+#[test]
+fn cie_overcast_sky_horizontal_irradiance() {
+    let (zenith, ground) = (4.093e+01, 6.366e+00); // gensky 3 21 12 -c -a 46.5 -o -6.6 -m -15 -B 100
+    let w = world(&format!(
+        "void brightfunc skyfunc 2 skybr skybright.cal 0 3 2 {zenith} {ground}\n\
+         skyfunc glow sky_glow 0 0 4 1 1 1 0\nsky_glow source sky 0 0 4 0 0 1 180\n"
+    ));
+    let n = 200_000;
+    let mut e = 0.0;
+    for i in 0..n {
+        let theta = (i as f64 + 0.5) / n as f64 * PI / 2.0;
+        let dz = theta.cos();
+        let sky = zenith * (1.0 + 2.0 * dz) / 3.0;
+        let (a, b) = ((dz + 1.01).powi(10), (dz + 1.01).powi(-10));
+        let l = (a * sky + b * ground) / (a + b);
+        e += l * dz * theta.sin() * 2.0 * PI * (PI / 2.0 / n as f64);
+    }
+    // The quadrature is within 0.5 % of gensky's nominal 100 W/m².
+    assert!((e - 100.0).abs() < 0.5, "{e}");
+    let got = run(&w, &sensor([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]), 1, 20_000);
+    assert_close("CIE overcast, horizontal", &got, e * LM_PER_W, 1e-6);
+}
+
+/// View factor from a differential area to a parallel rectangle of sides a, b at height h
+/// with one corner straight above it (Howell, *A Catalog of Radiation Heat Transfer
+/// Configuration Factors*, B-3): F = 1/(2π) [X/√(1+X²) atan(Y/√(1+X²)) + Y/√(1+Y²)
+/// atan(X/√(1+Y²))], X = a/h, Y = b/h.
+fn corner_view_factor(a: f64, b: f64, h: f64) -> f64 {
+    let (x, y) = (a / h, b / h);
+    let (sx, sy) = ((1.0 + x * x).sqrt(), (1.0 + y * y).sqrt());
+    ((x / sx) * (y / sx).atan() + (y / sy) * (x / sy).atan()) / (2.0 * PI)
+}
+
+/// (b) A sensor facing a diffuse emitting rectangle of radiance L: E = π L F, F its view
+/// factor. Off-centre, so four corner rectangles make it up: x from −0.5 to 1.5, y from −1 to 2
+/// at height 1. Tried as a `glow` and as a `light` (front side facing the sensor).
+#[test]
+fn facing_a_radiant_rectangle() {
+    let f = corner_view_factor(0.5, 1.0, 1.0)
+        + corner_view_factor(1.5, 1.0, 1.0)
+        + corner_view_factor(0.5, 2.0, 1.0)
+        + corner_view_factor(1.5, 2.0, 1.0);
+    for material in [
+        "glow panel_mat 0 0 4 3 3 3 0",
+        "light panel_mat 0 0 3 3 3 3",
+    ] {
+        // Vertices clockwise seen from above, so the normal points down at the sensor.
+        let w = world(&format!(
+            "void {material}\npanel_mat polygon panel 0 0 12 -0.5 -1 1  -0.5 2 1  1.5 2 1  1.5 -1 1\n"
+        ));
+        let got = run(&w, &sensor([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]), 1, 40_000);
+        assert_close(material, &got, PI * 3.0 * f * LM_PER_W, 0.0);
+    }
+    // Seen from behind, an emitter is black (RADIANCE m_light: `rod < 0`).
+    let w = world(
+        "void glow panel_mat 0 0 4 3 3 3 0\n\
+         panel_mat polygon panel 0 0 12 -0.5 -1 1  1.5 -1 1  1.5 2 1  -0.5 2 1\n",
+    );
+    let got = run(&w, &sensor([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]), 1, 1000);
+    assert_eq!(got.illuminance_lux, 0.0);
+}
+
+/// (b') A large diffuse floor of reflectance ρ under a uniform sky of radiance L receives
+/// π L and so has radiance ρ L; a sensor looking down at it gets E = π ρ L (times the floor's
+/// view factor, 1 − 3e-9 for a 2 km square 1 m below).
+#[test]
+fn diffuse_floor_under_uniform_sky() {
+    let w = world(
+        "void glow sky_mat 0 0 4 1 1 1 0\nsky_mat source sky 0 0 4 0 0 1 180\n\
+         void plastic floor_mat 0 0 5 0.3 0.3 0.3 0 0\n\
+         floor_mat polygon floor 0 0 12 -1000 -1000 0  1000 -1000 0  1000 1000 0  -1000 1000 0\n",
+    );
+    let got = run(&w, &sensor([0.0, 0.0, 1.0], [0.0, 0.0, -1.0]), 2, 20_000);
+    assert_close("floor under uniform sky", &got, PI * 0.3 * LM_PER_W, 1e-6);
+    // With -ab 1 the floor gets no ambient light: RADIANCE's -av 0.
+    let none = run(&w, &sensor([0.0, 0.0, 1.0], [0.0, 0.0, -1.0]), 1, 1000);
+    assert_eq!(none.illuminance_lux, 0.0);
+}
+
+/// (c) The sun as a distant `light` of radiance L and full angle 2α at angle θ from the
+/// sensor normal: a uniform disc gives E = π L sin²α cos θ exactly (≈ L Ω cos θ with
+/// Ω = 2π(1 − cos α); they differ by α²/4 ~ 5e-6 for the sun).
+#[test]
+fn sun_at_known_incidence() {
+    let (radiance, angle_deg, theta_deg) = (6.695e6, 0.533_f64, 35.0_f64);
+    let alpha = (angle_deg / 2.0).to_radians();
+    let th = theta_deg.to_radians();
+    let sun = format!(
+        "void light solar 0 0 3 {radiance} {radiance} {radiance}\n\
+         solar source sun 0 0 4 {} 0 {} {angle_deg}\n",
+        th.sin(),
+        th.cos()
+    );
+    let expect = PI * radiance * alpha.sin().powi(2) * th.cos() * LM_PER_W;
+    let got = run(
+        &world(&sun),
+        &sensor([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]),
+        0,
+        4000,
+    );
+    assert_close("sun at 35°", &got, expect, 0.0);
+    assert!((got.illuminance_lux / expect - 1.0).abs() < 1e-4);
+
+    // Through a horizontal pane of glass with transmissivity 0.708456 at normal incidence:
+    // the manual's conversion makes that a transmittance Tn = 0.65 (glass.c header comment).
+    let overhead = format!(
+        "void light solar 0 0 3 {radiance} {radiance} {radiance}\n\
+         solar source sun 0 0 4 0 0 1 {angle_deg}\n\
+         void glass pane_mat 0 0 3 0.708456 0.708456 0.708456\n\
+         pane_mat polygon pane 0 0 12 -5 -5 1 5 -5 1 5 5 1 -5 5 1\n"
+    );
+    let expect = 0.65 * PI * radiance * alpha.sin().powi(2) * LM_PER_W;
+    let got = run(
+        &world(&overhead),
+        &sensor([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]),
+        0,
+        1000,
+    );
+    assert_close("sun through glass", &got, expect, 1e-5);
+
+    // Sun on a large floor of reflectance ρ, sensor looking down at it: the floor's radiance
+    // is ρ E_floor / π, so E = ρ E_floor (view factor 1 − 3e-9): next-event estimation at a
+    // diffuse vertex. An opaque plastic pane instead of glass: nothing.
+    let floor = format!(
+        "void light solar 0 0 3 {radiance} {radiance} {radiance}\n\
+         solar source sun 0 0 4 {} 0 {} {angle_deg}\n\
+         void plastic floor_mat 0 0 5 0.25 0.25 0.25 0 0\n\
+         floor_mat polygon floor 0 0 12 -1000 -1000 0  1000 -1000 0  1000 1000 0  -1000 1000 0\n",
+        th.sin(),
+        th.cos()
+    );
+    let expect = 0.25 * PI * radiance * alpha.sin().powi(2) * th.cos() * LM_PER_W;
+    let got = run(
+        &world(&floor),
+        &sensor([0.0, 0.0, 1.0], [0.0, 0.0, -1.0]),
+        1,
+        20_000,
+    );
+    assert_close("sun on a floor", &got, expect, 1e-5);
+    let blocked = overhead.replace(
+        "glass pane_mat 0 0 3 0.708456 0.708456 0.708456",
+        "plastic pane_mat 0 0 5 .5 .5 .5 0 0",
+    );
+    let got = run(
+        &world(&blocked),
+        &sensor([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]),
+        0,
+        100,
+    );
+    assert_eq!(got.illuminance_lux, 0.0);
+}
+
+/// (d) Closed-cavity ("furnace") test: a hollow sphere of radius R with a diffuse wall of
+/// reflectance ρ, lit only by a small glowing sphere of radius r and radiance Le at its
+/// centre. Every wall point gets E0 = π Le s² (s = r/R) from the emitter and, from the
+/// rest of the wall (uniform radiance Lw, all of it in view except the emitter's disc),
+/// π Lw (1 − s²). With b ambient bounces left, Lw(b) = ρ/π (E0 + π (1 − s²) Lw(b − 1)) and
+/// Lw(0) = 0, so Lw(b) = ρ Le s² Σ_{j<b} (ρ (1 − s²))^j. A sensor halfway to the wall,
+/// facing away from the centre, sees only wall: E = π Lw(ab − 1).
+#[test]
+fn closed_sphere_furnace() {
+    let (rho, radius, r, le) = (0.8_f64, 2.0_f64, 0.4_f64, 10.0_f64);
+    let w = world(&format!(
+        "void plastic wall_mat 0 0 5 {rho} {rho} {rho} 0 0\nwall_mat sphere wall 0 0 4 0 0 0 {radius}\n\
+         void glow lamp_mat 0 0 4 {le} {le} {le} 0\nlamp_mat sphere lamp 0 0 4 0 0 0 {r}\n"
+    ));
+    let s2 = (r / radius) * (r / radius);
+    let lw = |b: u32| {
+        (0..b)
+            .map(|j| rho * le * s2 * (rho * (1.0 - s2)).powi(j as i32))
+            .sum::<f64>()
+    };
+    let sensors = sensor([0.0, 0.0, -1.0], [0.0, 0.0, -1.0]);
+    for ab in [2, 5] {
+        let got = run(&w, &sensors, ab, 20_000);
+        assert_close(
+            &format!("furnace -ab {ab}"),
+            &got,
+            PI * lw(ab - 1) * LM_PER_W,
+            0.0,
+        );
+    }
+    // Converged: the geometric series summed, ρ Le s² / (1 − ρ (1 − s²)); -ab 400 leaves
+    // (0.768)^400 ~ 1e-46 of it.
+    let got = run(&w, &sensors, 400, 100_000);
+    let infinite = PI * rho * le * s2 / (1.0 - rho * (1.0 - s2)) * LM_PER_W;
+    assert_close("furnace converged", &got, infinite, 0.0);
+    assert!((got.illuminance_lux / infinite - 1.0).abs() < 0.02);
+}
+
+/// (3) The same seed gives bit-identical results on 1 and 2 threads; another seed differs.
+#[test]
+fn deterministic_across_thread_counts() {
+    let w = world(
+        "void glow sky_mat 0 0 4 1 1 1 0\nsky_mat source sky 0 0 4 0 0 1 180\n\
+         void plastic m 0 0 5 0.5 0.5 0.5 0 0\n\
+         m polygon roof 0 0 12 -1 -1 1  1 -1 1  1 1 1  -1 1 1\n\
+         m polygon floor 0 0 12 -9 -9 0  9 -9 0  9 9 0  -9 9 0\n",
+    );
+    let sensors = scene::parse_sensors(
+        "s.pts",
+        b"0 0 0.5 0 0 1\n0.5 0.2 0.5 0 0 1\n3 0 0.5 0 0 1\n",
+    )
+    .unwrap();
+    let settings = |seed| Settings {
+        ambient_bounces: 3,
+        samples_per_sensor: 300,
+        seed,
+        ..Settings::default()
+    };
+    let on = |threads: usize, seed: u64| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| engine::illuminance(&w, &sensors, &settings(seed), &|_, _| {}).unwrap())
+    };
+    let one = on(1, 7);
+    let two = on(2, 7);
+    for (a, b) in one.iter().zip(&two) {
+        assert_eq!(a.illuminance_lux.to_bits(), b.illuminance_lux.to_bits());
+        assert_eq!(a.stderr_lux.to_bits(), b.stderr_lux.to_bits());
+    }
+    assert_ne!(on(2, 8)[0].illuminance_lux, one[0].illuminance_lux);
+}
+
+/// Scenes the engine cannot trace faithfully are refused with the file and line.
+#[test]
+fn unsupported_input_is_a_clear_error() {
+    let scene = scene::parse(
+        "odd.rad",
+        b"void brightfunc f 2 myfunc my.cal 0 0\nf glow g 0 0 4 1 1 1 0\ng source s 0 0 4 0 0 1 180\n",
+    )
+    .unwrap();
+    let err = World::new(&scene).unwrap_err().to_string();
+    assert!(
+        err.starts_with("odd.rad:1:") && err.contains("myfunc"),
+        "{err}"
+    );
+    let scene = scene::parse(
+        "p.rad",
+        b"void brightfunc f 2 skybr skybright.cal 0 3 2 1 1\nf plastic m 0 0 5 .5 .5 .5 0 0\n\
+          m polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n",
+    )
+    .unwrap();
+    let err = World::new(&scene).unwrap_err().to_string();
+    assert!(
+        err.starts_with("p.rad:3:") && err.contains("pattern"),
+        "{err}"
+    );
+    let settings = Settings {
+        samples_per_sensor: 0,
+        ..Settings::default()
+    };
+    let w = world("void glow g 0 0 4 1 1 1 0\ng source s 0 0 4 0 0 1 180\n");
+    assert!(engine::illuminance(
+        &w,
+        &sensor([0.0; 3], [0.0, 0.0, 1.0]),
+        &settings,
+        &|_, _| {}
+    )
+    .is_err());
+}
