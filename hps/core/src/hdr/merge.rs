@@ -135,24 +135,13 @@ pub fn merge<F: Samples>(
     let width = geometry.width;
     let rows: Vec<(Vec<f32>, Vec<MapFlag>, Vec<f32>)> = (0..geometry.height)
         .into_par_iter()
-        .map(|gy| {
-            let mut l = Vec::with_capacity(width);
-            let mut f = Vec::with_capacity(width);
-            let mut s = Vec::with_capacity(width);
-            // The two raw rows of this group row, per exposure: fetched once per row.
-            let rows: Vec<[&[F::Sample]; 2]> = exposures
-                .iter()
-                .map(|e| [e.frame.row(2 * gy), e.frame.row(2 * gy + 1)])
-                .collect();
-            for gx in 0..width {
-                let inv_v = geometry.inverse_vignetting[gy * width + gx] as f64;
-                let (lum, flag, sigma) = merger.group(&rows, gx, inv_v);
-                l.push(lum);
-                f.push(flag);
-                s.push(sigma);
-            }
-            (l, f, s)
-        })
+        .map_init(
+            || RowScratch::new(exposures.len(), width),
+            |scratch, gy| {
+                let inverse_vignetting = &geometry.inverse_vignetting[gy * width..(gy + 1) * width];
+                merger.row(exposures, gy, inverse_vignetting, scratch)
+            },
+        )
         .collect();
     let mut map = LuminanceMap {
         width,
@@ -169,122 +158,163 @@ pub fn merge<F: Samples>(
     Ok(map)
 }
 
+/// Per-row working arrays, reused across the rows a thread merges.
+struct RowScratch {
+    /// Weighted black-subtracted signal per exposure and group (exposure-major).
+    signal: Vec<f64>,
+    /// Per exposure and group: 1 valid, 0 not.
+    valid: Vec<bool>,
+    over: Vec<bool>,
+    under: Vec<bool>,
+}
+
+impl RowScratch {
+    fn new(exposures: usize, width: usize) -> Self {
+        Self {
+            signal: vec![0.0; exposures * width],
+            valid: vec![false; exposures * width],
+            over: vec![false; exposures * width],
+            under: vec![false; exposures * width],
+        }
+    }
+}
+
 /// Everything per-set that the per-group merge needs, precomputed.
-struct Merger<'a, F: Samples> {
-    exposures: &'a [Exposure<'a, F>],
-    /// t g per exposure.
+struct Merger {
+    /// t g per exposure, and its inverse.
     tg: Vec<f64>,
+    inv_tg: Vec<f64>,
+    /// q K g t / Σw per exposure: the shot-noise variance of the signal per unit pilot rate.
+    shot_var_per_rate: Vec<f64>,
     /// Index of the exposure with the smallest t g.
     shortest: usize,
-    /// (dx, dy) and weight of the R, G1, G2, B samples: w_r, w_g/2, w_g/2, w_b.
-    taps: [((usize, usize), f64); 4],
-    /// Σ of the tap weights squared.
-    q: f64,
-    /// Σ of the tap weights (w_r + w_g + w_b): a grey sample is S / this.
-    weight_sum: f64,
+    /// Weight of the sample at (dx, dy) of a 2x2 block, indexed [dy][dx]: w_r, w_g/2 (twice)
+    /// and w_b placed by the Bayer phase.
+    weight_at: [[f64; 2]; 2],
+    /// q (read noise² + 1/12): the variance floor of a group's signal.
+    floor_var: f64,
     black: f64,
     valid_min: f64,
     valid_max: f64,
     cg: f64,
-    conversion: f64,
-    /// Read noise plus quantisation (1/12 DN²), DN² per sample.
-    floor_var: f64,
 }
 
-impl<'a, F: Samples> Merger<'a, F> {
-    fn new(exposures: &'a [Exposure<'a, F>], device: &DeviceConfig, pattern: BayerPattern) -> Self {
+impl Merger {
+    fn new<F: Samples>(
+        exposures: &[Exposure<F>],
+        device: &DeviceConfig,
+        pattern: BayerPattern,
+    ) -> Self {
         let [wr, wg, wb] = device.response.weights;
         let [r, g1, g2, b] = pattern.offsets();
-        let taps = [(r, wr), (g1, wg / 2.0), (g2, wg / 2.0), (b, wb)];
+        let mut weight_at = [[0.0; 2]; 2];
+        for ((dx, dy), w) in [(r, wr), (g1, wg / 2.0), (g2, wg / 2.0), (b, wb)] {
+            weight_at[dy][dx] = w;
+        }
+        let q: f64 = weight_at.iter().flatten().map(|w| w * w).sum();
+        let weight_sum = wr + wg + wb;
         let tg: Vec<f64> = exposures.iter().map(|e| e.exposure_s * e.gain).collect();
         let shortest = (0..tg.len())
             .min_by(|&a, &b| tg[a].total_cmp(&tg[b]))
             .unwrap_or(0);
         Self {
-            exposures,
-            shortest,
-            q: taps.iter().map(|(_, w)| w * w).sum(),
-            weight_sum: wr + wg + wb,
-            taps,
+            inv_tg: tg.iter().map(|t| 1.0 / t).collect(),
+            shot_var_per_rate: exposures
+                .iter()
+                .zip(&tg)
+                .map(|(e, t)| q * device.noise.conversion_dn_per_e * e.gain * t / weight_sum)
+                .collect(),
             tg,
+            shortest,
+            weight_at,
+            floor_var: q * (device.noise.read_noise_dn.powi(2) + 1.0 / 12.0),
             black: device.sensor.black_level_dn,
             valid_min: device.sensor.valid_min_dn,
             valid_max: device.sensor.valid_max_dn,
             cg: device.response.cg,
-            conversion: device.noise.conversion_dn_per_e,
-            floor_var: device.noise.read_noise_dn.powi(2) + 1.0 / 12.0,
         }
     }
 
-    /// Luminance, flag and relative sigma of group `gx` of the row pair `rows` (per exposure).
-    #[inline]
-    fn group(
+    /// Merges group row `gy`: a first pass per exposure over the row's sample pairs (contiguous,
+    /// free of bounds checks, so it vectorises), then a pass per group.
+    fn row<F: Samples>(
         &self,
-        rows: &[[&[F::Sample]; 2]],
-        gx: usize,
-        inverse_vignetting: f64,
-    ) -> (f32, MapFlag, f32) {
-        // Up to 8 exposures per sequence: fixed-size scratch, no allocation per group.
-        let mut signal = [0.0f64; 16];
-        let mut valid = [false; 16];
-        let (mut sum_s, mut sum_tg) = (0.0, 0.0);
-        let (mut all_over, mut all_under) = (true, true);
-        let n = self.exposures.len().min(16);
-        for k in 0..n {
-            let (mut s, mut ok, mut over, mut under) = (0.0, true, false, false);
-            for ((dx, dy), w) in self.taps {
-                let x: f64 = rows[k][dy][2 * gx + dx].into();
-                over |= x > self.valid_max;
-                under |= x < self.valid_min;
-                ok &= x >= self.valid_min && x <= self.valid_max;
-                s += w * (x - self.black);
-            }
-            all_over &= over;
-            all_under &= under;
-            signal[k] = s;
-            valid[k] = ok;
-            if ok {
-                sum_s += s;
-                sum_tg += self.tg[k];
+        exposures: &[Exposure<F>],
+        gy: usize,
+        inverse_vignetting: &[f32],
+        scratch: &mut RowScratch,
+    ) -> (Vec<f32>, Vec<MapFlag>, Vec<f32>) {
+        let width = inverse_vignetting.len();
+        let n = exposures.len();
+        let [[w00, w10], [w01, w11]] = self.weight_at;
+        for (k, e) in exposures.iter().enumerate() {
+            let top = &e.frame.row(2 * gy)[..2 * width];
+            let bottom = &e.frame.row(2 * gy + 1)[..2 * width];
+            let range = k * width..(k + 1) * width;
+            let (signal, valid) = (
+                &mut scratch.signal[range.clone()],
+                &mut scratch.valid[range.clone()],
+            );
+            let (over, under) = (&mut scratch.over[range.clone()], &mut scratch.under[range]);
+            for (gx, (t, b)) in top.chunks_exact(2).zip(bottom.chunks_exact(2)).enumerate() {
+                let (a, bb, c, d): (f64, f64, f64, f64) =
+                    (t[0].into(), t[1].into(), b[0].into(), b[1].into());
+                let lo = a.min(bb).min(c.min(d));
+                let hi = a.max(bb).max(c.max(d));
+                signal[gx] = w00 * (a - self.black)
+                    + w10 * (bb - self.black)
+                    + w01 * (c - self.black)
+                    + w11 * (d - self.black);
+                over[gx] = hi > self.valid_max;
+                under[gx] = lo < self.valid_min;
+                valid[gx] = !(over[gx] || under[gx]);
             }
         }
-        if sum_tg == 0.0 || inverse_vignetting == 0.0 {
-            let flag = if all_over {
-                MapFlag::OverRange
-            } else if all_under {
-                MapFlag::UnderRange
-            } else {
-                // Mixed: the shortest exposure decides (too bright there means too bright).
-                let shortest = &rows[self.shortest];
-                let over = self.taps.iter().any(|((dx, dy), _)| {
-                    Into::<f64>::into(shortest[*dy][2 * gx + dx]) > self.valid_max
-                });
-                if over {
+        let mut luminance = Vec::with_capacity(width);
+        let mut flags = Vec::with_capacity(width);
+        let mut sigma = Vec::with_capacity(width);
+        for (gx, &inv_v) in inverse_vignetting.iter().enumerate() {
+            let (mut sum_s, mut sum_tg) = (0.0, 0.0);
+            let (mut all_over, mut all_under) = (true, true);
+            for k in 0..n {
+                let i = k * width + gx;
+                all_over &= scratch.over[i];
+                all_under &= scratch.under[i];
+                if scratch.valid[i] {
+                    sum_s += scratch.signal[i];
+                    sum_tg += self.tg[k];
+                }
+            }
+            if sum_tg == 0.0 || inv_v == 0.0 {
+                let flag = if all_over || (!all_under && scratch.over[self.shortest * width + gx]) {
+                    // Mixed: the shortest exposure decides (too bright there means too bright).
                     MapFlag::OverRange
                 } else {
                     MapFlag::UnderRange
-                }
-            };
-            return (f32::NAN, flag, f32::NAN);
-        }
-        // Pilot rate (signal per unit t g), then inverse-variance weights from the predicted
-        // signal of each exposure.
-        let pilot = (sum_s / sum_tg).max(0.0);
-        let (mut num, mut den) = (0.0, 0.0);
-        for k in 0..n {
-            if !valid[k] {
+                };
+                luminance.push(f32::NAN);
+                flags.push(flag);
+                sigma.push(f32::NAN);
                 continue;
             }
-            let gain = self.exposures[k].gain;
-            let predicted_sample = pilot * self.tg[k] / self.weight_sum;
-            let var_s = self.q * (self.conversion * gain * predicted_sample + self.floor_var);
-            let inv = self.tg[k] * self.tg[k] / var_s;
-            num += inv * signal[k] / self.tg[k];
-            den += inv;
+            // Pilot rate (signal per unit t g), then inverse-variance weights from the signal
+            // it predicts for each exposure.
+            let pilot = (sum_s / sum_tg).max(0.0);
+            let (mut num, mut den) = (0.0, 0.0);
+            for k in 0..n {
+                let i = k * width + gx;
+                if scratch.valid[i] {
+                    let var_s = pilot * self.shot_var_per_rate[k] + self.floor_var;
+                    let inv = self.tg[k] * self.tg[k] / var_s;
+                    num += inv * scratch.signal[i] * self.inv_tg[k];
+                    den += inv;
+                }
+            }
+            let rate = num / den;
+            luminance.push((self.cg * rate * inv_v as f64) as f32);
+            flags.push(MapFlag::Valid);
+            sigma.push(((1.0 / den).sqrt() / rate.abs()) as f32);
         }
-        let rate = num / den;
-        let luminance = self.cg * rate * inverse_vignetting;
-        let sigma = (1.0 / den).sqrt() / rate.abs();
-        (luminance as f32, MapFlag::Valid, sigma as f32)
+        (luminance, flags, sigma)
     }
 }
