@@ -49,7 +49,7 @@ pub fn structural_check(name: &str, verilog: &str) -> Result<(), ToolError> {
 pub fn synthesize(name: &str, verilog: &str) -> Result<Resources, ToolError> {
     let dir = write(name, verilog)?;
     let script = format!(
-        "read_verilog {name}.v; synth_intel_alm -family cyclonev -top top; tee -o stat.txt stat"
+        "read_verilog {name}.v; synth_intel_alm -family cyclonev -top top; check -assert; tee -o stat.txt stat"
     );
     run(Tool::Yosys, &dir, &["-q", "-p", &script])?;
     let stat = std::fs::read_to_string(dir.join("stat.txt"))
