@@ -10,3 +10,4 @@ pub mod io;
 pub mod scene;
 pub mod sky;
 pub mod sun;
+mod toml_diag;

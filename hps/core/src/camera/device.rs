@@ -166,7 +166,7 @@ impl DeviceConfig {
     pub fn parse(text: &str, path: &Path) -> Result<(Self, Vec<String>), DeviceError> {
         let parse_error = |e: toml::de::Error| DeviceError::Parse {
             path: path.into(),
-            message: describe(text, &e),
+            message: crate::toml_diag::describe(text, &e),
         };
         let table: toml::Table = toml::from_str(text).map_err(parse_error)?;
         let mut warnings = vec![];
@@ -304,17 +304,5 @@ impl DeviceConfig {
             );
         }
         Ok(())
-    }
-}
-
-/// A TOML error with its line number spelled out.
-fn describe(text: &str, e: &toml::de::Error) -> String {
-    let message = e.message().trim().to_string();
-    match e.span() {
-        Some(span) => {
-            let line = text[..span.start.min(text.len())].matches('\n').count() + 1;
-            format!("line {line}: {message}")
-        }
-        None => message,
     }
 }

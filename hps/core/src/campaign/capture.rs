@@ -135,19 +135,11 @@ impl CaptureConfig {
 
     /// Parses and validates `capture.toml` text; `path` names the source in messages.
     pub fn parse(text: &str, path: &Path) -> Result<Self, CaptureError> {
-        let config: Self = toml::from_str(text).map_err(|e: toml::de::Error| {
-            let line = e
-                .span()
-                .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1);
-            let message = match line {
-                Some(line) => format!("line {line}: {}", e.message().trim()),
-                None => e.message().trim().to_string(),
-            };
-            CaptureError::Parse {
+        let config: Self =
+            toml::from_str(text).map_err(|e: toml::de::Error| CaptureError::Parse {
                 path: path.into(),
-                message,
-            }
-        })?;
+                message: crate::toml_diag::describe(text, &e),
+            })?;
         let bad = |field: String, reason: String| {
             Err(CaptureError::Invalid {
                 path: path.into(),
