@@ -12,4 +12,7 @@ pub use device::{
     SensorConfig,
 };
 pub use fisheye::KannalaBrandt;
-pub use model::{alt_az_from_direction, direction_from_alt_az, CameraModel, ImagePoint};
+pub use model::{
+    alt_az_from_direction, direction_from_alt_az, orientation_from_rotation, CameraModel,
+    ImagePoint,
+};

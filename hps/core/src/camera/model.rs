@@ -40,20 +40,37 @@ pub fn alt_az_from_direction(d: DVec3) -> (f64, f64) {
     (alt, az)
 }
 
+/// The camera's x and y axes (world frame) at roll 0 for an optical axis: image "up" (−y) is
+/// world up projected onto the image plane, or north when the axis is vertical.
+fn roll_zero_basis(axis: DVec3) -> (DVec3, DVec3) {
+    let world_up = DVec3::Z;
+    let mut up = world_up - axis * axis.dot(world_up);
+    if up.length() < 1e-12 {
+        up = DVec3::Y * axis.z.signum() - axis * axis.dot(DVec3::Y);
+    }
+    let y0 = -up.normalize();
+    (y0.cross(axis), y0)
+}
+
+/// The orientation (axis azimuth and altitude, roll) of a world-to-camera rotation whose rows
+/// are the camera's x, y and z axes in world coordinates: the inverse of what
+/// [`CameraModel::new`] builds.
+pub fn orientation_from_rotation(world_to_camera: DMat3) -> crate::camera::OrientationConfig {
+    let (x, axis) = (world_to_camera.row(0), world_to_camera.row(2));
+    let (altitude, azimuth) = alt_az_from_direction(axis);
+    let (x0, y0) = roll_zero_basis(axis.normalize());
+    crate::camera::OrientationConfig {
+        axis_azimuth_deg: azimuth,
+        axis_altitude_deg: altitude,
+        roll_deg: x.dot(y0).atan2(x.dot(x0)).to_degrees(),
+    }
+}
+
 impl CameraModel {
     pub fn new(config: DeviceConfig) -> Self {
         let o = &config.orientation;
         let axis = direction_from_alt_az(o.axis_altitude_deg, o.axis_azimuth_deg);
-        // Image "up" with roll 0: world up projected onto the image plane; north when the
-        // axis is vertical (its projection vanishes).
-        let world_up = DVec3::Z;
-        let mut up = world_up - axis * axis.dot(world_up);
-        if up.length() < 1e-12 {
-            up = DVec3::Y * axis.z.signum() - axis * axis.dot(DVec3::Y);
-        }
-        let up = up.normalize();
-        let y0 = -up;
-        let x0 = y0.cross(axis);
+        let (x0, y0) = roll_zero_basis(axis);
         // Right-handed rotation of the camera about its axis by roll.
         let (s, c) = o.roll_deg.to_radians().sin_cos();
         let x = x0 * c + y0 * s;
@@ -101,8 +118,9 @@ impl CameraModel {
         })
     }
 
-    /// The world direction imaged at a point, or `None` outside the lens model's range.
-    pub fn unproject(&self, p: ImagePoint) -> Option<DVec3> {
+    /// The direction imaged at a point in the camera frame (independent of the orientation),
+    /// or `None` outside the lens model's range.
+    pub fn unproject_camera_frame(&self, p: ImagePoint) -> Option<DVec3> {
         let [cx, cy] = self.config.lens.center_px;
         let (dx, dy) = (p.x_px - cx, p.y_px - cy);
         let r = (dx * dx + dy * dy).sqrt();
@@ -113,8 +131,12 @@ impl CameraModel {
         } else {
             (1.0, 0.0)
         };
-        let camera = DVec3::new(sin_t * cos_phi, sin_t * sin_phi, cos_t);
-        Some(self.world_to_camera.transpose() * camera)
+        Some(DVec3::new(sin_t * cos_phi, sin_t * sin_phi, cos_t))
+    }
+
+    /// The world direction imaged at a point, or `None` outside the lens model's range.
+    pub fn unproject(&self, p: ImagePoint) -> Option<DVec3> {
+        Some(self.world_to_camera.transpose() * self.unproject_camera_frame(p)?)
     }
 
     /// Angle between a world direction and the optical axis, radians.

@@ -4,6 +4,7 @@
 mod delta_t;
 pub mod extract;
 mod michalsky;
+pub mod orientation;
 pub mod position;
 
 pub use delta_t::{delta_t_s, DELTA_T_YEARS};
@@ -11,6 +12,7 @@ pub use extract::{
     extract_sun, remove_sun, ExtractedSun, NoSun, SunFlag, SunSearch, SOLAR_DISK_SR,
 };
 pub use michalsky::solar_position_michalsky;
+pub use orientation::{fit_orientation, OrientationError, OrientationFit, SunObservation};
 pub use position::{
     angle_between_deg, parse_time_utc, refraction_deg, solar_position, solar_position_with_delta_t,
     sun_direction, Atmosphere, Site, SolarPosition, REFRACTION_CUTOFF_ELEVATION_DEG,
