@@ -16,6 +16,10 @@ pub struct HdrArgs {
     /// Where to write the OpenEXR luminance map.
     #[arg(long)]
     out: PathBuf,
+    /// Also write the map as a RADIANCE sky (sky.hdr, skylux_sky.cal, sky.rad) in this folder;
+    /// directions the lens did not see are filled from Reinhart MF4 sky patches.
+    #[arg(long)]
+    radiance_sky: Option<PathBuf>,
 }
 
 pub fn run(args: &HdrArgs) -> anyhow::Result<()> {
@@ -26,6 +30,18 @@ pub fn run(args: &HdrArgs) -> anyhow::Result<()> {
     let merged = map_capture(&args.capture_dir, &device)?;
     write_exr(&args.out, &merged.map, &device, &merged.capture.readout)
         .with_context(|| "writing the map")?;
+    if let Some(dir) = &args.radiance_sky {
+        let camera = skylux_hps::camera::CameraModel::new(device.clone());
+        let lookup = skylux_hps::hdr::SkyLookup::new(&camera, &merged, 4);
+        skylux_hps::hdr::write_radiance_sky(dir, 1024, &|d| lookup.luminance_cd_m2(d))
+            .with_context(|| format!("writing the RADIANCE sky to {}", dir.display()))?;
+        println!(
+            "{}: RADIANCE sky (sky.rad, sky.hdr, skylux_sky.cal); {} of {} MF4 patches filled",
+            dir.display(),
+            lookup.patch_sky.filled.len(),
+            lookup.patches.len()
+        );
+    }
     let map = &merged.map;
     let count = |f: MapFlag| map.flags.iter().filter(|x| **x == f).count();
     let valid: Vec<f32> = map

@@ -59,12 +59,25 @@ fn hdr_command_writes_a_map_and_reports_bad_input_clearly() {
     let d = dir.path().to_str().unwrap();
     let device_path = format!("{d}/device.toml");
     let out = format!("{d}/map.exr");
-    let (ok, text) = skylux(&["hdr", d, "--device", &device_path, "--out", &out]);
+    let sky = format!("{d}/radiance");
+    let (ok, text) = skylux(&[
+        "hdr",
+        d,
+        "--device",
+        &device_path,
+        "--out",
+        &out,
+        "--radiance-sky",
+        &sky,
+    ]);
     assert!(
-        ok && text.contains("64x48 groups from 3 exposures"),
+        ok && text.contains("64x48 groups from 3 exposures") && text.contains("patches filled"),
         "{text}"
     );
     assert!(std::path::Path::new(&out).exists());
+    for f in ["sky.hdr", "sky.rad", "skylux_sky.cal"] {
+        assert!(std::path::Path::new(&sky).join(f).exists(), "{f}");
+    }
     // A missing frame, a frame of the wrong size, a broken device.toml, a missing capture.
     std::fs::remove_file(dir.path().join("e1.pgm")).unwrap();
     let (ok, text) = skylux(&["hdr", d, "--device", &device_path, "--out", &out]);

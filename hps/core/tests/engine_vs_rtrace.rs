@@ -13,8 +13,9 @@
 
 use skylux_hps::engine::{self, Settings, World};
 use skylux_hps::scene;
+mod common;
+use common::radiance::{check_output, radiance, tool};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 
 const ROOM: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
@@ -38,64 +39,6 @@ const OUR_SAMPLES: u32 = if cfg!(target_arch = "arm") {
 const SKY_GLOWS: &str =
     "\nskyfunc glow sky_glow 0 0 4 1 1 1 0\nsky_glow source sky 0 0 4 0 0 1 180\n\
     skyfunc glow ground_glow 0 0 4 1 1 1 0\nground_glow source ground 0 0 4 0 0 -1 180\n";
-
-/// The folder holding rtrace, gensky and oconv, and the RAYPATH (its lib folder) if known.
-fn radiance() -> Option<(PathBuf, Option<PathBuf>)> {
-    let has = |dir: &Path| dir.join("rtrace").is_file() && dir.join("gensky").is_file();
-    if let Some(dir) = std::env::var_os("SKYLUX_RADIANCE_BIN").map(PathBuf::from) {
-        if has(&dir) {
-            let lib = dir.parent().map(|p| p.join("lib")).filter(|l| l.is_dir());
-            return Some((dir, lib));
-        }
-    }
-    let out = Command::new("python3")
-        .args([
-            "-c",
-            "import pyradiance, os; print(os.path.dirname(pyradiance.__file__))",
-        ])
-        .stderr(Stdio::null())
-        .output()
-        .ok()?;
-    if out.status.success() {
-        let root = PathBuf::from(String::from_utf8_lossy(&out.stdout).trim());
-        if has(&root.join("bin")) {
-            return Some((root.join("bin"), Some(root.join("lib"))));
-        }
-    }
-    std::env::var_os("PATH").and_then(|paths| {
-        std::env::split_paths(&paths)
-            .find(|d| has(d))
-            .map(|d| (d, None))
-    })
-}
-
-fn tool(bin: &Path, lib: &Option<PathBuf>, name: &str) -> Command {
-    let mut c = Command::new(bin.join(name));
-    if let Some(lib) = lib {
-        c.env("RAYPATH", lib);
-    }
-    c
-}
-
-fn check_output(mut c: Command, input: Option<&[u8]>) -> Vec<u8> {
-    use std::io::Write;
-    c.stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped());
-    let mut child = c.spawn().unwrap_or_else(|e| panic!("running {c:?}: {e}"));
-    let mut stdin = child.stdin.take().unwrap();
-    if let Some(input) = input {
-        stdin.write_all(input).unwrap();
-    }
-    drop(stdin);
-    let out = child.wait_with_output().unwrap();
-    assert!(
-        out.status.success(),
-        "{c:?} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    out.stdout
-}
 
 /// Mean and standard error of rtrace's illuminance per sensor over several seeds.
 fn rtrace_lux(bin: &Path, lib: &Option<PathBuf>, octree: &Path, points: &[u8]) -> Vec<(f64, f64)> {
