@@ -74,13 +74,14 @@ pub fn simulate_capture(
         raw_height: spec.raw_height,
         footprint: spec.footprint,
     };
+    let scene = renderer.scene(field);
     let frames: Vec<RawFrame> = spec
         .exposures_us
         .iter()
         .enumerate()
         .map(|(k, &t)| {
-            renderer.render(
-                field,
+            renderer.render_scene(
+                &scene,
                 t * 1e-6,
                 spec.gain,
                 Noise::Sensor {

@@ -138,7 +138,7 @@ fn hdr_slice(out_dir: &std::path::Path) -> anyhow::Result<()> {
     let map_path = out_dir.join("map.exr");
     write_exr(&map_path, &merged.map, &device, &merged.capture.readout)?;
     let map = &merged.map;
-    let (mut n, mut sum, mut sum2, mut sun_n, mut sun_sum) = (0usize, 0.0, 0.0, 0usize, 0.0);
+    let (mut n, mut sum, mut sum2) = (0usize, 0.0, 0.0);
     let (mut lo, mut hi) = (f64::MAX, 0.0f64);
     for i in 0..map.luminance_cd_m2.len() {
         if map.flags[i] != MapFlag::Valid || !merged.geometry.direction[i].is_finite() {
@@ -149,12 +149,9 @@ fn hdr_slice(out_dir: &std::path::Path) -> anyhow::Result<()> {
         let l = map.luminance_cd_m2[i] as f64;
         lo = lo.min(l);
         hi = hi.max(l);
-        // Groups straddling the disk's edge see a mix; score the sky and the disk core.
+        // Groups straddling the disk's edge see a mix: score the sky away from the sun.
         let from_sun_deg = d.angle_between(sky.sun_direction).to_degrees();
-        if from_sun_deg < 0.1 {
-            sun_n += 1;
-            sun_sum += l;
-        } else if from_sun_deg > 1.0 {
+        if from_sun_deg > 1.0 {
             let e = l / truth - 1.0;
             n += 1;
             sum += e;
@@ -174,13 +171,32 @@ fn hdr_slice(out_dir: &std::path::Path) -> anyhow::Result<()> {
         100.0 * sum / n as f64,
         100.0 * (sum2 / n as f64).sqrt()
     );
-    if sun_n > 0 {
-        println!(
-            "  solar disk core: {:.4e} cd/m2 measured over {sun_n} groups (truth {:.4e})",
-            sun_sum / sun_n as f64,
-            sky.sun_luminance_cd_m2
-        );
+
+    // The sun, extracted as the device does it (the prediction would come from SPA).
+    let search = skylux_hps::sun::SunSearch {
+        predicted_direction: Some(sky.sun_direction),
+        ..Default::default()
+    };
+    match skylux_hps::sun::extract_sun(map, &merged.geometry, &search) {
+        Ok(sun) => println!(
+            "  sun extracted: direction error {:.4} deg, disk luminance {:.4e} cd/m2 (truth {:.4e}), direct-normal illuminance {:.0} lux, flags {:?}",
+            sun.direction.angle_between(sky.sun_direction).to_degrees(),
+            sun.disk_luminance_cd_m2,
+            sky.sun_luminance_cd_m2,
+            sun.direct_normal_illuminance_lux,
+            sun.flags
+        ),
+        Err(e) => println!("  sun not extracted: {e}"),
     }
-    println!("  (next stages: sun extraction, the daylighting engine and the loop arrive with their issues)");
+    let radiance_dir = out_dir.join("radiance-sky");
+    let lookup = skylux_hps::hdr::SkyLookup::new(&camera, &merged, 4);
+    skylux_hps::hdr::write_radiance_sky(&radiance_dir, 1024, &|d| lookup.luminance_cd_m2(d))?;
+    println!(
+        "  RADIANCE sky written to {} (sky.rad + sky.hdr + skylux_sky.cal)",
+        radiance_dir.display()
+    );
+    println!(
+        "  (next stages: the daylighting engine on this sky and the loop arrive with their issues)"
+    );
     Ok(())
 }

@@ -69,49 +69,75 @@ pub struct FrameRenderer<'a> {
 impl FrameRenderer<'_> {
     /// Mean black-subtracted sample of each group (grey scene), before noise; 0 where the lens
     /// images nothing.
-    fn mean_signal_dn(
-        &self,
-        luminance_cd_m2: &(dyn Fn(DVec3) -> f64 + Sync),
-        exposure_s: f64,
-        gain: f64,
-    ) -> Vec<f64> {
+    /// The scene as the groups see it, independent of the exposure: per group, luminance ×
+    /// vignetting V(α) (cd/m²), 0 where the lens images nothing. With
+    /// [`Footprint::Integrated`], groups whose neighbours' centres differ from their own by
+    /// more than 1 % (an edge such as the solar limb) are averaged over their footprint.
+    pub fn scene(&self, luminance_cd_m2: &(dyn Fn(DVec3) -> f64 + Sync)) -> Vec<f64> {
         let (gw, gh) = (self.raw_width / 2, self.raw_height / 2);
-        let d = &self.camera.config;
-        let weight_sum: f64 = d.response.weights.iter().sum();
+        let centre = |i: usize| {
+            let (gx, gy) = (i % gw, i / gw);
+            let x = Readout::active_coordinate(
+                self.readout.col_start,
+                self.readout.skip,
+                2 * gx as u32,
+            ) as f64
+                + 1.0;
+            let y = Readout::active_coordinate(
+                self.readout.row_start,
+                self.readout.skip,
+                2 * gy as u32,
+            ) as f64
+                + 1.0;
+            (x, y)
+        };
+        // Centre luminance and vignetting of every group.
+        let at_centre: Vec<Option<(f64, f64)>> = (0..gw * gh)
+            .into_par_iter()
+            .map(|i| {
+                let (x, y) = centre(i);
+                let dir = self.camera.unproject(ImagePoint { x_px: x, y_px: y })?;
+                Some((
+                    luminance_cd_m2(dir),
+                    self.camera.vignetting(self.camera.off_axis_rad(dir)),
+                ))
+            })
+            .collect();
         (0..gw * gh)
             .into_par_iter()
             .map(|i| {
-                let (gx, gy) = (i % gw, i / gw);
-                let x = Readout::active_coordinate(
-                    self.readout.col_start,
-                    self.readout.skip,
-                    2 * gx as u32,
-                ) as f64
-                    + 1.0;
-                let y = Readout::active_coordinate(
-                    self.readout.row_start,
-                    self.readout.skip,
-                    2 * gy as u32,
-                ) as f64
-                    + 1.0;
-                match self.camera.unproject(ImagePoint { x_px: x, y_px: y }) {
-                    Some(dir) => {
-                        let v = self.camera.vignetting(self.camera.off_axis_rad(dir));
-                        let l = match self.footprint {
-                            Footprint::Centre => luminance_cd_m2(dir),
-                            Footprint::Integrated => {
-                                self.footprint_mean(luminance_cd_m2, x, y, luminance_cd_m2(dir))
-                            }
-                        };
-                        l * exposure_s * gain * v / (d.response.cg * weight_sum)
+                let Some((l, v)) = at_centre[i] else { return 0.0 };
+                if self.footprint == Footprint::Centre {
+                    return l * v;
+                }
+                let (gx, gy) = ((i % gw) as i64, (i / gw) as i64);
+                let edge = (-1..=1i64).flat_map(|dy| (-1..=1i64).map(move |dx| (dx, dy))).any(|(dx, dy)| {
+                    let (nx, ny) = (gx + dx, gy + dy);
+                    if nx < 0 || ny < 0 || nx >= gw as i64 || ny >= gh as i64 {
+                        return false;
                     }
-                    None => 0.0,
+                    matches!(at_centre[ny as usize * gw + nx as usize], Some((ln, _)) if (ln - l).abs() > 0.01 * l.abs().max(1e-300))
+                });
+                if edge {
+                    let (x, y) = centre(i);
+                    self.footprint_mean(luminance_cd_m2, x, y, l) * v
+                } else {
+                    l * v
                 }
             })
             .collect()
     }
 
-    /// Mean luminance over the footprint of the group centred at (x, y) (2 skip pixels wide).
+    /// Mean black-subtracted sample of each group (grey scene) for an exposure, before noise.
+    fn mean_signal_dn(&self, scene: &[f64], exposure_s: f64, gain: f64) -> Vec<f64> {
+        let d = &self.camera.config;
+        let weight_sum: f64 = d.response.weights.iter().sum();
+        let k = exposure_s * gain / (d.response.cg * weight_sum);
+        scene.iter().map(|lv| lv * k).collect()
+    }
+
+    /// Mean luminance over the footprint of the group centred at (x, y) (2 skip pixels wide),
+    /// on a 16 x 16 grid.
     fn footprint_mean(
         &self,
         field: &(dyn Fn(DVec3) -> f64 + Sync),
@@ -125,14 +151,6 @@ impl FrameRenderer<'_> {
                 .unproject(ImagePoint { x_px: px, y_px: py })
                 .map(field)
         };
-        let corners = [(-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)]
-            .map(|(sx, sy)| at(x + sx * half * 0.999, y + sy * half * 0.999));
-        let smooth = corners
-            .iter()
-            .all(|c| matches!(c, Some(v) if (v - centre).abs() <= 0.01 * centre.abs().max(1e-300)));
-        if smooth {
-            return centre;
-        }
         let n = 16;
         let (mut sum, mut count) = (0.0, 0usize);
         for j in 0..n {
@@ -159,7 +177,7 @@ impl FrameRenderer<'_> {
         exposure_s: f64,
         gain: f64,
     ) -> AnalogFrame {
-        let mean = self.mean_signal_dn(luminance_cd_m2, exposure_s, gain);
+        let mean = self.mean_signal_dn(&self.scene(luminance_cd_m2), exposure_s, gain);
         let black = self.camera.config.sensor.black_level_dn;
         let gw = self.raw_width / 2;
         let samples_dn = (0..self.raw_width * self.raw_height)
@@ -183,7 +201,19 @@ impl FrameRenderer<'_> {
         gain: f64,
         noise: Noise,
     ) -> RawFrame {
-        let mean = self.mean_signal_dn(luminance_cd_m2, exposure_s, gain);
+        self.render_scene(&self.scene(luminance_cd_m2), exposure_s, gain, noise)
+    }
+
+    /// A 12-bit raw frame of a scene computed once by [`Self::scene`] (an HDR set renders
+    /// the same scene at several exposures).
+    pub fn render_scene(
+        &self,
+        scene: &[f64],
+        exposure_s: f64,
+        gain: f64,
+        noise: Noise,
+    ) -> RawFrame {
+        let mean = self.mean_signal_dn(scene, exposure_s, gain);
         let d = &self.camera.config;
         let black = d.sensor.black_level_dn;
         let k = d.noise.conversion_dn_per_e * gain;
