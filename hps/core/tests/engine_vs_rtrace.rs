@@ -41,9 +41,25 @@ const SKY_GLOWS: &str =
     skyfunc glow ground_glow 0 0 4 1 1 1 0\nground_glow source ground 0 0 4 0 0 -1 180\n";
 
 /// Mean and standard error of rtrace's illuminance per sensor over several seeds.
+///
+/// rtrace `-u+` seeds its generator with the wall clock in whole seconds
+/// (`srandom((long)time(0))` in RADIANCE's rtmain.c), so runs started within the same second
+/// are the same run: each run here starts in a new second, and identical runs fail the test
+/// rather than pass with a spread of zero.
 fn rtrace_lux(bin: &Path, lib: &Option<PathBuf>, octree: &Path, points: &[u8]) -> Vec<(f64, f64)> {
+    let second = || {
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map(|d| d.as_secs())
+            .unwrap_or(0)
+    };
+    let mut last_start = 0;
     let runs: Vec<Vec<f64>> = (0..RTRACE_RUNS)
         .map(|_| {
+            while second() == last_start {
+                std::thread::sleep(std::time::Duration::from_millis(20));
+            }
+            last_start = second();
             let mut c = tool(bin, lib, "rtrace");
             c.args(RTRACE_ARGS).arg(octree);
             let text = String::from_utf8(check_output(c, Some(points))).unwrap();
@@ -56,6 +72,10 @@ fn rtrace_lux(bin: &Path, lib: &Option<PathBuf>, octree: &Path, points: &[u8]) -
                 .collect()
         })
         .collect();
+    assert!(
+        runs.windows(2).any(|w| w[0] != w[1]),
+        "every rtrace run gave the same result: the seeds did not differ"
+    );
     (0..runs[0].len())
         .map(|s| {
             let xs: Vec<f64> = runs.iter().map(|r| r[s]).collect();
