@@ -18,6 +18,8 @@ pub enum WriteCaptureError {
     Frame(#[from] RawFrameError),
     #[error("{0} frames for {1} exposure entries")]
     Count(usize, usize),
+    #[error(transparent)]
+    Device(#[from] skylux_hps::camera::DeviceError),
 }
 
 /// Writes `dir/capture.toml` and one PGM per exposure (the entries' `file` names).
@@ -109,4 +111,44 @@ pub fn simulate_capture(
     };
     write_capture(dir, &capture, &frames)?;
     Ok(capture)
+}
+
+/// A small example capture (a 128x96 window of a sky with the sun, three exposures) and its
+/// `device.toml` (the campaign spec's example camera) in `dir`: a quick, complete input for
+/// the tools' tests. Returns the camera configuration written.
+pub fn write_example_capture(
+    dir: &Path,
+    seed: u64,
+) -> Result<skylux_hps::camera::DeviceConfig, WriteCaptureError> {
+    use skylux_hps::camera::{CameraModel, DeviceConfig};
+    let device = DeviceConfig::default();
+    let sky = crate::sky::SimulatedSky {
+        zenith_luminance_cd_m2: 5000.0,
+        sun_direction: glam::DVec3::new(0.0, -0.9, 0.3).normalize(),
+        sun_luminance_cd_m2: 1.6e9,
+        sun_radius_deg: 0.2665,
+        ground_luminance_cd_m2: 1000.0,
+    };
+    let spec = CaptureSpec {
+        time: "2017-05-08T10:00:00+02:00".into(),
+        readout: skylux_hps::campaign::Readout {
+            col_start: 1200,
+            row_start: 900,
+            skip: 1,
+        },
+        raw_width: 128,
+        raw_height: 96,
+        exposures_us: vec![10.0, 1000.0, 100_000.0],
+        gain: 1.0,
+        seed,
+        footprint: crate::sensor::Footprint::Integrated,
+    };
+    simulate_capture(
+        dir,
+        &CameraModel::new(device.clone()),
+        &move |d| sky.luminance_cd_m2(d),
+        &spec,
+    )?;
+    device.write(&dir.join("device.toml"))?;
+    Ok(device)
 }

@@ -69,6 +69,26 @@ fn setup() -> Setup {
     }
 }
 
+/// The frames of the exposure ladder merged into a map (unity gain, GRBG).
+fn merged<F: Samples>(s: &Setup, frames: &[F]) -> LuminanceMap {
+    let exposures: Vec<Exposure<F>> = frames
+        .iter()
+        .zip(EXPOSURES_S)
+        .map(|(f, t)| Exposure {
+            frame: f,
+            exposure_s: t,
+            gain: 1.0,
+        })
+        .collect();
+    merge(
+        &exposures,
+        &s.camera.config,
+        BayerPattern::GRBG,
+        &s.geometry,
+    )
+    .unwrap()
+}
+
 fn truth(s: &Setup) -> Vec<f64> {
     s.geometry
         .direction
@@ -98,22 +118,7 @@ fn noiseless_merge_is_exact_over_150_db() {
         .iter()
         .map(|&t| r.render_analog(&*s.field, t, 1.0))
         .collect();
-    let exposures: Vec<Exposure<_>> = frames
-        .iter()
-        .zip(EXPOSURES_S)
-        .map(|(f, t)| Exposure {
-            frame: f,
-            exposure_s: t,
-            gain: 1.0,
-        })
-        .collect();
-    let map = merge(
-        &exposures,
-        &s.camera.config,
-        BayerPattern::GRBG,
-        &s.geometry,
-    )
-    .unwrap();
+    let map = merged(&s, &frames);
     let truth = truth(&s);
     let errors = relative_errors(&map, &truth);
     assert_eq!(
@@ -179,22 +184,7 @@ fn noisy_merge_is_unbiased_and_at_the_noise_bound() {
         })
         .collect();
     assert!(frames.iter().all(|f| f.width() == 512), "raw frames");
-    let exposures: Vec<Exposure> = frames
-        .iter()
-        .zip(EXPOSURES_S)
-        .map(|(f, t)| Exposure {
-            frame: f,
-            exposure_s: t,
-            gain: 1.0,
-        })
-        .collect();
-    let map = merge(
-        &exposures,
-        &s.camera.config,
-        BayerPattern::GRBG,
-        &s.geometry,
-    )
-    .unwrap();
+    let map = merged(&s, &frames);
     let truth = truth(&s);
     let errors = relative_errors(&map, &truth);
     assert!(

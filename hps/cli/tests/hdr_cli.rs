@@ -1,9 +1,5 @@
 //! `skylux hdr` on a simulated capture, and the errors a user will meet.
 
-use skylux_hps::camera::{CameraModel, DeviceConfig};
-use skylux_hps::campaign::Readout;
-use skylux_sim::capture::{simulate_capture, CaptureSpec};
-use skylux_sim::sky::SimulatedSky;
 use std::process::Command;
 
 fn skylux(args: &[&str]) -> (bool, String) {
@@ -25,36 +21,7 @@ fn skylux(args: &[&str]) -> (bool, String) {
 #[test]
 fn hdr_command_writes_a_map_and_reports_bad_input_clearly() {
     let dir = tempfile::tempdir().unwrap();
-    let device = DeviceConfig::default();
-    let sky = SimulatedSky {
-        zenith_luminance_cd_m2: 5000.0,
-        sun_direction: glam::DVec3::new(0.0, -0.9, 0.3).normalize(),
-        sun_luminance_cd_m2: 1.6e9,
-        sun_radius_deg: 0.2665,
-        ground_luminance_cd_m2: 1000.0,
-    };
-    let spec = CaptureSpec {
-        time: "2017-05-08T10:00:00+02:00".into(),
-        readout: Readout {
-            col_start: 1200,
-            row_start: 900,
-            skip: 1,
-        },
-        raw_width: 128,
-        raw_height: 96,
-        exposures_us: vec![10.0, 1000.0, 100_000.0],
-        gain: 1.0,
-        seed: 1,
-        footprint: skylux_sim::sensor::Footprint::Integrated,
-    };
-    simulate_capture(
-        dir.path(),
-        &CameraModel::new(device.clone()),
-        &move |d| sky.luminance_cd_m2(d),
-        &spec,
-    )
-    .unwrap();
-    device.write(&dir.path().join("device.toml")).unwrap();
+    skylux_sim::capture::write_example_capture(dir.path(), 1).unwrap();
 
     let d = dir.path().to_str().unwrap();
     let device_path = format!("{d}/device.toml");
