@@ -1,0 +1,5 @@
+//! Closing the loop with measured data: compare the model with reference instruments, find
+//! the residual, trace it to a missing effect, add it, and report before and after on
+//! held-out data.
+
+pub mod report;

@@ -1,0 +1,144 @@
+//! The loop report (`report.json`), as `shared/spec/campaign.md` defines it, plus the
+//! fields Skylux adds (the spec allows additions; readers ignore what they do not know).
+//!
+//! One type serves `skylux loop` (illuminance against lux-meters) and `skylux closure`
+//! (the pyranometer closure GHI - (DNI cos Z + DHI)), so every tool reads one schema.
+
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// An error figure over all sensors and per sensor (or per channel, for the closure).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct ErrorSummary {
+    pub all: f64,
+    pub per_sensor: BTreeMap<String, f64>,
+}
+
+/// One effect the loop added, with its fitted parameters and the evidence that named it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct EffectReport {
+    pub name: String,
+    pub parameters: BTreeMap<String, f64>,
+    /// One sentence: the residual signature that revealed the effect.
+    pub evidence: String,
+    /// How much the hold-out error fell when the effect was added (in the metric's units).
+    pub gain: f64,
+    /// Skylux addition: the fit-set error before and after adding the effect.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fit_error_before: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fit_error_after: Option<f64>,
+}
+
+/// `report.json`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Report {
+    /// What `before`, `after` and the baseline measure, e.g. `mean_abs_rel_error`, or
+    /// `rmse_wm2` for the closure.
+    pub metric: String,
+    pub fit_times: Vec<String>,
+    pub holdout_times: Vec<String>,
+    /// On the hold-out times only.
+    pub before: ErrorSummary,
+    /// On the hold-out times only.
+    pub after: ErrorSummary,
+    /// The Perez sky model from the pyranometer, on the hold-out times (absent for the
+    /// closure, and for campaigns without `pyranometer.csv`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub baseline_perez: Option<ErrorSummary>,
+    pub effects: Vec<EffectReport>,
+    /// Skylux addition: a second metric per set (RMSE in the error's units), by name.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub secondary: BTreeMap<String, ErrorSummary>,
+    /// Skylux addition: effects that were tried and rejected, and why.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub rejected: Vec<String>,
+    /// Skylux addition: free-form findings (e.g. "no effect improved the hold-out error").
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub notes: Vec<String>,
+    /// Skylux addition: plots written beside the report, relative to its folder.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub figures: Vec<String>,
+}
+
+/// Why a report could not be written or read.
+#[derive(Debug, thiserror::Error)]
+pub enum ReportError {
+    #[error("{path}: {source}")]
+    Io {
+        path: std::path::PathBuf,
+        source: std::io::Error,
+    },
+    #[error("{path}: not a report: {message}")]
+    Parse {
+        path: std::path::PathBuf,
+        message: String,
+    },
+}
+
+impl Report {
+    /// Writes `report.json` atomically (temporary file, then rename), so a reader never
+    /// sees half a report.
+    pub fn write_json(&self, path: &Path) -> Result<(), ReportError> {
+        let text = serde_json::to_string_pretty(self).map_err(|e| ReportError::Parse {
+            path: path.into(),
+            message: e.to_string(),
+        })?;
+        write_atomic(path, text.as_bytes())
+    }
+
+    pub fn read_json(path: &Path) -> Result<Self, ReportError> {
+        let text = std::fs::read_to_string(path).map_err(|source| ReportError::Io {
+            path: path.into(),
+            source,
+        })?;
+        serde_json::from_str(&text).map_err(|e| ReportError::Parse {
+            path: path.into(),
+            message: e.to_string(),
+        })
+    }
+}
+
+/// Writes `bytes` to `path` through a temporary file in the same folder and a rename.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), ReportError> {
+    let io = |source| ReportError::Io {
+        path: path.into(),
+        source,
+    };
+    let tmp = path.with_extension(format!(
+        "{}.tmp",
+        path.extension().and_then(|e| e.to_str()).unwrap_or("")
+    ));
+    std::fs::write(&tmp, bytes).map_err(io)?;
+    std::fs::rename(&tmp, path).map_err(io)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The spec's example parses, and a written report reads back equal.
+    #[test]
+    fn spec_example_parses_and_round_trips() {
+        let spec = r#"{
+          "metric": "mean_abs_rel_error",
+          "fit_times": ["..."],
+          "holdout_times": ["..."],
+          "before": {"all": 0.231, "per_sensor": {"S1": 0.25}},
+          "after":  {"all": 0.061, "per_sensor": {"S1": 0.07}},
+          "baseline_perez": {"all": 0.33, "per_sensor": {"S1": 0.37}},
+          "effects": [
+            {"name": "...", "parameters": {"...": 0.0}, "evidence": "one sentence", "gain": 0.12}
+          ]
+        }"#;
+        let r: Report = serde_json::from_str(spec).unwrap();
+        assert_eq!(r.before.per_sensor["S1"], 0.25);
+        assert_eq!(r.effects[0].gain, 0.12);
+        let dir = tempfile::tempdir().unwrap();
+        let p = dir.path().join("report.json");
+        r.write_json(&p).unwrap();
+        assert_eq!(Report::read_json(&p).unwrap(), r);
+        assert!(!dir.path().join("report.json.tmp").exists());
+    }
+}
