@@ -10,5 +10,5 @@ pub mod io;
 pub mod scene;
 pub mod sky;
 pub mod sun;
-pub mod validation;
 mod toml_diag;
+pub mod validation;
