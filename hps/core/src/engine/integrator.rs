@@ -15,7 +15,7 @@ use super::error::EngineError;
 use super::material::{basis, cosine_direction, glass_fractions, Material, Scatter};
 use super::ray::Ray;
 use super::rng::Rng;
-use super::sky::{source_seen, DistantEmitter, DistantKind};
+use super::sky::{DistantEmitter, DistantKind};
 use super::world::World;
 use glam::DVec3;
 use std::f64::consts::PI;
@@ -95,11 +95,52 @@ pub fn irradiance_sample(
     }
     // Indirect: cosine-weighted direction, so E = π L(ω) per sample.
     let d = cosine_direction(normal, rng);
-    e + PI * trace(world, Ray::new(position_m, d), None, 1, settings, rng)
+    e + PI
+        * trace(
+            world,
+            Ray::new(position_m, d),
+            None,
+            1,
+            settings,
+            rng,
+            &mut |t, dir| t * world.escape_radiance(dir),
+        )
+}
+
+/// One path from a sensor, as [`irradiance_sample`] traces it, with no distant `light` and
+/// each escape handed to `escape(weight, direction)` instead of being looked up: the weight
+/// is the escaping ray's contribution to the irradiance per unit radiance along it (π times
+/// the path throughput, per RGB channel). Daylight coefficients are built on this.
+pub fn escape_sample(
+    world: &World,
+    position_m: DVec3,
+    normal: DVec3,
+    settings: &Settings,
+    rng: &mut Rng,
+    escape: &mut dyn FnMut(DVec3, DVec3),
+) {
+    if settings.ambient_bounces == 0 {
+        return;
+    }
+    let d = cosine_direction(normal, rng);
+    trace(
+        world,
+        Ray::new(position_m, d),
+        None,
+        1,
+        settings,
+        rng,
+        &mut |t, dir| {
+            escape(PI * t, dir);
+            DVec3::ZERO
+        },
+    );
 }
 
 /// Radiance arriving back along `ray`, for a path that has already made `ambient_used`
 /// diffuse bounces.
+/// Radiance arriving back along `ray`; a ray that leaves the scene with path throughput `t`
+/// in direction `d` adds `escape(t, d)`.
 fn trace(
     world: &World,
     mut ray: Ray,
@@ -107,6 +148,7 @@ fn trace(
     mut ambient_used: u32,
     settings: &Settings,
     rng: &mut Rng,
+    escape: &mut dyn FnMut(DVec3, DVec3) -> DVec3,
 ) -> DVec3 {
     let mut throughput = DVec3::ONE;
     let mut radiance = DVec3::ZERO;
@@ -115,12 +157,7 @@ fn trace(
     let mut crossings = 0u32;
     loop {
         let Some(hit) = world.intersect(&ray, from) else {
-            if let Some(s) = source_seen(world.distant_sources(), ray.direction) {
-                if s.kind == DistantKind::Glow {
-                    radiance += throughput * s.radiance(ray.direction);
-                }
-            }
-            return radiance;
+            return radiance + escape(throughput, ray.direction);
         };
         let p = ray.at(hit.t_m);
         from = Some(hit.primitive);

@@ -18,6 +18,7 @@
 //! ```
 
 pub mod bvh;
+pub mod daylight_coefficients;
 mod error;
 pub mod illuminance;
 pub mod integrator;
@@ -29,9 +30,10 @@ pub mod sky;
 pub mod slab;
 pub mod world;
 
+pub use daylight_coefficients::{daylight_coefficients, sun_coefficients, DaylightCoefficients};
 pub use error::EngineError;
 pub use illuminance::{
     illuminance, lux_from_irradiance, SensorIlluminance, WHITE_EFFICACY_LM_PER_W,
 };
 pub use integrator::Settings;
-pub use world::World;
+pub use world::{Environment, World};

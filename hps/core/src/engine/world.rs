@@ -5,7 +5,7 @@ use super::error::EngineError;
 use super::material::{glass_fractions, Emitter, Material, NormalMaterial};
 use super::ray::Ray;
 use super::shapes::{PreparedCone, PreparedPolygon, Primitive, ShapeHit};
-use super::sky::{DistantEmitter, DistantKind, SkyFunction};
+use super::sky::{source_seen, DistantEmitter, DistantKind, SkyFunction};
 use super::slab::{BoxTest, SlabTest};
 use crate::scene::{Modifier, ModifierKind, ModifierRef, Scene, Shape, Surface};
 use glam::DVec3;
@@ -34,7 +34,11 @@ pub struct World {
     bvh: Bvh,
     box_test: Box<dyn BoxTest + Send>,
     distant: Vec<DistantEmitter>,
+    environment: Option<Environment>,
 }
+
+/// Radiance per direction of everything beyond the scene that no distant source covers.
+pub type Environment = std::sync::Arc<dyn Fn(DVec3) -> DVec3 + Send + Sync>;
 
 impl std::fmt::Debug for World {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -131,11 +135,44 @@ impl World {
             materials,
             box_test,
             distant,
+            environment: None,
         })
     }
 
     pub fn distant_sources(&self) -> &[DistantEmitter] {
         &self.distant
+    }
+
+    /// Adds a distant source (e.g. the sun extracted from a sky map, as a `light`).
+    pub fn add_distant(&mut self, source: DistantEmitter) {
+        self.distant.push(source);
+    }
+
+    /// Removes every distant source.
+    pub fn clear_distant(&mut self) {
+        self.distant.clear();
+    }
+
+    pub fn has_environment(&self) -> bool {
+        self.environment.is_some()
+    }
+
+    /// Sets the radiance (W/sr/m² per RGB channel, RADIANCE units) of every direction that no
+    /// distant source covers: a measured sky map, for instance. Distant sources take
+    /// precedence, as a scene's `source`s are found first.
+    pub fn set_environment(&mut self, environment: Option<Environment>) {
+        self.environment = environment;
+    }
+
+    /// What a ray leaving the scene along unit `d` sees: a `glow` source containing it (a
+    /// `light` is counted by next-event estimation only, RADIANCE source.c `badcomponent`),
+    /// else the environment, else nothing.
+    pub fn escape_radiance(&self, d: DVec3) -> DVec3 {
+        match source_seen(&self.distant, d) {
+            Some(s) if s.kind == DistantKind::Glow => s.radiance(d),
+            Some(_) => DVec3::ZERO,
+            None => self.environment.as_ref().map_or(DVec3::ZERO, |env| env(d)),
+        }
     }
 
     pub fn primitive_count(&self) -> usize {
