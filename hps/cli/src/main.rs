@@ -1,6 +1,7 @@
 //! `skylux`: the command-line tool of the Skylux device.
 
 mod bench;
+mod closure;
 mod demo;
 mod hdr;
 mod illuminance;
@@ -30,6 +31,8 @@ enum Command {
         #[arg(long, default_value = "skylux-demo")]
         out: std::path::PathBuf,
     },
+    /// The pyranometer closure GHI = DNI cos Z + DHI: residual, instrument effects, report.
+    Closure(closure::ClosureArgs),
     /// Measures speed next to a reference (`skylux bench hdr --json`).
     Bench(bench::BenchArgs),
     /// Merges a capture folder into a calibrated luminance map (OpenEXR).
@@ -48,6 +51,7 @@ fn main() -> anyhow::Result<()> {
         Command::Hdr(args) => hdr::run(&args),
         Command::Illuminance(args) => illuminance::run(&args),
         Command::Bench(args) => bench::run(&args),
+        Command::Closure(args) => closure::run(&args),
         Command::Regs(args) => regs::run(&args),
         Command::Solpos(args) => solpos::run(&args),
     }

@@ -2,4 +2,8 @@
 //! the residual, trace it to a missing effect, add it, and report before and after on
 //! held-out data.
 
+pub mod closure;
+pub mod plot;
+pub mod pyranometer_effects;
 pub mod report;
+pub mod split;
