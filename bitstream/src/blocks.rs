@@ -22,7 +22,27 @@ pub const BLOCKS: &[ExportedBlock] = &[
         verilog: fresh::<skylux_rtl::RegisterFile>,
     },
     ExportedBlock {
+        name: "sensor_control",
+        verilog: fresh::<skylux_rtl::sequencer::SensorControl>,
+    },
+    ExportedBlock {
+        name: "i2c_master",
+        verilog: fresh::<skylux_rtl::i2c::I2cMaster>,
+    },
+    ExportedBlock {
+        name: "exposure_sequencer",
+        verilog: fresh::<skylux_rtl::sequencer::ExposureSequencer>,
+    },
+    ExportedBlock {
         name: "bayer_grouper",
         verilog: fresh::<skylux_rtl::bayer::BayerGrouper>,
+    },
+    ExportedBlock {
+        name: "capture_path",
+        verilog: fresh::<skylux_rtl::capture::CapturePath>,
+    },
+    ExportedBlock {
+        name: "raybox_unit",
+        verilog: fresh::<skylux_rtl::raybox::RayBoxUnit<{ skylux_rtl::raybox::DEFAULT_LANES }>>,
     },
 ];

@@ -18,7 +18,9 @@
 
 extern crate alloc;
 
+pub mod descriptor;
 mod map;
+pub mod raybox_format;
 pub mod render;
 mod validate;
 pub mod words;

@@ -145,10 +145,16 @@ register_block! {
             NACK [2 +: 1] W1C = 0;
             /// The transaction did not finish within `timeout` (SCL held low).
             TIMEOUT [3 +: 1] W1C = 0;
+            /// SDA was low when the master released it (at START, or on a 1 bit it sent): a
+            /// device holds the bus. The transaction was abandoned.
+            BUS_STUCK [4 +: 1] W1C = 0;
+            /// START was written while the exposure sequencer owned the master: nothing sent.
+            REFUSED [5 +: 1] W1C = 0;
         }
         /// SCL timing.
         clock_div @ 0x018 {
-            /// System clocks per half SCL period (500: 100 kHz at 100 MHz).
+            /// System clocks per half SCL period (500: 100 kHz at 100 MHz). The master works
+            /// in quarter periods of `HALF_PERIOD / 2` clocks (at least 1).
             HALF_PERIOD [0 +: 16] RW = 500;
         }
         /// Transaction watchdog.
@@ -188,6 +194,13 @@ register_block! {
             DONE [16 +: 1] W1C = 0;
             /// The hardware closed the shield at `shield_limit` before the sequence ended.
             SHIELD_LIMIT_HIT [17 +: 1] W1C = 0;
+            /// A sensor register write failed (NACK, timeout or stuck bus: see `i2c.status`);
+            /// the sequence was abandoned and the shield closed.
+            I2C_ERROR [18 +: 1] W1C = 0;
+            /// START with `count.EXPOSURES` 0 or above 8, or while busy: nothing was done.
+            REFUSED [19 +: 1] W1C = 0;
+            /// The sequence was ended by `ctrl.ABORT`.
+            ABORTED [20 +: 1] W1C = 0;
         }
         /// Longest time the shield may stay open per sequence. The hardware clamps the value
         /// to its reset value (0.55 s at 100 MHz): software may lower it, never raise it.
@@ -209,6 +222,12 @@ register_block! {
         frame_number @ 0x018 {
             /// Count.
             VALUE [0 +: 32] RO = 0;
+        }
+        /// Width of the pulse on the sensor's TRIGGER pin (snapshot mode, hardware-facts.md
+        /// §1.6).
+        trigger_pulse @ 0x01C {
+            /// System clocks (0 acts as 1).
+            CYCLES [0 +: 16] RW = 100;
         }
         /// Shutter width per exposure (sensor R0x08/R0x09).
         exp_shutter_width[8] @ 0x040 {
@@ -269,9 +288,9 @@ register_block! {
             /// Lines.
             LINES [16 +: 12] RO = 0;
         }
-        /// Deepest fill of the clock-domain FIFO since the last read.
+        /// Deepest fill of the clock-domain FIFO during the last frame (as its read side saw it).
         fifo_high_water @ 0x010 {
-            /// Words.
+            /// FIFO entries (32-bit words and frame markers).
             WORDS [0 +: 16] RO = 0;
         }
         /// Frames received since power-up.
@@ -431,6 +450,19 @@ register_block! {
         tests_done @ 0x01C {
             /// Count.
             COUNT [0 +: 32] RO = 0;
+        }
+        /// What the unit is: the work-item format (`skylux_regmap::raybox_format`) and its
+        /// parallelism.
+        info @ 0x020 {
+            /// Work-item and result format version.
+            FORMAT [0 +: 8] Const = crate::raybox_format::FORMAT_VERSION;
+            /// Slab-test lanes (tests per clock the datapath can take).
+            LANES [8 +: 8] RO = 0;
+        }
+        /// Longest tolerated bus stall: waitrequest held, or read data awaited.
+        bus_timeout @ 0x024 {
+            /// System clocks (0 disables the watchdog).
+            CYCLES [0 +: 24] RW = 1_000_000;
         }
     }
 }

@@ -5,7 +5,12 @@
 
 pub mod avalon;
 pub mod bayer;
+pub mod capture;
+pub mod dma;
 pub mod drive;
+pub mod i2c;
+pub mod raybox;
 pub mod regfile;
+pub mod sequencer;
 
 pub use regfile::RegisterFile;

@@ -7,6 +7,11 @@
 pub mod analysis;
 pub mod bus;
 pub mod capture;
+pub mod capture_path;
+pub mod f2sdram;
+pub mod mt9p031;
+pub mod pixel_bus;
+pub mod raybox;
 pub mod sensor;
 pub mod sky;
 

@@ -16,6 +16,13 @@ pub struct BenchArgs {
 
 #[derive(clap::Subcommand)]
 enum BenchWhat {
+    /// One frame through the capture path: pixel bus, rust-hdl capture + Bayer grouper +
+    /// clock-domain FIFO + frame DMA, the f2sdram model with random waitrequest, and the HPS
+    /// frame reader; checked against the Bayer golden model.
+    Capture(crate::bench_capture::CaptureBenchArgs),
+    /// The ray-box unit: tests per cycle in cycle-accurate simulation with memory stalls,
+    /// Cyclone V resources, projected tests/s next to the software slab test, false misses.
+    Raybox(crate::bench_raybox::RayboxBenchArgs),
     /// HDR synthesis of five full 2592x1944 frames (1 µs to 500 ms, 150 dB), on one core and
     /// on all cores, next to a naive baseline, with the accuracy against the simulated truth.
     Hdr {
@@ -31,6 +38,8 @@ enum BenchWhat {
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     match &args.what {
         BenchWhat::Hdr { json, repeat } => bench_hdr(*json, (*repeat).max(1)),
+        BenchWhat::Capture(args) => crate::bench_capture::run(args),
+        BenchWhat::Raybox(args) => crate::bench_raybox::run(args),
     }
 }
 

@@ -1,6 +1,8 @@
 //! `skylux`: the command-line tool of the Skylux device.
 
 mod bench;
+mod bench_capture;
+mod bench_raybox;
 mod closure;
 mod demo;
 mod hdr;

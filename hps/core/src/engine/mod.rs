@@ -17,6 +17,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod accel;
 pub mod bvh;
 pub mod daylight_coefficients;
 mod error;

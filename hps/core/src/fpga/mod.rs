@@ -2,6 +2,10 @@
 
 mod bringup;
 mod exposure;
+pub mod frames;
+pub mod raybox;
+pub mod sensor;
+pub mod sequence;
 
 pub use bringup::{BringUpError, Fabric, FabricInfo};
 pub use exposure::{ExposureError, ExposureSlot, MAX_EXPOSURES};

@@ -1,0 +1,119 @@
+//! Pixel values of the model's frames: the scene through the one camera model and sensor
+//! noise model (`crate::sensor::FrameRenderer`), then the sensor's mirroring.
+
+use super::frame::FrameSettings;
+use crate::sensor::{Footprint, FrameRenderer, Noise};
+use glam::DVec3;
+use skylux_hps::camera::CameraModel;
+use skylux_hps::campaign::{RawFrame, Readout};
+
+/// Where a frame's samples come from.
+pub trait PixelSource {
+    /// The samples of one frame in read-out order (mirroring applied), `frame_index` counting
+    /// the frames the sensor has produced.
+    fn frame(&mut self, settings: &FrameSettings, pixclk_hz: f64, frame_index: u64) -> RawFrame;
+}
+
+/// A frame flipped as the sensor reads it with Mirror_Row / Mirror_Column: the Bayer phase
+/// follows (GRBG unmirrored; RGGB, BGGR, GBRG mirrored by column, row, both:
+/// hardware-facts.md §1.1, S6), because the window has even width and height.
+pub fn mirror(frame: &RawFrame, mirror_row: bool, mirror_column: bool) -> RawFrame {
+    let (w, h) = (frame.width, frame.height);
+    let samples_dn = (0..w * h)
+        .map(|i| {
+            let (x, y) = (i % w, i / w);
+            let sx = if mirror_column { w - 1 - x } else { x };
+            let sy = if mirror_row { h - 1 - y } else { y };
+            frame.samples_dn[sy * w + sx]
+        })
+        .collect();
+    RawFrame {
+        width: w,
+        height: h,
+        samples_dn,
+    }
+}
+
+/// A luminance field imaged through a camera, with the sensor's noise.
+pub struct SceneSource {
+    pub camera: CameraModel,
+    pub luminance_cd_m2: Box<dyn Fn(DVec3) -> f64 + Sync + Send>,
+    /// Noise seed; each frame uses `seed + frame_index`. `None`: no noise.
+    pub noise_seed: Option<u64>,
+}
+
+impl PixelSource for SceneSource {
+    fn frame(&mut self, settings: &FrameSettings, pixclk_hz: f64, frame_index: u64) -> RawFrame {
+        let g = &settings.geometry;
+        let renderer = FrameRenderer {
+            camera: &self.camera,
+            readout: Readout {
+                col_start: g.col_start,
+                row_start: g.row_start,
+                skip: g.col_skip,
+            },
+            raw_width: g.width as usize,
+            raw_height: g.height as usize,
+            footprint: Footprint::Centre,
+        };
+        let noise = match self.noise_seed {
+            Some(seed) => Noise::Sensor {
+                seed: seed.wrapping_add(frame_index),
+            },
+            None => Noise::None,
+        };
+        let exposure_s = settings.exposure_pixclk as f64 / pixclk_hz;
+        let raw = renderer.render(&*self.luminance_cd_m2, exposure_s, settings.gain, noise);
+        mirror(&raw, settings.mirror_row, settings.mirror_column)
+    }
+}
+
+/// A fixed test pattern (`x + 16 y` modulo 4096, per frame offset by the frame index): for
+/// tests of the pixel path that need known values, not a scene.
+pub struct RampSource;
+
+impl PixelSource for RampSource {
+    fn frame(&mut self, settings: &FrameSettings, _pixclk_hz: f64, frame_index: u64) -> RawFrame {
+        let (w, h) = (
+            settings.geometry.width as usize,
+            settings.geometry.height as usize,
+        );
+        let raw = RawFrame {
+            width: w,
+            height: h,
+            samples_dn: (0..w * h)
+                .map(|i| ((i % w + 16 * (i / w) + frame_index as usize) % 4096) as u16)
+                .collect(),
+        };
+        mirror(&raw, settings.mirror_row, settings.mirror_column)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The Bayer phase after mirroring, from a 2x2 GRBG tile (hardware-facts.md §1.1).
+    #[test]
+    fn mirroring_moves_the_bayer_phase_as_the_sensor_does() {
+        // 1 = Gr, 2 = R, 3 = B, 4 = Gb.
+        let tile = RawFrame {
+            width: 2,
+            height: 2,
+            samples_dn: vec![1, 2, 3, 4],
+        };
+        let cases = [
+            (false, false, [1, 2, 3, 4]), // GRBG
+            (false, true, [2, 1, 4, 3]),  // RGGB
+            (true, false, [3, 4, 1, 2]),  // BGGR
+            (true, true, [4, 3, 2, 1]),   // GBRG
+        ];
+        for (row, col, want) in cases {
+            assert_eq!(
+                mirror(&tile, row, col).samples_dn,
+                want,
+                "row {row} col {col}"
+            );
+        }
+    }
+}
