@@ -65,3 +65,50 @@ pub fn check_output(mut c: Command, input: Option<&[u8]>) -> Vec<u8> {
     );
     out.stdout
 }
+
+/// Luminance (cd/m², RADIANCE's 179 lm/W and its RGB weights) that `rtrace -ab 0` sees from
+/// the origin along each of `directions` in the scene `text` (written, with its octree, into
+/// `dir` under `name`). Rays go in through a file: piped while rtrace answers they would
+/// fill both pipes; and as short numbers, since rtrace splits words longer than its buffer.
+pub fn rtrace_luminance(
+    bin: &Path,
+    lib: &Option<PathBuf>,
+    dir: &Path,
+    name: &str,
+    text: &str,
+    directions: &[glam::DVec3],
+) -> Vec<f64> {
+    let rad = dir.join(format!("{name}.rad"));
+    std::fs::write(&rad, text).unwrap();
+    let mut oconv = tool(bin, lib, "oconv");
+    oconv.current_dir(dir).arg(&rad);
+    let oct = dir.join(format!("{name}.oct"));
+    std::fs::write(&oct, check_output(oconv, None)).unwrap();
+    let rays = dir.join(format!("{name}.rays"));
+    let input: String = directions
+        .iter()
+        .map(|d| format!("0 0 0 {:.12e} {:.12e} {:.12e}\n", d.x, d.y, d.z))
+        .collect();
+    std::fs::write(&rays, input).unwrap();
+    let mut rtrace = tool(bin, lib, "rtrace");
+    rtrace
+        .current_dir(dir)
+        .args(["-h", "-w", "-ov", "-ab", "0"])
+        .arg(&oct)
+        .stdin(std::fs::File::open(&rays).unwrap());
+    let run = rtrace.output().unwrap();
+    assert!(
+        run.status.success(),
+        "rtrace: {}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let lum: Vec<f64> = String::from_utf8_lossy(&run.stdout)
+        .lines()
+        .map(|l| {
+            let v: Vec<f64> = l.split_whitespace().map(|t| t.parse().unwrap()).collect();
+            179.0 * (0.265 * v[0] + 0.670 * v[1] + 0.065 * v[2])
+        })
+        .collect();
+    assert_eq!(lum.len(), directions.len(), "rtrace answered every ray");
+    lum
+}
