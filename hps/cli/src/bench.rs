@@ -16,6 +16,13 @@ pub struct BenchArgs {
 
 #[derive(clap::Subcommand)]
 enum BenchWhat {
+    /// One daylight-coefficient update for 400 sensors (Reinhart MF4), one core and all.
+    Dc {
+        #[arg(long)]
+        json: bool,
+        #[arg(long, default_value_t = 51)]
+        repeat: usize,
+    },
     /// HDR synthesis of five full 2592x1944 frames (1 µs to 500 ms, 150 dB), on one core and
     /// on all cores, next to a naive baseline, with the accuracy against the simulated truth.
     Hdr {
@@ -31,6 +38,7 @@ enum BenchWhat {
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     match &args.what {
         BenchWhat::Hdr { json, repeat } => bench_hdr(*json, (*repeat).max(1)),
+        BenchWhat::Dc { json, repeat } => crate::dc::bench(*json, (*repeat).max(1)),
     }
 }
 

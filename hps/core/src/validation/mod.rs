@@ -2,4 +2,9 @@
 //! the residual, trace it to a missing effect, add it, and report before and after on
 //! held-out data.
 
+pub mod device_model;
+pub mod effects;
+pub mod illuminance_loop;
+
 pub mod report;
+pub mod split;
