@@ -63,8 +63,8 @@ pub fn run_with_progress(
 /// Writes report.json, report.md and illuminance.csv into `out`.
 pub fn write_outcome(out: &Path, campaign: &Campaign, outcome: &LoopOutcome) -> anyhow::Result<()> {
     std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
-    let report = outcome.report.clone();
-    // FIGURES
+    let mut report = outcome.report.clone();
+    report.figures = skylux_hps::validation::loop_figures::write_loop_figures(out, outcome)?;
     report.write_json(&out.join("report.json"))?;
     let md = report.markdown(&format!("Skylux loop: {}", campaign.config.name));
     write_atomic(&out.join("report.md"), md.as_bytes())?;

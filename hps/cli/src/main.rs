@@ -1,6 +1,7 @@
 //! `skylux`: the command-line tool of the Skylux device.
 
 mod bench;
+mod closure;
 mod dc;
 mod demo;
 mod hdr;
@@ -33,6 +34,8 @@ enum Command {
         #[arg(long, default_value = "skylux-demo")]
         out: std::path::PathBuf,
     },
+    /// The pyranometer closure GHI = DNI cos Z + DHI: residual, instrument effects, report.
+    Closure(closure::ClosureArgs),
     /// Measures speed next to a reference (`skylux bench hdr --json`).
     Bench(bench::BenchArgs),
     /// Computes a room's daylight-coefficient matrix (illuminance per unit sky patch).
@@ -59,6 +62,7 @@ fn main() -> anyhow::Result<()> {
         Command::Hdr(args) => hdr::run(&args),
         Command::Illuminance(args) => illuminance::run(&args),
         Command::Bench(args) => bench::run(&args),
+        Command::Closure(args) => closure::run(&args),
         Command::Loop(args) => loop_cmd::run(&args),
         Command::Sim(args) => sim_cmd::run(&args),
         Command::Regs(args) => regs::run(&args),

@@ -2,9 +2,12 @@
 //! the residual, trace it to a missing effect, add it, and report before and after on
 //! held-out data.
 
+pub mod closure;
 pub mod device_model;
 pub mod effects;
 pub mod illuminance_loop;
-
+pub mod loop_figures;
+pub mod plot;
+pub mod pyranometer_effects;
 pub mod report;
 pub mod split;
