@@ -53,9 +53,12 @@ pub fn parse_luxmeters(
         .enumerate()
         .map(|(i, l)| (i + 1, l.trim()))
         .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
-    let (hl, header) = lines
-        .next()
-        .ok_or_else(|| err(1, "empty file: expected the header `time,sensor,lux`".into()))?;
+    let (hl, header) = lines.next().ok_or_else(|| {
+        err(
+            1,
+            "empty file: expected the header `time,sensor,lux`".into(),
+        )
+    })?;
     let names: Vec<&str> = header.split(',').map(str::trim).collect();
     let col = |n: &str| {
         names
@@ -92,7 +95,10 @@ pub fn parse_luxmeters(
             .parse()
             .map_err(|_| err(line, format!("lux `{}` is not a number", fields[lc])))?;
         if !lux.is_finite() || lux < 0.0 {
-            return Err(err(line, format!("lux {lux} must be finite and not negative")));
+            return Err(err(
+                line,
+                format!("lux {lux} must be finite and not negative"),
+            ));
         }
         readings.push(LuxmeterReading {
             time,

@@ -6,11 +6,11 @@ mod capture;
 mod luxmeters;
 mod raw_frame;
 
-pub use capture::{BayerPattern, CaptureConfig, CaptureError, Channel, ExposureEntry, Readout};
-pub use raw_frame::{RawFrame, RawFrameError, MAX_SAMPLE_DN};
 pub use campaign_file::{
     Campaign, CampaignConfig, CampaignError, CampaignFiles, CaptureEntry, Site,
 };
+pub use capture::{BayerPattern, CaptureConfig, CaptureError, Channel, ExposureEntry, Readout};
 pub use luxmeters::{
     parse_luxmeters, read_luxmeters, write_luxmeters, LuxmeterError, LuxmeterReading,
 };
+pub use raw_frame::{RawFrame, RawFrameError, MAX_SAMPLE_DN};

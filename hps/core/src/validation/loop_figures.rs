@@ -6,8 +6,11 @@ use super::illuminance_loop::{Diagnostic, LoopOutcome};
 use super::plot::{grouped_bars_png, scatter_png, BarGroup, Frame, PlotError, Series};
 use std::path::Path;
 
+/// How a plotted variable is read from a diagnostic.
+type Reading = fn(&Diagnostic) -> f64;
+
 /// Which variable reveals an effect, and how to read it from a diagnostic.
-fn revealing_variable(effect: &str) -> Option<(&'static str, fn(&Diagnostic) -> f64)> {
+fn revealing_variable(effect: &str) -> Option<(&'static str, Reading)> {
     Some(match effect {
         "sun_undersampling" => ("share of direct sun in the model's light", |d| {
             d.direct_sun_share
