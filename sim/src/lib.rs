@@ -6,6 +6,7 @@
 
 pub mod analysis;
 pub mod bus;
+pub mod campaign;
 pub mod capture;
 pub mod capture_path;
 pub mod f2sdram;

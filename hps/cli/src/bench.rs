@@ -23,6 +23,13 @@ enum BenchWhat {
     /// The ray-box unit: tests per cycle in cycle-accurate simulation with memory stalls,
     /// Cyclone V resources, projected tests/s next to the software slab test, false misses.
     Raybox(crate::bench_raybox::RayboxBenchArgs),
+    /// One daylight-coefficient update for 400 sensors (Reinhart MF4), one core and all.
+    Dc {
+        #[arg(long)]
+        json: bool,
+        #[arg(long, default_value_t = 51)]
+        repeat: usize,
+    },
     /// HDR synthesis of five full 2592x1944 frames (1 µs to 500 ms, 150 dB), on one core and
     /// on all cores, next to a naive baseline, with the accuracy against the simulated truth.
     Hdr {
@@ -40,6 +47,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         BenchWhat::Hdr { json, repeat } => bench_hdr(*json, (*repeat).max(1)),
         BenchWhat::Capture(args) => crate::bench_capture::run(args),
         BenchWhat::Raybox(args) => crate::bench_raybox::run(args),
+        BenchWhat::Dc { json, repeat } => crate::dc::bench(*json, (*repeat).max(1)),
     }
 }
 

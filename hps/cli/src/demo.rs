@@ -1,10 +1,9 @@
 //! `skylux demo`: the main job on a built-in default.
 //!
-//! The full job (simulate a campaign, run the loop, report) lands with the capture, HDR,
-//! engine and loop issues. Until then this runs the deepest slice that works end to end: the
-//! HPS drivers bring up the cycle-accurate fabric model through the Avalon-MM bus model,
-//! program an HDR exposure table and read everything back, exactly as they would on the
-//! DE1-SoC through /dev/mem.
+//! First the HPS drivers bring up the cycle-accurate fabric model through the Avalon-MM bus
+//! model, program an HDR exposure table and read everything back, exactly as they would on
+//! the DE1-SoC through /dev/mem. Then the main job: a simulated campaign with an undeclared
+//! effect, and the loop that finds it (`skylux sim campaign` and `skylux loop` in one).
 
 use anyhow::{ensure, Context};
 use skylux_bus::{RegisterAccess, RegisterBus};
@@ -14,7 +13,7 @@ use std::time::Instant;
 
 pub fn run(out_dir: &std::path::Path) -> anyhow::Result<()> {
     fabric_slice()?;
-    hdr_slice(out_dir)
+    campaign_and_loop(out_dir)
 }
 
 fn fabric_slice() -> anyhow::Result<()> {
@@ -77,126 +76,70 @@ fn fabric_slice() -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Part 2: a simulated sky capture (full sensor, five exposures from 1 µs to 500 ms) written
-/// in the campaign format, merged into a luminance map by the same code as `skylux hdr`, and
-/// compared with the simulator's truth.
-fn hdr_slice(out_dir: &std::path::Path) -> anyhow::Result<()> {
-    use skylux_hps::camera::{direction_from_alt_az, CameraModel, DeviceConfig, OrientationConfig};
-    use skylux_hps::campaign::Readout;
-    use skylux_hps::hdr::{map_capture, write_exr, MapFlag};
-    use skylux_sim::capture::{simulate_capture, CaptureSpec};
-    use skylux_sim::sky::SimulatedSky;
+/// Part 2: the main job. A simulated campaign (the reference test module in Lausanne, a clear
+/// and an overcast day, five exposures per capture, lux-meters and a pyranometer), with
+/// an effect the model is not told about (dirty glazing), and a base model that leaves the
+/// sun in the map as the published device first did; then the loop finds what is missing
+/// and reports before and after on held-out times.
+fn campaign_and_loop(out_dir: &std::path::Path) -> anyhow::Result<()> {
+    use skylux_hps::campaign::Campaign;
+    use skylux_hps::validation::illuminance_loop::LoopOptions;
+    use skylux_sim::campaign::{simulate_campaign, CampaignSpec};
 
-    println!("Skylux demo, part 2: a simulated sky capture through HDR synthesis");
+    println!();
+    println!("Skylux demo, part 2: simulate a campaign, then close the loop");
     let started = Instant::now();
-    let device = DeviceConfig {
-        orientation: OrientationConfig {
-            axis_azimuth_deg: 0.0,
-            axis_altitude_deg: 90.0,
-            roll_deg: 0.0,
-        },
-        // The whole hemisphere on the sensor's short side.
-        lens: skylux_hps::camera::LensConfig {
-            focal_px: 600.0,
-            ..DeviceConfig::default().lens
-        },
-        ..DeviceConfig::default()
-    };
-    let camera = CameraModel::new(device.clone());
-    let sky = SimulatedSky {
-        zenith_luminance_cd_m2: 6000.0,
-        sun_direction: direction_from_alt_az(35.0, 160.0),
-        sun_luminance_cd_m2: 1.6e9,
-        sun_radius_deg: 0.2665,
-        ground_luminance_cd_m2: 1500.0,
-    };
-    let spec = CaptureSpec {
-        time: "2017-05-08T12:00:00+02:00".into(),
-        readout: Readout {
-            col_start: 0,
-            row_start: 0,
-            skip: 1,
-        },
-        raw_width: 2592,
-        raw_height: 1944,
-        exposures_us: vec![1.0, 26.59, 707.1, 18_803.0, 500_000.0],
-        gain: 1.0,
-        seed: 2017,
-        footprint: skylux_sim::sensor::Footprint::Integrated,
-    };
-    let capture_dir = out_dir.join("captures").join("2017-05-08T1200");
-    let field = |d: glam::DVec3| sky.luminance_cd_m2(d);
-    simulate_capture(&capture_dir, &camera, &field, &spec)
-        .context("writing the simulated capture")?;
-    device.write(&out_dir.join("device.toml"))?;
-    let simulated = started.elapsed().as_secs_f64();
-    println!("  simulated 5 raw frames of 2592x1944 (shot and read noise, 12 bit) into {} in {simulated:.1} s", capture_dir.display());
-
-    let merge_start = Instant::now();
-    let merged = map_capture(&capture_dir, &device)?;
-    let merge_s = merge_start.elapsed().as_secs_f64();
-    let map_path = out_dir.join("map.exr");
-    write_exr(&map_path, &merged.map, &device, &merged.capture.readout)?;
-    let map = &merged.map;
-    let (mut n, mut sum, mut sum2) = (0usize, 0.0, 0.0);
-    let (mut lo, mut hi) = (f64::MAX, 0.0f64);
-    for i in 0..map.luminance_cd_m2.len() {
-        if map.flags[i] != MapFlag::Valid || !merged.geometry.direction[i].is_finite() {
-            continue;
-        }
-        let d = merged.geometry.direction[i].as_dvec3();
-        let truth = sky.luminance_cd_m2(d);
-        let l = map.luminance_cd_m2[i] as f64;
-        lo = lo.min(l);
-        hi = hi.max(l);
-        // Groups straddling the disk's edge see a mix: score the sky away from the sun.
-        let from_sun_deg = d.angle_between(sky.sun_direction).to_degrees();
-        if from_sun_deg > 1.0 {
-            let e = l / truth - 1.0;
-            n += 1;
-            sum += e;
-            sum2 += e * e;
-        }
+    let room = crate::sim_cmd::default_room()?;
+    let mut spec = CampaignSpec::lausanne(room);
+    spec.effects.glazing_transmittance = 0.85;
+    spec.truth_samples = 16_384;
+    let campaign_dir = out_dir.join("campaign");
+    if campaign_dir.exists() {
+        std::fs::remove_dir_all(&campaign_dir)
+            .with_context(|| format!("clearing {}", campaign_dir.display()))?;
     }
-    ensure!(n > 0, "no valid sky groups");
     println!(
-        "  merged in {merge_s:.2} s -> {} ({}x{} groups): {:.1} dB between {lo:.3e} and {hi:.3e} cd/m2",
-        map_path.display(),
-        map.width,
-        map.height,
-        20.0 * (hi / lo).log10()
+        "  world: {} at {:.2} N {:.2} E, {} days, captures every hour 8:00-18:00 (5 exposures, \
+         1 us to 500 ms, {}x{} raw), 5 lux-meters, a pyranometer",
+        spec.name,
+        spec.site.latitude_deg,
+        spec.site.longitude_deg,
+        spec.days.len(),
+        2592 / spec.skip,
+        1944 / spec.skip
     );
+    println!("  undeclared in the world: glazing transmittance x0.85 (dirt)");
+    let bar = indicatif::ProgressBar::new((spec.days.len() * spec.hours.len()) as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("  {msg:28} [{bar:30}] {pos}/{len}")
+            .expect("template")
+            .progress_chars("=> "),
+    );
+    bar.set_message("simulating captures");
+    let truth = simulate_campaign(&campaign_dir, &spec, &|done, _| {
+        bar.set_position(done as u64)
+    })
+    .context("simulating the campaign")?;
+    bar.finish_and_clear();
     println!(
-        "  against the simulated truth: sky mean relative error {:+.3} %, RMS {:.3} % over {n} groups",
-        100.0 * sum / n as f64,
-        100.0 * (sum2 / n as f64).sqrt()
+        "  simulated {} captures into {} in {:.0} s",
+        truth.len(),
+        campaign_dir.display(),
+        started.elapsed().as_secs_f64()
     );
 
-    // The sun, extracted as the device does it (the prediction would come from SPA).
-    let search = skylux_hps::sun::SunSearch {
-        predicted_direction: Some(sky.sun_direction),
-        ..Default::default()
-    };
-    match skylux_hps::sun::extract_sun(map, &merged.geometry, &search) {
-        Ok(sun) => println!(
-            "  sun extracted: direction error {:.4} deg, disk luminance {:.4e} cd/m2 (truth {:.4e}), direct-normal illuminance {:.0} lux, flags {:?}",
-            sun.direction.angle_between(sky.sun_direction).to_degrees(),
-            sun.disk_luminance_cd_m2,
-            sky.sun_luminance_cd_m2,
-            sun.direct_normal_illuminance_lux,
-            sun.flags
-        ),
-        Err(e) => println!("  sun not extracted: {e}"),
-    }
-    let radiance_dir = out_dir.join("radiance-sky");
-    let lookup = skylux_hps::hdr::SkyLookup::new(&camera, &merged, 4);
-    skylux_hps::hdr::write_radiance_sky(&radiance_dir, 1024, &|d| lookup.luminance_cd_m2(d))?;
+    let loop_start = Instant::now();
+    let campaign = Campaign::open(&campaign_dir)?;
+    let mut options = LoopOptions::default();
+    // The published device's first model: the sun stays in the map's patches.
+    options.base.concentrated_sun = false;
+    let outcome = crate::loop_cmd::run_with_progress(&campaign, &options)?;
+    let report_dir = out_dir.join("report");
+    crate::loop_cmd::write_outcome(&report_dir, &campaign, &outcome)?;
     println!(
-        "  RADIANCE sky written to {} (sky.rad + sky.hdr + skylux_sky.cal)",
-        radiance_dir.display()
+        "  loop: HDR, sun, daylight coefficients and effects in {:.0} s",
+        loop_start.elapsed().as_secs_f64()
     );
-    println!(
-        "  (next stages: the daylighting engine on this sky and the loop arrive with their issues)"
-    );
+    crate::loop_cmd::print_summary(&report_dir, &outcome);
     Ok(())
 }

@@ -4,10 +4,13 @@ mod bench;
 mod bench_capture;
 mod bench_raybox;
 mod closure;
+mod dc;
 mod demo;
 mod hdr;
 mod illuminance;
+mod loop_cmd;
 mod regs;
+mod sim_cmd;
 mod solpos;
 
 use clap::{Parser, Subcommand};
@@ -25,9 +28,9 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Runs the main job on a built-in default (today: the deepest slice that works end to end,
-    /// the HPS drivers against the cycle-accurate fabric model, then a simulated full-sensor
-    /// sky capture through HDR synthesis).
+    /// Runs the main job on a built-in default: the drivers against the cycle-accurate fabric
+    /// model, then a simulated campaign (Lausanne, a clear and an overcast day, an undeclared
+    /// effect) through HDR, sun, daylight coefficients and the loop, with its report.
     Demo {
         /// Folder for the simulated campaign and the results.
         #[arg(long, default_value = "skylux-demo")]
@@ -37,10 +40,17 @@ enum Command {
     Closure(closure::ClosureArgs),
     /// Measures speed next to a reference (`skylux bench hdr --json`).
     Bench(bench::BenchArgs),
+    /// Computes a room's daylight-coefficient matrix (illuminance per unit sky patch).
+    Dc(dc::DcArgs),
     /// Merges a capture folder into a calibrated luminance map (OpenEXR).
     Hdr(hdr::HdrArgs),
     /// Computes workplane illuminance at sensor points by path tracing a RADIANCE scene and sky.
     Illuminance(illuminance::IlluminanceArgs),
+    /// Runs the device model against a campaign's lux-meters, adds the effects the residual
+    /// calls for, and reports before and after on held-out times.
+    Loop(loop_cmd::LoopArgs),
+    /// The simulated world: `skylux sim campaign --out DIR [--effect NAME=VALUE]`.
+    Sim(sim_cmd::SimArgs),
     /// Reads every register and prints it decoded, field by field.
     Regs(regs::RegsArgs),
     /// Prints the sun's zenith and azimuth (NREL SPA) for one time and place, as CSV.
@@ -50,10 +60,13 @@ enum Command {
 fn main() -> anyhow::Result<()> {
     match Cli::parse().command {
         Command::Demo { out } => demo::run(&out),
+        Command::Dc(args) => dc::run(&args),
         Command::Hdr(args) => hdr::run(&args),
         Command::Illuminance(args) => illuminance::run(&args),
         Command::Bench(args) => bench::run(&args),
         Command::Closure(args) => closure::run(&args),
+        Command::Loop(args) => loop_cmd::run(&args),
+        Command::Sim(args) => sim_cmd::run(&args),
         Command::Regs(args) => regs::run(&args),
         Command::Solpos(args) => solpos::run(&args),
     }

@@ -120,3 +120,43 @@ fn sun_coefficient_matches_a_light_sun_and_the_direct_closed_form() {
     world.set_environment(Some(Arc::new(|_| DVec3::ONE)));
     assert!(sun_coefficients(&mut world, &sensors, sun, &settings).is_err());
 }
+
+#[test]
+fn matrix_file_round_trips_and_bad_files_are_errors() {
+    let (world, sensors) = room();
+    let settings = Settings {
+        ambient_bounces: 2,
+        samples_per_sensor: 256,
+        seed: 5,
+        ..Default::default()
+    };
+    let dc = daylight_coefficients(&world, &sensors, 1, &settings, &|_, _| {}).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("room.dc");
+    dc.write(&path).unwrap();
+    let back = DaylightCoefficients::read(&path).unwrap();
+    assert_eq!(back.sensors, dc.sensors);
+    assert_eq!((back.mf, back.bins), (dc.mf, dc.bins));
+    for (a, b) in back.lux_per_cd_m2.iter().zip(&dc.lux_per_cd_m2) {
+        assert!((a - b).abs() <= 1e-6 * b.abs().max(1e-30), "{a} vs {b}");
+    }
+    let lum = vec![1000.0; dc.bins];
+    let mut out = vec![0.0; dc.sensors.len()];
+    back.apply_into(&lum, &mut out).unwrap();
+    for (o, e) in out.iter().zip(back.apply(&lum).unwrap()) {
+        assert!((o - e).abs() <= 1e-9 * e.abs());
+    }
+    assert!(back.apply_into(&lum[1..], &mut out).is_err());
+    // Truncated data, a wrong header, a missing file: errors that name the file.
+    let bytes = std::fs::read(&path).unwrap();
+    std::fs::write(&path, &bytes[..bytes.len() - 3]).unwrap();
+    let e = DaylightCoefficients::read(&path).unwrap_err();
+    assert!(e.contains("room.dc") && e.contains("data bytes"), "{e}");
+    std::fs::write(&path, b"#?RADIANCE\nNROWS=1\nNCOLS=7\nSKYLUX_MF=1\n\n").unwrap();
+    assert!(DaylightCoefficients::read(&path)
+        .unwrap_err()
+        .contains("NCOLS"));
+    std::fs::write(&path, b"garbage").unwrap();
+    assert!(DaylightCoefficients::read(&path).is_err());
+    assert!(DaylightCoefficients::read(&dir.path().join("none")).is_err());
+}

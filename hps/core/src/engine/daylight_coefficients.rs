@@ -18,7 +18,7 @@ use super::illuminance::illuminance;
 use super::integrator::{escape_sample, Settings};
 use super::material::bright;
 use super::rng::Rng;
-use super::sky::{DistantEmitter, DistantKind};
+use super::sky::DistantEmitter;
 use super::world::World;
 use crate::scene::Sensor;
 use crate::sky::SkyPatches;
@@ -70,6 +70,128 @@ impl DaylightCoefficients {
                     .sum()
             })
             .collect())
+    }
+
+    /// As [`Self::apply`], into `out`, with the sensors shared among the rayon threads:
+    /// the per-capture update of a daemon (400 sensors × 2305 patches is ~1 M multiply-adds).
+    pub fn apply_into(&self, luminance_cd_m2: &[f64], out: &mut [f64]) -> Result<(), EngineError> {
+        if luminance_cd_m2.len() != self.bins || out.len() != self.sensors.len() {
+            return Err(EngineError::Setting {
+                name: "patch luminances or output",
+                value: format!("{} and {}", luminance_cd_m2.len(), out.len()),
+                expected: "one luminance per bin and one output per sensor",
+            });
+        }
+        out.par_iter_mut()
+            .zip(self.lux_per_cd_m2.par_chunks(self.bins))
+            .for_each(|(o, row)| {
+                *o = row.iter().zip(luminance_cd_m2).map(|(c, l)| c * l).sum();
+            });
+        Ok(())
+    }
+
+    /// Writes the matrix in RADIANCE's matrix format (`rcollate`/`dctimestep` headers:
+    /// `NROWS` sensors, `NCOLS` bins, `NCOMP=1`, `FORMAT=float`, little-endian binary
+    /// float32), with Skylux's layout in the header: `SKYLUX_MF`, `SKYLUX_BINS=sky+ground`,
+    /// `SKYLUX_SAMPLES` and `SKYLUX_SENSOR=` lines.
+    pub fn write(&self, path: &std::path::Path) -> std::io::Result<()> {
+        let mut out = Vec::with_capacity(256 + 4 * self.lux_per_cd_m2.len());
+        out.extend_from_slice(b"#?RADIANCE\nskylux dc: daylight coefficients, lux per cd/m2\n");
+        out.extend_from_slice(
+            format!(
+                "NROWS={}\nNCOLS={}\nNCOMP=1\nFORMAT=float\nBYTEORDER=LittleEndian\n\
+                 SKYLUX_MF={}\nSKYLUX_BINS=sky+ground\nSKYLUX_SAMPLES={}\n",
+                self.sensors.len(),
+                self.bins,
+                self.mf,
+                self.samples_per_sensor
+            )
+            .as_bytes(),
+        );
+        for name in &self.sensors {
+            out.extend_from_slice(format!("SKYLUX_SENSOR={name}\n").as_bytes());
+        }
+        out.push(b'\n');
+        for v in &self.lux_per_cd_m2 {
+            out.extend_from_slice(&(*v as f32).to_le_bytes());
+        }
+        std::fs::write(path, out)
+    }
+
+    /// Reads what [`Self::write`] wrote; every malformed header or size is an error naming
+    /// the field.
+    pub fn read(path: &std::path::Path) -> Result<Self, String> {
+        let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let bad = |what: String| format!("{}: {what}", path.display());
+        let end = bytes
+            .windows(2)
+            .position(|w| w == b"\n\n")
+            .ok_or_else(|| bad("no end of header (an empty line)".into()))?;
+        let header =
+            std::str::from_utf8(&bytes[..end]).map_err(|_| bad("header is not text".into()))?;
+        if !header.starts_with("#?RADIANCE") {
+            return Err(bad("not a RADIANCE matrix (no #?RADIANCE)".into()));
+        }
+        let (mut rows, mut cols, mut mf, mut samples) = (None, None, None, 0u32);
+        let mut sensors = Vec::new();
+        for line in header.lines() {
+            let Some((k, v)) = line.split_once('=') else {
+                continue;
+            };
+            let num = |v: &str| {
+                v.trim()
+                    .parse::<usize>()
+                    .map_err(|_| bad(format!("{k}={v}: not a count")))
+            };
+            match k {
+                "NROWS" => rows = Some(num(v)?),
+                "NCOLS" => cols = Some(num(v)?),
+                "NCOMP" if v.trim() != "1" => return Err(bad(format!("NCOMP={v}: expected 1"))),
+                "FORMAT" if v.trim() != "float" => {
+                    return Err(bad(format!("FORMAT={v}: expected float")))
+                }
+                "BYTEORDER" if v.trim() != "LittleEndian" => {
+                    return Err(bad(format!("BYTEORDER={v}: expected LittleEndian")))
+                }
+                "SKYLUX_MF" => mf = Some(num(v)?),
+                "SKYLUX_SAMPLES" => samples = num(v)?.min(u32::MAX as usize) as u32,
+                "SKYLUX_SENSOR" => sensors.push(v.to_string()),
+                _ => {}
+            }
+        }
+        let rows = rows.ok_or_else(|| bad("no NROWS".into()))?;
+        let cols = cols.ok_or_else(|| bad("no NCOLS".into()))?;
+        let mf = mf.ok_or_else(|| bad("no SKYLUX_MF: not written by skylux dc".into()))?;
+        if !(1..=30).contains(&mf) || cols != 2 * SkyPatches::reinhart(mf).len() {
+            return Err(bad(format!(
+                "NCOLS={cols} does not match SKYLUX_MF={mf} (sky + ground)"
+            )));
+        }
+        if sensors.len() != rows {
+            return Err(bad(format!(
+                "{} SKYLUX_SENSOR lines for NROWS={rows}",
+                sensors.len()
+            )));
+        }
+        let data = &bytes[end + 2..];
+        let expected = rows.checked_mul(cols).and_then(|n| n.checked_mul(4));
+        if expected != Some(data.len()) {
+            return Err(bad(format!(
+                "{} data bytes for {rows} x {cols} float32 values",
+                data.len()
+            )));
+        }
+        let lux_per_cd_m2 = data
+            .chunks_exact(4)
+            .map(|c| f64::from(f32::from_le_bytes([c[0], c[1], c[2], c[3]])))
+            .collect();
+        Ok(Self {
+            sensors,
+            mf,
+            bins: cols,
+            lux_per_cd_m2,
+            samples_per_sensor: samples,
+        })
     }
 
     /// The bin a direction leaves through: its sky patch, or the mirrored patch + sky count
@@ -176,15 +298,7 @@ pub fn sun_coefficients(
     let solid_angle_sr = std::f64::consts::TAU * (1.0 - half.cos());
     // Radiance giving 1 lux at normal incidence: 179 × L × Ω = 1.
     let radiance = 1.0 / (super::WHITE_EFFICACY_LM_PER_W * solid_angle_sr);
-    world.add_distant(DistantEmitter {
-        name: "skylux_sun".into(),
-        kind: DistantKind::Light,
-        direction: sun_direction.normalize(),
-        cos_half_angle: half.cos(),
-        solid_angle_sr,
-        radiance_w_sr_m2: DVec3::splat(radiance),
-        patterns: vec![],
-    });
+    world.add_distant(DistantEmitter::sun(sun_direction, solid_angle_sr, radiance));
     let result = illuminance(world, sensors, settings, &|_, _| {});
     world.clear_distant();
     Ok(result?

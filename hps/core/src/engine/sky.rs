@@ -237,6 +237,20 @@ pub struct DistantEmitter {
 }
 
 impl DistantEmitter {
+    /// A sun: a uniform `light` disk of `solid_angle_sr` around unit `direction`, of white
+    /// radiance `radiance_w_sr_m2` (RADIANCE units: luminance / 179).
+    pub fn sun(direction: DVec3, solid_angle_sr: f64, radiance_w_sr_m2: f64) -> Self {
+        Self {
+            name: "skylux_sun".into(),
+            kind: DistantKind::Light,
+            direction: direction.normalize(),
+            cos_half_angle: 1.0 - solid_angle_sr / std::f64::consts::TAU,
+            solid_angle_sr,
+            radiance_w_sr_m2: DVec3::splat(radiance_w_sr_m2),
+            patterns: vec![],
+        }
+    }
+
     /// Inside the source's cone (RADIANCE's test in raytrace.c `sourcehit` is
     /// 2π(1 − D · dir) <= Ω, the same cone); the 1e-12 keeps a direction exactly on the rim
     /// of a hemisphere (the horizon) inside despite cos(π/2) rounding to 6e-17.

@@ -3,6 +3,10 @@
 //! held-out data.
 
 pub mod closure;
+pub mod device_model;
+pub mod effects;
+pub mod illuminance_loop;
+pub mod loop_figures;
 pub mod plot;
 pub mod pyranometer_effects;
 pub mod report;

@@ -62,6 +62,116 @@ pub struct Report {
     pub figures: Vec<String>,
 }
 
+impl Report {
+    /// `report.md`: the before/after table per sensor, the baseline, each effect with its
+    /// parameters and evidence, and the figures.
+    pub fn markdown(&self, title: &str) -> String {
+        use std::fmt::Write;
+        let pct = |v: f64| {
+            if v.is_finite() {
+                format!("{:.1} %", 100.0 * v)
+            } else {
+                "n/a".into()
+            }
+        };
+        let mut md = String::new();
+        let _ = writeln!(md, "# {title}\n");
+        let _ = writeln!(
+            md,
+            "Metric: `{}`, on the {} hold-out times (the fit used {} others; blocks of time \
+             alternate between the sets).\n",
+            self.metric,
+            self.holdout_times.len(),
+            self.fit_times.len()
+        );
+        let _ = write!(md, "| sensor | before | after |");
+        if self.baseline_perez.is_some() {
+            let _ = write!(md, " Perez baseline |");
+        }
+        let _ = write!(md, "\n|---|---|---|");
+        if self.baseline_perez.is_some() {
+            let _ = write!(md, "---|");
+        }
+        let _ = writeln!(md);
+        let mut rows: Vec<(String, f64, f64, Option<f64>)> = self
+            .before
+            .per_sensor
+            .iter()
+            .map(|(k, b)| {
+                (
+                    k.clone(),
+                    *b,
+                    self.after.per_sensor.get(k).copied().unwrap_or(f64::NAN),
+                    self.baseline_perez
+                        .as_ref()
+                        .map(|p| p.per_sensor.get(k).copied().unwrap_or(f64::NAN)),
+                )
+            })
+            .collect();
+        rows.sort_by_key(|r| sensor_order(&r.0));
+        rows.push((
+            "**all**".into(),
+            self.before.all,
+            self.after.all,
+            self.baseline_perez.as_ref().map(|p| p.all),
+        ));
+        for (k, b, a, p) in rows {
+            let _ = write!(md, "| {k} | {} | {} |", pct(b), pct(a));
+            if let Some(p) = p {
+                let _ = write!(md, " {} |", pct(p));
+            }
+            let _ = writeln!(md);
+        }
+        let _ = writeln!(md, "\n## Effects found\n");
+        if self.effects.is_empty() {
+            let _ = writeln!(md, "None.\n");
+        }
+        for e in &self.effects {
+            let params: Vec<String> = e
+                .parameters
+                .iter()
+                .map(|(k, v)| format!("{k} = {v:.4}"))
+                .collect();
+            let _ = writeln!(
+                md,
+                "- **{}** ({}): {}. Hold-out error fell by {}.",
+                e.name,
+                if params.is_empty() {
+                    "no parameter".into()
+                } else {
+                    params.join(", ")
+                },
+                e.evidence,
+                pct(e.gain)
+            );
+        }
+        for (title, list) in [("Rejected", &self.rejected), ("Notes", &self.notes)] {
+            if !list.is_empty() {
+                let _ = writeln!(md, "\n## {title}\n");
+                for n in list {
+                    let _ = writeln!(md, "- {n}");
+                }
+            }
+        }
+        if !self.figures.is_empty() {
+            let _ = writeln!(md, "\n## Figures\n");
+            for f in &self.figures {
+                let _ = writeln!(md, "![{f}]({f})\n");
+            }
+        }
+        md
+    }
+}
+
+/// `S2` before `S10`.
+fn sensor_order(name: &str) -> (String, u64) {
+    let digits = name.trim_start_matches(|c: char| !c.is_ascii_digit());
+    (
+        name[..name.len() - digits.len()].to_string(),
+        digits.parse().unwrap_or(u64::MAX),
+    )
+}
+
 /// Why a report could not be written or read.
 #[derive(Debug, thiserror::Error)]
 pub enum ReportError {

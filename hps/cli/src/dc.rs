@@ -1,0 +1,138 @@
+//! `skylux dc`: the daylight-coefficient matrix of a room, and the illuminance under a sky
+//! as one matrix-vector product.
+
+use anyhow::Context;
+use clap::Args;
+use skylux_hps::engine::{self, DaylightCoefficients, Settings, World};
+use skylux_hps::scene;
+use std::path::PathBuf;
+
+#[derive(Args)]
+pub struct DcArgs {
+    /// The room (RADIANCE scene files, without sky).
+    #[arg(long = "scene", required = true)]
+    pub scenes: Vec<PathBuf>,
+    #[arg(long)]
+    pub sensors: PathBuf,
+    /// Reinhart multiplication factor (1: Tregenza 145 patches, 4: 2305).
+    #[arg(long, default_value_t = 2)]
+    pub mf: usize,
+    /// Paths per sensor.
+    #[arg(long, default_value_t = 50_000)]
+    pub ad: u32,
+    #[arg(long, default_value_t = 5)]
+    pub ab: u32,
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// The matrix file (RADIANCE matrix format, float32).
+    #[arg(long)]
+    pub out: PathBuf,
+}
+
+pub fn run(args: &DcArgs) -> anyhow::Result<()> {
+    anyhow::ensure!((1..=8).contains(&args.mf), "--mf must be between 1 and 8");
+    let scene = scene::load_files(&args.scenes)?;
+    let sensors = scene::load_sensors(&args.sensors)?;
+    let world = World::new(&scene)?;
+    anyhow::ensure!(
+        world.distant_sources().is_empty(),
+        "the scene holds a sky or sun (distant sources): daylight coefficients need the room alone"
+    );
+    let settings = Settings {
+        ambient_bounces: args.ab,
+        samples_per_sensor: args.ad,
+        seed: args.seed,
+        ..Default::default()
+    };
+    let bar = indicatif::ProgressBar::new(1);
+    let dc = engine::daylight_coefficients(&world, &sensors, args.mf, &settings, &|d, n| {
+        bar.set_length(n);
+        bar.set_position(d);
+    })?;
+    bar.finish_and_clear();
+    dc.write(&args.out)
+        .with_context(|| format!("writing {}", args.out.display()))?;
+    println!(
+        "{} sensors x {} bins (Reinhart MF{} sky, then mirrored ground) -> {}",
+        dc.sensors.len(),
+        dc.bins,
+        dc.mf,
+        args.out.display()
+    );
+    Ok(())
+}
+
+/// `skylux bench dc --json`: one daylight-coefficient update (matrix times patch
+/// luminances) for 400 sensors, on one core and all cores.
+pub fn bench(json: bool, repeat: usize) -> anyhow::Result<()> {
+    let sensors = 400;
+    let mf = 4;
+    let patches = skylux_hps::sky::SkyPatches::reinhart(mf).len();
+    let bins = 2 * patches;
+    // A synthetic matrix of the right shape: the timing does not depend on the values.
+    let dc = DaylightCoefficients {
+        sensors: (1..=sensors).map(|i| format!("S{i}")).collect(),
+        mf,
+        bins,
+        lux_per_cd_m2: (0..sensors * bins)
+            .map(|i| 1e-4 * ((i % 97) as f64))
+            .collect(),
+        samples_per_sensor: 0,
+    };
+    let lum: Vec<f64> = (0..bins).map(|i| 1000.0 + (i % 13) as f64).collect();
+    let mut out = vec![0.0; sensors];
+    let time = |pool: &rayon::ThreadPool, out: &mut Vec<f64>| -> anyhow::Result<f64> {
+        let mut times = Vec::new();
+        for _ in 0..repeat {
+            let t = std::time::Instant::now();
+            pool.install(|| dc.apply_into(&lum, out))?;
+            times.push(t.elapsed().as_secs_f64() * 1e3);
+        }
+        times.sort_by(f64::total_cmp);
+        Ok(times[times.len() / 2])
+    };
+    let one = rayon::ThreadPoolBuilder::new().num_threads(1).build()?;
+    let all = rayon::ThreadPoolBuilder::new().build()?;
+    let single_ms = time(&one, &mut out)?;
+    let all_ms = time(&all, &mut out)?;
+    // Only the sky patches (2305), as the issue states the budget.
+    let sky_only: f64 = {
+        let mut times = Vec::new();
+        for _ in 0..repeat {
+            let t = std::time::Instant::now();
+            for (s, o) in out.iter_mut().enumerate() {
+                *o = dc.row(s)[..patches]
+                    .iter()
+                    .zip(&lum)
+                    .map(|(c, l)| c * l)
+                    .sum();
+            }
+            times.push(t.elapsed().as_secs_f64() * 1e3);
+        }
+        times.sort_by(f64::total_cmp);
+        times[times.len() / 2]
+    };
+    let checksum: f64 = out.iter().sum();
+    if json {
+        println!(
+            "{}",
+            serde_json::json!({
+                "sensors": sensors,
+                "sky_patches": patches,
+                "bins_with_ground": bins,
+                "sky_only_single_core_ms": sky_only,
+                "single_core_ms": single_ms,
+                "all_cores_ms": all_ms,
+                "budget_ms": 1.0,
+                "checksum": checksum,
+            })
+        );
+    } else {
+        println!(
+            "daylight-coefficient update, {sensors} sensors: {patches} sky patches on one core \
+             {sky_only:.3} ms; {bins} sky+ground bins {single_ms:.3} ms on one core, \
+             {all_ms:.3} ms on all (budget 1 ms)"
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,403 @@
+//! The effect library of the illuminance loop: each effect is a parametric change to the
+//! device model, a fit on the fit set only, and the residual signature that is its evidence.
+//!
+//! Fits minimise the squared relative residual (prediction / measurement − 1) over the fit
+//! set; the linear effects (transmittance, leak, ground) have closed forms.
+
+use super::device_model::{parts, predict, CaptureTerms, ModelState};
+use super::split::FitSet;
+use std::collections::BTreeMap;
+
+/// One fit-set sample: a capture and the lux-meter readings at its time.
+#[derive(Clone, Debug)]
+pub struct Sample {
+    pub capture: usize,
+    pub time_utc: chrono::DateTime<chrono::Utc>,
+    /// Per sensor (in the room's order); `None` where no reading matched.
+    pub measured_lux: Vec<Option<f64>>,
+}
+
+impl super::split::Timed for Sample {
+    fn time_utc(&self) -> chrono::DateTime<chrono::Utc> {
+        self.time_utc
+    }
+}
+
+/// The effects the loop knows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Effect {
+    /// The sun spread over its sky patch instead of sampled as a concentrated source.
+    SunUndersampling,
+    /// Glazing transmittance different from the scene's (dirt, coating, ageing).
+    GlazingTransmittance,
+    /// Light the scene lacks, proportional to the outdoor horizontal illuminance.
+    LightLeak,
+    /// Reflectance of the ground the lens does not see.
+    GroundReflectance,
+    /// The camera's orientation differs from `device.toml`.
+    OrientationError,
+}
+
+impl Effect {
+    pub const ALL: [Effect; 5] = [
+        Effect::SunUndersampling,
+        Effect::GlazingTransmittance,
+        Effect::LightLeak,
+        Effect::GroundReflectance,
+        Effect::OrientationError,
+    ];
+
+    /// The name in reports and in `skylux sim campaign --effect NAME=VALUE`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Effect::SunUndersampling => "sun_undersampling",
+            Effect::GlazingTransmittance => "glazing_transmittance",
+            Effect::LightLeak => "light_leak",
+            Effect::GroundReflectance => "ground_reflectance",
+            Effect::OrientationError => "orientation_error",
+        }
+    }
+}
+
+/// (prediction, measurement) pairs of the fit set under `state`.
+pub fn pairs(state: &ModelState, terms: &[CaptureTerms], fit: &FitSet<Sample>) -> Vec<(f64, f64)> {
+    let mut out = Vec::new();
+    for s in fit.samples() {
+        let p = predict(state, &terms[s.capture]);
+        for (pi, m) in p.iter().zip(&s.measured_lux) {
+            if let Some(m) = m {
+                if *m > 0.0 && pi.is_finite() {
+                    out.push((*pi, *m));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Mean |relative error| of the fit set under `state`.
+pub fn fit_error(state: &ModelState, terms: &[CaptureTerms], fit: &FitSet<Sample>) -> f64 {
+    let p = pairs(state, terms, fit);
+    if p.is_empty() {
+        return f64::NAN;
+    }
+    p.iter().map(|(p, m)| (p / m - 1.0).abs()).sum::<f64>() / p.len() as f64
+}
+
+/// Which of the linear effects' parameters are free in a joint fit.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FreeLinear {
+    pub glazing: bool,
+    pub ground: bool,
+    pub leak: bool,
+}
+
+impl FreeLinear {
+    /// The linear effects among `effects`.
+    pub fn of(effects: &[Effect]) -> Self {
+        Self {
+            glazing: effects.contains(&Effect::GlazingTransmittance),
+            ground: effects.contains(&Effect::GroundReflectance),
+            leak: effects.contains(&Effect::LightLeak),
+        }
+    }
+}
+
+/// Solves the small normal equations `a x = b` (Gaussian elimination with pivoting).
+fn solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Option<Vec<f64>> {
+    let n = b.len();
+    for c in 0..n {
+        let p = (c..n).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))?;
+        if a[p][c].abs() < 1e-300 {
+            return None;
+        }
+        a.swap(c, p);
+        b.swap(c, p);
+        for r in c + 1..n {
+            let f = a[r][c] / a[c][c];
+            let pivot = a[c].clone();
+            for (x, p) in a[r].iter_mut().zip(&pivot).skip(c) {
+                *x -= f * p;
+            }
+            b[r] -= f * b[c];
+        }
+    }
+    let mut x = vec![0.0; n];
+    for r in (0..n).rev() {
+        let s: f64 = (r + 1..n).map(|k| a[r][k] * x[k]).sum();
+        x[r] = (b[r] - s) / a[r][r];
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+/// Jointly fits the free linear parameters (glazing τ, unseen-ground ρ through u = τ and
+/// v = τρ, leak k) on the fit set, minimising Σ (prediction / measurement − 1)²; the others
+/// keep their values in `state`. Returns the new state, or `None` if the fit set cannot
+/// determine them.
+pub fn fit_linear(
+    state: &ModelState,
+    free: FreeLinear,
+    terms: &[CaptureTerms],
+    fit: &FitSet<Sample>,
+) -> Option<ModelState> {
+    // Columns of the design and the constant part of each reading.
+    let mut rows: Vec<(Vec<f64>, f64, f64)> = Vec::new();
+    for s in fit.samples() {
+        let t = &terms[s.capture];
+        for (k, (room, ground, outdoor)) in parts(state, t).into_iter().enumerate() {
+            let Some(m) = s.measured_lux[k].filter(|m| *m > 0.0) else {
+                continue;
+            };
+            let (tau, rho, leak) = (
+                state.glazing_transmittance,
+                state.ground_reflectance,
+                state.light_leak,
+            );
+            let mut cols = Vec::new();
+            let mut constant = 0.0;
+            match (free.glazing, free.ground) {
+                (true, true) => {
+                    cols.push(room);
+                    cols.push(ground);
+                }
+                (true, false) => cols.push(room + rho * ground),
+                (false, true) => {
+                    constant += tau * room;
+                    cols.push(tau * ground);
+                }
+                (false, false) => constant += tau * (room + rho * ground),
+            }
+            if free.leak {
+                cols.push(outdoor);
+            } else {
+                constant += leak * outdoor;
+            }
+            rows.push((cols, constant, m));
+        }
+    }
+    let n = rows.first().map_or(0, |r| r.0.len());
+    if n == 0 || rows.len() <= n {
+        return None;
+    }
+    let mut a = vec![vec![0.0; n]; n];
+    let mut b = vec![0.0; n];
+    for (cols, constant, m) in &rows {
+        let w = 1.0 / (m * m);
+        for i in 0..n {
+            b[i] += w * cols[i] * (m - constant);
+            for j in 0..n {
+                a[i][j] += w * cols[i] * cols[j];
+            }
+        }
+    }
+    let x = solve(a, b)?;
+    let mut next = state.clone();
+    let mut i = 0;
+    match (free.glazing, free.ground) {
+        (true, true) => {
+            next.glazing_transmittance = x[0].clamp(0.05, 2.0);
+            next.ground_reflectance = (x[1] / next.glazing_transmittance).clamp(0.0, 1.0);
+            i = 2;
+        }
+        (true, false) => {
+            next.glazing_transmittance = x[0].clamp(0.05, 2.0);
+            i = 1;
+        }
+        (false, true) => {
+            next.ground_reflectance = x[0].clamp(0.0, 1.0);
+            i = 1;
+        }
+        (false, false) => {}
+    }
+    if free.leak {
+        next.light_leak = x[i].max(0.0);
+    }
+    Some(next)
+}
+
+/// Pearson correlation.
+pub fn correlation(xy: &[(f64, f64)]) -> f64 {
+    let n = xy.len() as f64;
+    if xy.len() < 3 {
+        return f64::NAN;
+    }
+    let (mx, my) = (
+        xy.iter().map(|p| p.0).sum::<f64>() / n,
+        xy.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let (mut sxy, mut sxx, mut syy) = (0.0, 0.0, 0.0);
+    for &(x, y) in xy {
+        sxy += (x - mx) * (y - my);
+        sxx += (x - mx).powi(2);
+        syy += (y - my).powi(2);
+    }
+    sxy / (sxx * syy).sqrt()
+}
+
+/// A fitted candidate.
+#[derive(Clone, Debug)]
+pub struct Candidate {
+    pub effect: Effect,
+    pub state: ModelState,
+    pub parameters: BTreeMap<String, f64>,
+    pub evidence: String,
+}
+
+/// Readings of the fit set with their capture's terms.
+fn readings<'a>(
+    terms: &'a [CaptureTerms],
+    fit: &'a FitSet<Sample>,
+) -> impl Iterator<Item = (&'a CaptureTerms, usize, f64)> + 'a {
+    fit.samples().iter().flat_map(move |s| {
+        s.measured_lux
+            .iter()
+            .enumerate()
+            .filter_map(move |(k, m)| m.filter(|m| *m > 0.0).map(|m| (&terms[s.capture], k, m)))
+    })
+}
+
+/// Fits one of the output-level effects (all but the orientation, which changes the camera
+/// and is fitted from the sun's sightings by the loop) on the fit set, from `state`.
+///
+/// The linear effects are fitted jointly with the linear effects already `accepted`, so
+/// an effect added earlier is corrected for the one added now.
+pub fn fit_effect(
+    effect: Effect,
+    state: &ModelState,
+    accepted: &[Effect],
+    terms: &[CaptureTerms],
+    fit: &FitSet<Sample>,
+) -> Option<Candidate> {
+    let mut with = accepted.to_vec();
+    with.push(effect);
+    let joint = || fit_linear(state, FreeLinear::of(&with), terms, fit);
+    let mut next = state.clone();
+    let mut parameters = BTreeMap::new();
+    let evidence;
+    match effect {
+        Effect::SunUndersampling => {
+            if state.concentrated_sun {
+                return None;
+            }
+            next.concentrated_sun = true;
+            // Signature: the error sits where the direct sun reaches the sensor.
+            let (mut lit, mut shade) = (vec![], vec![]);
+            for (t, k, m) in readings(terms, fit) {
+                let e = (predict(state, t)[k] / m - 1.0).abs();
+                if t.sun_lux_per_dn_lux[k] * t.sun_dn_lux > 0.05 * m {
+                    lit.push(e);
+                } else {
+                    shade.push(e);
+                }
+            }
+            if lit.is_empty() {
+                return None;
+            }
+            let mean = |v: &[f64]| {
+                if v.is_empty() {
+                    0.0
+                } else {
+                    v.iter().sum::<f64>() / v.len() as f64
+                }
+            };
+            evidence = format!(
+                "the error sits where direct sun reaches the sensor: mean |relative error| {:.1} % \
+                 in {} sunlit readings against {:.1} % in {} others",
+                100.0 * mean(&lit),
+                lit.len(),
+                100.0 * mean(&shade),
+                shade.len()
+            );
+        }
+        Effect::GlazingTransmittance => {
+            let room_only = ModelState {
+                light_leak: 0.0,
+                glazing_transmittance: 1.0,
+                ..state.clone()
+            };
+            let rows: Vec<(f64, f64, f64)> = readings(terms, fit)
+                .map(|(t, k, m)| {
+                    (
+                        predict(&room_only, t)[k],
+                        state.light_leak * t.outdoor_horizontal_lux,
+                        m,
+                    )
+                })
+                .collect();
+            next = joint()?;
+            let tau = next.glazing_transmittance;
+            parameters.insert("relative_transmittance".into(), tau);
+            let ratios: Vec<f64> = rows.iter().map(|(a, b, m)| (m - b) / a).collect();
+            let mean = ratios.iter().sum::<f64>() / ratios.len() as f64;
+            let sd = (ratios.iter().map(|r| (r - mean).powi(2)).sum::<f64>()
+                / ratios.len().max(2) as f64)
+                .sqrt();
+            evidence = format!(
+                "measured / modelled illuminance is {mean:.3} ± {sd:.3} on every sensor and \
+                 under every sky: a common factor on all light through the glazing"
+            );
+        }
+        Effect::LightLeak => {
+            let rows: Vec<(f64, f64, f64)> = readings(terms, fit)
+                .map(|(t, k, m)| {
+                    let p = predict(state, t)[k] - state.light_leak * t.outdoor_horizontal_lux;
+                    (t.outdoor_horizontal_lux, p, m)
+                })
+                .collect();
+            next = joint()?;
+            let k = next.light_leak;
+            if k <= 0.0 {
+                return None;
+            }
+            parameters.insert("lux_per_outdoor_lux".into(), k);
+            let r = correlation(
+                &rows
+                    .iter()
+                    .map(|(eh, p, m)| (*eh, m - p - state.light_leak * eh))
+                    .collect::<Vec<_>>(),
+            );
+            evidence = format!(
+                "the residual (measured − model) grows with the outdoor horizontal illuminance \
+                 (r = {r:.2}) on every sensor, most in relative terms deep in the room"
+            );
+        }
+        Effect::GroundReflectance => {
+            let zero = ModelState {
+                ground_reflectance: 0.0,
+                ..state.clone()
+            };
+            let rows: Vec<(f64, f64, f64)> = readings(terms, fit)
+                .map(|(t, k, m)| {
+                    let per_rho = state.glazing_transmittance
+                        * t.unseen_ground_lux_per_cd_m2[k]
+                        * t.outdoor_horizontal_lux
+                        / std::f64::consts::PI;
+                    (per_rho, predict(&zero, t)[k], m)
+                })
+                .collect();
+            if rows.iter().all(|r| r.0 <= 0.0) {
+                return None;
+            }
+            next = joint()?;
+            let rho = next.ground_reflectance;
+            parameters.insert("reflectance".into(), rho);
+            let r = correlation(
+                &rows
+                    .iter()
+                    .map(|(g, p, m)| (g / m, m / (p + state.ground_reflectance * g) - 1.0))
+                    .collect::<Vec<_>>(),
+            );
+            evidence = format!(
+                "the relative residual follows the share of the prediction that comes from \
+                 ground the lens does not see (r = {r:.2})"
+            );
+        }
+        Effect::OrientationError => return None,
+    }
+    Some(Candidate {
+        effect,
+        state: next,
+        parameters,
+        evidence,
+    })
+}

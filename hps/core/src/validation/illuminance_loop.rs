@@ -1,0 +1,718 @@
+//! `skylux loop`: the device model against the lux-meters, effect by effect.
+//!
+//! 1. Merge every capture, extract the sun, and compute the room's daylight coefficients.
+//! 2. Split the capture times into fit and hold-out blocks ([`super::split`]).
+//! 3. Fit each candidate effect on the fit set; rank them by how much of the fit-set error
+//!    each removes; add the best if the hold-out error falls by more than its noise
+//!    (its block-to-block standard error); refit; repeat. The hold-out set is only ever
+//!    scored, never fitted.
+//! 4. Report before and after on the hold-out set, with the Perez baseline from the
+//!    pyranometer.
+
+use super::device_model::{
+    capture_terms, load_captures, predict, CaptureData, CaptureTerms, ModelError, ModelState, Room,
+};
+use super::effects::{fit_effect, fit_error, Candidate, Effect, Sample};
+use super::report::{EffectReport, ErrorSummary, Report};
+use super::split::{compare, split, Figure, FitSet, HoldoutSet, Score, SplitPlan};
+use crate::camera::{DeviceConfig, ImagePoint};
+use crate::campaign::Campaign;
+use crate::engine::Settings;
+use crate::sky::perez::{PerezConditions, PerezInput, PerezSky};
+use chrono::{Datelike, TimeDelta, Utc};
+use std::collections::BTreeMap;
+
+/// How the loop runs.
+#[derive(Clone, Debug)]
+pub struct LoopOptions {
+    /// The model before any effect: what the campaign's owner declared.
+    pub base: ModelState,
+    /// Reinhart subdivision of the daylight coefficients.
+    pub mf: usize,
+    /// Engine settings of the daylight and sun coefficients.
+    pub settings: Settings,
+    /// Length of a fit or hold-out block; blocks alternate.
+    pub block: TimeDelta,
+    /// A lux-meter reading matches a capture within this time.
+    pub match_window: TimeDelta,
+    /// Most effects added.
+    pub max_effects: usize,
+}
+
+impl Default for LoopOptions {
+    fn default() -> Self {
+        Self {
+            base: ModelState::default(),
+            mf: 2,
+            settings: Settings {
+                ambient_bounces: 5,
+                samples_per_sensor: 50_000,
+                seed: 1,
+                ..Default::default()
+            },
+            block: TimeDelta::hours(2),
+            match_window: TimeDelta::minutes(2),
+            max_effects: 4,
+        }
+    }
+}
+
+/// A fitted candidate and its fit-set error.
+type Ranked = (Candidate, f64);
+
+/// Why the loop could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum LoopError {
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error(transparent)]
+    Split(#[from] super::split::SplitError),
+    #[error("{0}")]
+    Data(String),
+}
+
+/// One line of `illuminance.csv`.
+#[derive(Clone, Debug)]
+pub struct IlluminanceRow {
+    pub time: String,
+    pub sensor: String,
+    pub lux_model: f64,
+    pub lux_measured: Option<f64>,
+    /// `hdr` (the final model), `hdr-base` (before effects) or `perez`.
+    pub model: String,
+}
+
+/// One reading with the model before and after, and the explanatory variables of the
+/// effect library: what the residual plots are drawn from.
+#[derive(Clone, Debug)]
+pub struct Diagnostic {
+    pub time: chrono::DateTime<chrono::FixedOffset>,
+    pub sensor: String,
+    pub holdout: bool,
+    pub measured_lux: f64,
+    pub before_lux: f64,
+    pub after_lux: f64,
+    /// Outdoor horizontal illuminance (pyranometer if present, else the map), lux.
+    pub outdoor_lux: f64,
+    /// Share of the (concentrated) model's light that is direct sun at this sensor.
+    pub direct_sun_share: f64,
+    /// Share of the model's light from ground the lens does not see.
+    pub unseen_ground_share: f64,
+    /// Extracted sun's angle from SPA under the declared camera, degrees (NaN: no sun).
+    pub sun_offset_deg: f64,
+}
+
+/// Everything the loop found.
+pub struct LoopOutcome {
+    pub report: Report,
+    pub rows: Vec<IlluminanceRow>,
+    pub diagnostics: Vec<Diagnostic>,
+    /// The final model and camera.
+    pub state: ModelState,
+    pub device: DeviceConfig,
+}
+
+/// Scores every (sample, sensor) reading of the hold-out set.
+fn score(
+    holdout: &HoldoutSet<Sample>,
+    predict_capture: &dyn Fn(usize) -> Vec<f64>,
+    sensors: &[String],
+) -> (Score, BTreeMap<String, Score>) {
+    // `evaluate_grouped` takes one error per sample, so score each sensor and merge.
+    let mut per_sensor = BTreeMap::new();
+    let mut all_errors: Vec<Score> = Vec::new();
+    for (k, name) in sensors.iter().enumerate() {
+        let (s, _) = holdout.evaluate_grouped(|smp: &Sample| {
+            let m = smp.measured_lux.get(k).copied().flatten()?;
+            if m <= 0.0 {
+                return None;
+            }
+            Some(((), predict_capture(smp.capture)[k] / m - 1.0))
+        });
+        per_sensor.insert(name.clone(), s.clone());
+        all_errors.push(s);
+    }
+    // All readings: average the sensors' scores weighted by their counts, per block too.
+    let merged = merge_scores(&all_errors);
+    (merged, per_sensor)
+}
+
+/// Combines per-sensor scores of the same blocks into one (means weighted by counts).
+fn merge_scores(scores: &[Score]) -> Score {
+    let mut out = Score::default();
+    let n: usize = scores.iter().map(|s| s.n).sum();
+    if n == 0 {
+        return out;
+    }
+    let nf = n as f64;
+    out.n = n;
+    out.mean = scores.iter().map(|s| s.mean * s.n as f64).sum::<f64>() / nf;
+    out.mean_abs = scores.iter().map(|s| s.mean_abs * s.n as f64).sum::<f64>() / nf;
+    out.rmse = (scores
+        .iter()
+        .map(|s| s.rmse * s.rmse * s.n as f64)
+        .sum::<f64>()
+        / nf)
+        .sqrt();
+    out.max_abs = scores.iter().map(|s| s.max_abs).fold(0.0, f64::max);
+    let mut blocks: BTreeMap<i64, Vec<Score>> = BTreeMap::new();
+    for s in scores {
+        for (k, b) in &s.blocks {
+            blocks.entry(*k).or_default().push(b.clone());
+        }
+    }
+    out.blocks = blocks
+        .into_iter()
+        .map(|(k, v)| (k, merge_scores(&v)))
+        .collect();
+    out
+}
+
+fn summary(all: &Score, per: &BTreeMap<String, Score>, figure: Figure) -> ErrorSummary {
+    ErrorSummary {
+        all: all.figure(figure),
+        per_sensor: per
+            .iter()
+            .map(|(k, s)| (k.clone(), s.figure(figure)))
+            .collect(),
+    }
+}
+
+/// Fits the camera orientation to the fit set's sun sightings; `None` if there are too few
+/// or the declared orientation already explains them within 0.2°.
+fn fit_orientation_candidate(
+    device: &DeviceConfig,
+    captures: &[CaptureData],
+    terms: &[CaptureTerms],
+    fit: &FitSet<Sample>,
+) -> Option<(DeviceConfig, BTreeMap<String, f64>, String)> {
+    let camera = crate::camera::CameraModel::new(device.clone());
+    let mut sightings = Vec::new();
+    let mut offsets = Vec::new();
+    for s in fit.samples() {
+        let Some(sun) = &terms[s.capture].sun else {
+            continue;
+        };
+        let Some(p): Option<ImagePoint> = camera.project(sun.direction) else {
+            continue;
+        };
+        offsets.push(
+            sun.direction
+                .angle_between(captures[s.capture].spa_sun)
+                .to_degrees(),
+        );
+        sightings.push(crate::sun::SunObservation {
+            image_point: p,
+            sun_direction: captures[s.capture].spa_sun,
+        });
+    }
+    if std::env::var_os("SKYLUX_DEBUG_LOOP").is_some() {
+        eprintln!(
+            "orientation: {} sightings, offsets {offsets:?}",
+            sightings.len()
+        );
+    }
+    if sightings.len() < 2 {
+        return None;
+    }
+    let rms = (offsets.iter().map(|o| o * o).sum::<f64>() / offsets.len() as f64).sqrt();
+    if rms < 0.2 {
+        return None;
+    }
+    let fitted = match crate::sun::fit_orientation(device, &sightings) {
+        Ok(f) => f,
+        Err(e) => {
+            if std::env::var_os("SKYLUX_DEBUG_LOOP").is_some() {
+                eprintln!("orientation fit: {e}");
+            }
+            return None;
+        }
+    };
+    let mut next = device.clone();
+    next.orientation = fitted.orientation.clone();
+    let mut params = BTreeMap::new();
+    let d = |a: f64, b: f64| (a - b + 540.0).rem_euclid(360.0) - 180.0;
+    params.insert(
+        "axis_azimuth_deg".into(),
+        d(
+            next.orientation.axis_azimuth_deg,
+            device.orientation.axis_azimuth_deg,
+        ),
+    );
+    params.insert(
+        "axis_altitude_deg".into(),
+        next.orientation.axis_altitude_deg - device.orientation.axis_altitude_deg,
+    );
+    params.insert(
+        "roll_deg".into(),
+        d(next.orientation.roll_deg, device.orientation.roll_deg),
+    );
+    let evidence = format!(
+        "{} sun sightings sit {rms:.2}° (rms) from the SPA sun with the declared orientation; \
+         the fitted orientation leaves {:.3}°",
+        sightings.len(),
+        fitted.residual_rms_deg
+    );
+    Some((next, params, evidence))
+}
+
+/// The Perez baseline per capture: the pyranometer's irradiance through gendaylit's model,
+/// the same daylight coefficients, the sun as a concentrated source, a ground of 0.2.
+/// Also returns the outdoor horizontal illuminance the pyranometer implies (Perez 1990
+/// luminous efficacy, as gendaylit converts), per capture.
+#[allow(clippy::type_complexity)]
+fn perez_predictions(
+    campaign: &Campaign,
+    room: &mut Room,
+    captures: &[CaptureData],
+    window: TimeDelta,
+) -> Result<(Vec<Option<Vec<f64>>>, Vec<Option<f64>>), LoopError> {
+    let Some(table) = &campaign.pyranometer else {
+        return Ok((vec![None; captures.len()], vec![None; captures.len()]));
+    };
+    let mut outdoor = Vec::new();
+    let patches = room.dc.patches();
+    let n = patches.len();
+    let mut out = Vec::new();
+    for c in captures {
+        let row = table
+            .rows
+            .iter()
+            .filter(|r| (r.time - c.time).abs() <= window)
+            .min_by_key(|r| (r.time - c.time).abs());
+        let Some(row) = row else {
+            out.push(None);
+            outdoor.push(None);
+            continue;
+        };
+        let input = match (row.dni_wm2, row.dhi_wm2, row.ghi_wm2) {
+            (Some(dni), Some(dhi), _) => PerezInput::DirectNormalDiffuse {
+                direct_normal_w_m2: dni,
+                diffuse_horizontal_w_m2: dhi,
+            },
+            (None, Some(dhi), Some(ghi)) => PerezInput::GlobalDiffuse {
+                global_horizontal_w_m2: ghi,
+                diffuse_horizontal_w_m2: dhi,
+            },
+            _ => {
+                out.push(None);
+                outdoor.push(None);
+                continue;
+            }
+        };
+        let conditions = PerezConditions {
+            day_of_year: c.time.ordinal() as u16,
+            ..PerezConditions::gendaylit_ang(c.spa_sun)
+        };
+        let Ok(sky) = PerezSky::new(input, &conditions) else {
+            out.push(None);
+            outdoor.push(None);
+            continue;
+        };
+        outdoor.push(Some(sky.global_horizontal_illuminance_lux()).filter(|l| l.is_finite()));
+        let ground = 0.2 * sky.global_horizontal_illuminance_lux() / std::f64::consts::PI;
+        let mut lum: Vec<f64> = (0..n)
+            .map(|p| sky.luminance_cd_m2(patches.centre(p)))
+            .collect();
+        lum.extend(std::iter::repeat_n(ground, n));
+        let mut e = room
+            .dc
+            .apply(&lum)
+            .map_err(|e| LoopError::Data(e.to_string()))?;
+        let dn = sky.direct_normal_illuminance_lux();
+        if dn > 0.0 && c.spa_sun.z > 0.0 {
+            let k = crate::engine::sun_coefficients(
+                &mut room.world,
+                &room.sensors,
+                c.spa_sun,
+                &Settings {
+                    samples_per_sensor: room.settings.samples_per_sensor.clamp(64, 2048),
+                    ..room.settings
+                },
+            )
+            .map_err(|e| LoopError::Data(e.to_string()))?;
+            for (ei, (ki, _)) in e.iter_mut().zip(k) {
+                *ei += ki * dn;
+            }
+        }
+        out.push(Some(e));
+    }
+    Ok((out, outdoor))
+}
+
+/// Where the campaign has a pyranometer, the outdoor horizontal illuminance it implies
+/// replaces the map's own estimate (which extrapolates the sky the lens does not see).
+fn use_reference_outdoor(terms: &mut [CaptureTerms], outdoor: &[Option<f64>]) {
+    for (t, o) in terms.iter_mut().zip(outdoor) {
+        if let Some(o) = o {
+            t.outdoor_horizontal_lux = *o;
+        }
+    }
+}
+
+/// Runs the loop on an opened campaign. `progress(stage, done, total)`.
+pub fn run_loop(
+    campaign: &Campaign,
+    options: &LoopOptions,
+    progress: &(dyn Fn(&str, u64, u64) + Sync),
+) -> Result<LoopOutcome, LoopError> {
+    let device_path = campaign.path(&campaign.config.files.device);
+    let (declared, device_warnings) = DeviceConfig::read(&device_path).map_err(ModelError::from)?;
+    let captures = load_captures(campaign, &declared, &|i, n| {
+        progress("merging captures", i as u64, n as u64)
+    })?;
+    let mut room = Room::load(campaign, options.mf, options.settings, &|i, n| {
+        progress("daylight coefficients", i, n)
+    })?;
+    let sensor_names: Vec<String> = room.sensors.iter().map(|s| s.name.clone()).collect();
+    let mut terms = capture_terms(&mut room, &captures, &declared, &|i, n| {
+        progress("sky and sun per capture", i as u64, n as u64)
+    })?;
+    progress("Perez baseline", 0, 1);
+    let (perez, reference_outdoor) =
+        perez_predictions(campaign, &mut room, &captures, TimeDelta::minutes(5))?;
+    use_reference_outdoor(&mut terms, &reference_outdoor);
+    let base_terms = terms.clone();
+
+    // Samples: each capture with the readings at its time.
+    let mut samples = Vec::new();
+    for (i, c) in captures.iter().enumerate() {
+        let measured: Vec<Option<f64>> = sensor_names
+            .iter()
+            .map(|name| {
+                campaign
+                    .luxmeters
+                    .iter()
+                    .filter(|r| {
+                        &r.sensor == name && (r.time - c.time).abs() <= options.match_window
+                    })
+                    .min_by_key(|r| (r.time - c.time).abs())
+                    .map(|r| r.illuminance_lux)
+            })
+            .collect();
+        if measured.iter().any(Option::is_some) {
+            samples.push(Sample {
+                capture: i,
+                time_utc: c.time.with_timezone(&Utc),
+                measured_lux: measured,
+            });
+        }
+    }
+    if samples.is_empty() {
+        return Err(LoopError::Data(
+            "no lux-meter reading matches any capture time".into(),
+        ));
+    }
+    let origin = samples.iter().map(|s| s.time_utc).min().expect("non-empty");
+    let plan = SplitPlan {
+        origin,
+        block: options.block,
+        period: 2,
+        phase: 1,
+    };
+    let (fit, holdout) = split(samples, &plan)?;
+    let fit_times: Vec<String> = fit.times().iter().map(|t| t.to_rfc3339()).collect();
+    let holdout_times: Vec<String> = holdout.times().iter().map(|t| t.to_rfc3339()).collect();
+
+    let mut state = options.base.clone();
+    let mut device = declared.clone();
+    let base_predictions: Vec<Vec<f64>> = terms.iter().map(|t| predict(&state, t)).collect();
+    let (before_all, before_per) = score(&holdout, &|c| base_predictions[c].clone(), &sensor_names);
+    let mut current_holdout = before_all.clone();
+    let mut effects = Vec::new();
+    let mut rejected = Vec::new();
+    let mut notes: Vec<String> = device_warnings
+        .into_iter()
+        .map(|w| format!("{}: {w}", device_path.display()))
+        .collect();
+
+    // The geometric effect first, judged against its own reference instrument: the sun
+    // sightings against SPA (its signature is there, not in the illuminance).
+    {
+        if let Some((dev, params, evidence)) =
+            fit_orientation_candidate(&device, &captures, &terms, &fit)
+        {
+            let mut new_terms = capture_terms(&mut room, &captures, &dev, &|_, _| {})?;
+            use_reference_outdoor(&mut new_terms, &reference_outdoor);
+            let offset = |t: &[CaptureTerms]| {
+                holdout.evaluate(|s: &Sample| {
+                    t[s.capture].sun.as_ref().map(|sun| {
+                        sun.direction
+                            .angle_between(captures[s.capture].spa_sun)
+                            .to_degrees()
+                    })
+                })
+            };
+            let (sun_before, sun_after) = (offset(&terms), offset(&new_terms));
+            let cmp = compare(&sun_before, &sun_after, Figure::MeanAbs);
+            let noise = if cmp.noise.is_finite() {
+                cmp.noise
+            } else {
+                0.0
+            };
+            let (after_all, _) =
+                score(&holdout, &|c| predict(&state, &new_terms[c]), &sensor_names);
+            let illum = compare(&current_holdout, &after_all, Figure::MeanAbs);
+            let illum_noise = if illum.noise.is_finite() {
+                illum.noise
+            } else {
+                0.0
+            };
+            if sun_after.n > 0 && cmp.gain > noise && cmp.gain > 0.0 && illum.gain >= -illum_noise {
+                effects.push(EffectReport {
+                    name: Effect::OrientationError.name().into(),
+                    parameters: params,
+                    evidence: format!(
+                        "{evidence}; on the hold-out captures the sun sightings moved from \
+                         {:.2}° to {:.2}° from SPA",
+                        sun_before.mean_abs, sun_after.mean_abs
+                    ),
+                    gain: illum.gain,
+                    fit_error_before: Some(fit_error(&state, &terms, &fit)),
+                    fit_error_after: Some(fit_error(&state, &new_terms, &fit)),
+                });
+                device = dev;
+                terms = new_terms;
+                current_holdout = after_all;
+            } else {
+                rejected.push(format!(
+                    "orientation_error: hold-out sun offset {:.2}° → {:.2}° (noise {:.2}°), \
+                 illuminance error change {:+.2} %: not added",
+                    sun_before.mean_abs,
+                    sun_after.mean_abs,
+                    noise,
+                    -100.0 * illum.gain
+                ));
+            }
+        }
+    }
+    while effects.len() < options.max_effects {
+        progress(
+            "fitting effects",
+            effects.len() as u64,
+            options.max_effects as u64,
+        );
+        let base_fit = fit_error(&state, &terms, &fit);
+        let accepted: Vec<Effect> = Effect::ALL
+            .into_iter()
+            .filter(|x| effects.iter().any(|e| e.name == x.name()))
+            .collect();
+        let mut candidates: Vec<Ranked> = Vec::new();
+        for effect in Effect::ALL {
+            if effects
+                .iter()
+                .any(|e: &EffectReport| e.name == effect.name())
+            {
+                continue;
+            }
+            if effect == Effect::OrientationError {
+                continue; // judged on the sun sightings above
+            }
+            if let Some(c) = fit_effect(effect, &state, &accepted, &terms, &fit) {
+                let err = fit_error(&c.state, &terms, &fit);
+                candidates.push((c, err));
+            }
+        }
+        candidates.sort_by(|a, b| a.1.total_cmp(&b.1));
+        let Some((best, best_fit)) = candidates.into_iter().next() else {
+            break;
+        };
+        if best_fit.is_nan() || best_fit >= base_fit - 0.002 {
+            notes.push(format!(
+                "no remaining effect lowers the fit-set error by more than 0.2 % (best: {} from \
+                 {:.2} % to {:.2} %)",
+                best.effect.name(),
+                100.0 * base_fit,
+                100.0 * best_fit
+            ));
+            break;
+        }
+        let (after_all, _) = score(
+            &holdout,
+            &|c| predict(&best.state, &terms[c]),
+            &sensor_names,
+        );
+        let cmp = compare(&current_holdout, &after_all, Figure::MeanAbs);
+        let noise = if cmp.noise.is_finite() {
+            cmp.noise
+        } else {
+            0.0
+        };
+        if cmp.gain <= noise || cmp.gain <= 0.0 {
+            rejected.push(format!(
+                "{}: fit-set error {:.2} % → {:.2} %, but the hold-out error changed by {:+.2} % \
+                 (noise {:.2} %): not added",
+                best.effect.name(),
+                100.0 * base_fit,
+                100.0 * best_fit,
+                -100.0 * cmp.gain,
+                100.0 * noise
+            ));
+            break;
+        }
+        effects.push(EffectReport {
+            name: best.effect.name().into(),
+            parameters: best.parameters.clone(),
+            evidence: best.evidence.clone(),
+            gain: cmp.gain,
+            fit_error_before: Some(base_fit),
+            fit_error_after: Some(best_fit),
+        });
+        state = best.state;
+        for e in effects.iter_mut() {
+            match e.name.as_str() {
+                "glazing_transmittance" => {
+                    e.parameters
+                        .insert("relative_transmittance".into(), state.glazing_transmittance);
+                }
+                "light_leak" => {
+                    e.parameters
+                        .insert("lux_per_outdoor_lux".into(), state.light_leak);
+                }
+                "ground_reflectance" => {
+                    e.parameters
+                        .insert("reflectance".into(), state.ground_reflectance);
+                }
+                _ => {}
+            }
+        }
+        current_holdout = score(&holdout, &|c| predict(&state, &terms[c]), &sensor_names).0;
+    }
+    if effects.is_empty() {
+        notes.push(
+            "no effect was added: the declared model explains the fit set within its noise".into(),
+        );
+    }
+    let final_predictions: Vec<Vec<f64>> = terms.iter().map(|t| predict(&state, t)).collect();
+    let (after_all, after_per) = score(&holdout, &|c| final_predictions[c].clone(), &sensor_names);
+
+    let baseline = if perez.iter().any(Option::is_some) {
+        let (a, p) = score(
+            &holdout,
+            &|c| {
+                perez[c]
+                    .clone()
+                    .unwrap_or_else(|| vec![f64::NAN; sensor_names.len()])
+            },
+            &sensor_names,
+        );
+        Some((a, p))
+    } else {
+        None
+    };
+
+    let mut secondary = BTreeMap::new();
+    secondary.insert(
+        "before_rmse_rel".into(),
+        summary(&before_all, &before_per, Figure::Rmse),
+    );
+    secondary.insert(
+        "after_rmse_rel".into(),
+        summary(&after_all, &after_per, Figure::Rmse),
+    );
+    if let Some((a, p)) = &baseline {
+        secondary.insert(
+            "baseline_perez_rmse_rel".into(),
+            summary(a, p, Figure::Rmse),
+        );
+    }
+    let report = Report {
+        metric: "mean_abs_rel_error".into(),
+        fit_times,
+        holdout_times,
+        before: summary(&before_all, &before_per, Figure::MeanAbs),
+        after: summary(&after_all, &after_per, Figure::MeanAbs),
+        baseline_perez: baseline
+            .as_ref()
+            .map(|(a, p)| summary(a, p, Figure::MeanAbs)),
+        effects,
+        secondary,
+        rejected,
+        notes,
+        figures: vec![],
+    };
+
+    // Diagnostics per reading, with the variables the effects are judged on.
+    let holdout_set: std::collections::HashSet<String> =
+        report.holdout_times.iter().cloned().collect();
+    let concentrated = ModelState {
+        concentrated_sun: true,
+        ..state.clone()
+    };
+    let mut diagnostics = Vec::new();
+    for (i, c) in captures.iter().enumerate() {
+        let t = &terms[i];
+        let parts = super::device_model::parts(&concentrated, t);
+        let total = predict(&concentrated, t);
+        let sun_offset_deg = base_terms[i].sun.as_ref().map_or(f64::NAN, |s| {
+            s.direction.angle_between(c.spa_sun).to_degrees()
+        });
+        for (k, name) in sensor_names.iter().enumerate() {
+            let Some(m) = campaign
+                .luxmeters
+                .iter()
+                .filter(|r| &r.sensor == name && (r.time - c.time).abs() <= options.match_window)
+                .min_by_key(|r| (r.time - c.time).abs())
+                .map(|r| r.illuminance_lux)
+            else {
+                continue;
+            };
+            let direct = t.sun_lux_per_dn_lux[k] * t.sun_dn_lux * state.glazing_transmittance;
+            diagnostics.push(Diagnostic {
+                time: c.time,
+                sensor: name.clone(),
+                holdout: holdout_set.contains(&c.time.with_timezone(&Utc).to_rfc3339()),
+                measured_lux: m,
+                before_lux: base_predictions[i][k],
+                after_lux: final_predictions[i][k],
+                outdoor_lux: t.outdoor_horizontal_lux,
+                direct_sun_share: if total[k] > 0.0 {
+                    direct / total[k]
+                } else {
+                    0.0
+                },
+                unseen_ground_share: if total[k] > 0.0 {
+                    state.glazing_transmittance * state.ground_reflectance * parts[k].1 / total[k]
+                } else {
+                    0.0
+                },
+                sun_offset_deg,
+            });
+        }
+    }
+
+    // illuminance.csv rows for every capture and sensor.
+    let mut rows = Vec::new();
+    for (i, c) in captures.iter().enumerate() {
+        let time = c.time.to_rfc3339();
+        for (k, name) in sensor_names.iter().enumerate() {
+            let measured = campaign
+                .luxmeters
+                .iter()
+                .filter(|r| &r.sensor == name && (r.time - c.time).abs() <= options.match_window)
+                .min_by_key(|r| (r.time - c.time).abs())
+                .map(|r| r.illuminance_lux);
+            let mut push = |model: &str, lux: f64| {
+                rows.push(IlluminanceRow {
+                    time: time.clone(),
+                    sensor: name.clone(),
+                    lux_model: lux,
+                    lux_measured: measured,
+                    model: model.into(),
+                })
+            };
+            push("hdr-base", base_predictions[i][k]);
+            push("hdr", final_predictions[i][k]);
+            if let Some(p) = &perez[i] {
+                push("perez", p[k]);
+            }
+        }
+    }
+    Ok(LoopOutcome {
+        report,
+        rows,
+        diagnostics,
+        state,
+        device,
+    })
+}

@@ -1,0 +1,495 @@
+//! Simulated measurement campaigns (shared/spec/campaign.md) with effects present in the
+//! world but not declared to the model: the test bed of the loop (`skylux sim campaign`).
+//!
+//! The world at each capture time: the sun where SPA puts it; a clear-sky irradiance model
+//! (ASHRAE) or an overcast or partly cloudy variant; the Perez all-weather sky for that
+//! irradiance, modulated by clouds the Perez model does not know (so the Perez baseline has
+//! a real error to show, as in the field); a ground of the world's reflectance. The camera
+//! (the one camera model, through the sensor model) images it into raw frames; the room
+//! (the daylighting engine, by direct path tracing of the continuous sky and a `light` sun)
+//! gives the lux-meter readings; the pyranometer records the irradiance.
+//!
+//! Undeclared effects ([`WorldEffects`]) change the world, never `device.toml` or the scene:
+//! the model is told what the campaign's owner believes, not what is true.
+
+use crate::capture::{simulate_capture, CaptureSpec};
+use chrono::{DateTime, Datelike, Duration, FixedOffset, NaiveDate, TimeZone, Utc};
+use glam::DVec3;
+use skylux_hps::camera::{CameraModel, DeviceConfig};
+use skylux_hps::campaign::{
+    write_luxmeters, CampaignConfig, CampaignFiles, LuxmeterReading, Readout, Site,
+};
+use skylux_hps::engine::sky::DistantEmitter;
+use skylux_hps::engine::{self, Settings, World};
+use skylux_hps::io::irradiance::{write_pyranometer_csv, PyranometerRow};
+use skylux_hps::sky::perez::{PerezConditions, PerezInput, PerezSky};
+use skylux_hps::sun::position::{solar_position, Site as SunSite};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// What the sky does on a simulated day.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DaySky {
+    Clear,
+    Overcast,
+    /// Broken clouds: the sun comes and goes, the sky is patchy.
+    Partly,
+}
+
+impl std::str::FromStr for DaySky {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "clear" => Ok(Self::Clear),
+            "overcast" => Ok(Self::Overcast),
+            "partly" => Ok(Self::Partly),
+            other => Err(format!(
+                "unknown sky `{other}`: expected clear, overcast or partly"
+            )),
+        }
+    }
+}
+
+/// Effects present in the world and not declared to the model. Each default is "absent".
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WorldEffects {
+    /// Glazing transmittance relative to the scene's (dirt: < 1).
+    pub glazing_transmittance: f64,
+    /// Light reaching the lux-meters by a path the scene lacks, as a fraction of the outdoor
+    /// horizontal illuminance (lux per lux).
+    pub light_leak: f64,
+    /// Reflectance of the ground outside (the model assumes 0.2 where the lens does not see it).
+    pub ground_reflectance: f64,
+    /// The camera's true axis azimuth minus the declared one, degrees.
+    pub orientation_azimuth_deg: f64,
+}
+
+impl Default for WorldEffects {
+    fn default() -> Self {
+        Self {
+            glazing_transmittance: 1.0,
+            light_leak: 0.0,
+            ground_reflectance: 0.2,
+            orientation_azimuth_deg: 0.0,
+        }
+    }
+}
+
+impl WorldEffects {
+    /// Sets one effect from `NAME=VALUE` (the names of the loop's effect library).
+    pub fn set(&mut self, assignment: &str) -> Result<(), String> {
+        let (name, value) = assignment
+            .split_once('=')
+            .ok_or_else(|| format!("`{assignment}`: expected NAME=VALUE"))?;
+        let v: f64 = value
+            .trim()
+            .parse()
+            .map_err(|_| format!("`{assignment}`: `{value}` is not a number"))?;
+        if !v.is_finite() {
+            return Err(format!("`{assignment}`: the value must be finite"));
+        }
+        let check = |ok: bool, range: &str| {
+            if ok {
+                Ok(())
+            } else {
+                Err(format!("`{assignment}`: {name} must be {range}"))
+            }
+        };
+        match name.trim() {
+            "glazing_transmittance" => {
+                check((0.1..=1.5).contains(&v), "in [0.1, 1.5]")?;
+                self.glazing_transmittance = v;
+            }
+            "light_leak" => {
+                check((0.0..=0.2).contains(&v), "in [0, 0.2]")?;
+                self.light_leak = v;
+            }
+            "ground_reflectance" => {
+                check((0.0..=1.0).contains(&v), "in [0, 1]")?;
+                self.ground_reflectance = v;
+            }
+            "orientation_error" | "orientation_azimuth_deg" => {
+                check(v.abs() <= 10.0, "within ±10 degrees")?;
+                self.orientation_azimuth_deg = v;
+            }
+            other => {
+                return Err(format!(
+                    "unknown effect `{other}`: expected glazing_transmittance, light_leak, \
+                     ground_reflectance or orientation_error"
+                ))
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A campaign to simulate.
+#[derive(Clone, Debug)]
+pub struct CampaignSpec {
+    pub name: String,
+    pub site: Site,
+    /// Offset of the local clock written in every timestamp, seconds east of UTC.
+    pub utc_offset_s: i32,
+    pub days: Vec<(NaiveDate, DaySky)>,
+    /// Local clock times of the captures, hours.
+    pub hours: Vec<f64>,
+    /// The camera as declared in `device.toml`.
+    pub device: DeviceConfig,
+    /// Readout skip (1: full resolution); the window is the whole array.
+    pub skip: u32,
+    pub exposures_us: Vec<f64>,
+    /// The room: a folder with `scene.rad` and `sensors.pts`.
+    pub room_dir: PathBuf,
+    pub effects: WorldEffects,
+    /// Relative standard deviation of a lux-meter reading.
+    pub luxmeter_noise: f64,
+    /// Paths per sensor of the engine run that gives the true illuminance.
+    pub truth_samples: u32,
+    pub seed: u64,
+}
+
+impl CampaignSpec {
+    /// The demo's campaign: the reference test module in Lausanne, a clear and an overcast
+    /// day in May, captures every hour from 8:00 to 18:00, the camera facing south through
+    /// the façade as declared in the spec's example `device.toml`.
+    pub fn lausanne(room_dir: PathBuf) -> Self {
+        Self {
+            name: "lausanne-simulated".into(),
+            site: Site {
+                latitude_deg: 46.52,
+                longitude_deg: 6.57,
+                elevation_m: 400.0,
+            },
+            utc_offset_s: 2 * 3600,
+            days: vec![
+                (
+                    NaiveDate::from_ymd_opt(2017, 5, 8).expect("date"),
+                    DaySky::Clear,
+                ),
+                (
+                    NaiveDate::from_ymd_opt(2017, 5, 9).expect("date"),
+                    DaySky::Overcast,
+                ),
+            ],
+            hours: (8..=18).map(f64::from).collect(),
+            device: DeviceConfig::default(),
+            skip: 4,
+            exposures_us: vec![1.0, 26.59, 707.1, 18_803.0, 500_000.0],
+            room_dir,
+            effects: WorldEffects::default(),
+            luxmeter_noise: 0.01,
+            truth_samples: 4096,
+            seed: 2017,
+        }
+    }
+}
+
+/// Why a campaign could not be simulated.
+#[derive(Debug, thiserror::Error)]
+pub enum SimCampaignError {
+    #[error("{path}: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("{0}")]
+    Invalid(String),
+    #[error(transparent)]
+    Capture(#[from] crate::capture::WriteCaptureError),
+    #[error(transparent)]
+    Scene(#[from] skylux_hps::scene::SceneError),
+    #[error(transparent)]
+    Sensors(#[from] skylux_hps::scene::SensorsError),
+    #[error(transparent)]
+    Engine(#[from] skylux_hps::engine::EngineError),
+    #[error(transparent)]
+    Campaign(#[from] skylux_hps::campaign::CampaignError),
+    #[error(transparent)]
+    Device(#[from] skylux_hps::camera::DeviceError),
+}
+
+/// The truth of one capture time, for tests.
+#[derive(Clone, Debug)]
+pub struct TruthRecord {
+    pub time: DateTime<FixedOffset>,
+    pub sun_direction: DVec3,
+    pub global_horizontal_lux: f64,
+    /// Per sensor, before the lux-meter's effects and noise.
+    pub room_lux: Vec<f64>,
+}
+
+/// ASHRAE clear-day model for May (ASHRAE Handbook of Fundamentals 1985, ch. 27, table 1,
+/// 21 May: A = 1088 W/m², B = 0.205, C = 0.134): DNI = A exp(−B / sin h), DHI = C · DNI.
+fn clear_sky_w_m2(altitude_rad: f64) -> (f64, f64) {
+    let s = altitude_rad.sin().max(0.02);
+    let dni = 1088.0 * (-0.205 / s).exp();
+    (dni, 0.134 * dni)
+}
+
+/// A deterministic hash to [0, 1).
+fn hash01(seed: u64, k: u64) -> f64 {
+    let mut s = seed ^ k.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    let x = skylux_hps::engine::rng::splitmix64(&mut s);
+    (x >> 11) as f64 / (1u64 << 53) as f64
+}
+
+/// Cloud modulation of the sky: a few soft blobs, brighter or darker than Perez.
+#[derive(Clone, Debug)]
+struct Clouds {
+    blobs: Vec<(DVec3, f64, f64)>,
+}
+
+impl Clouds {
+    fn new(kind: DaySky, seed: u64) -> Self {
+        let n = match kind {
+            DaySky::Clear => 0,
+            DaySky::Overcast => 6,
+            DaySky::Partly => 10,
+        };
+        let blobs = (0..n)
+            .map(|i| {
+                let az = std::f64::consts::TAU * hash01(seed, 3 * i);
+                let alt = (hash01(seed, 3 * i + 1) * 0.9 + 0.05).asin();
+                let d = DVec3::new(az.sin() * alt.cos(), az.cos() * alt.cos(), alt.sin());
+                let amp = (hash01(seed, 3 * i + 2) - 0.4) * 0.8;
+                (d, amp, 0.25)
+            })
+            .collect();
+        Self { blobs }
+    }
+    fn factor(&self, d: DVec3) -> f64 {
+        let mut f = 1.0;
+        for &(c, amp, width) in &self.blobs {
+            let a = d.angle_between(c);
+            f += amp * (-(a / width).powi(2)).exp();
+        }
+        f.max(0.2)
+    }
+}
+
+/// Writes the campaign to `out` and returns the truth per capture time.
+pub fn simulate_campaign(
+    out: &Path,
+    spec: &CampaignSpec,
+    progress: &dyn Fn(usize, usize),
+) -> Result<Vec<TruthRecord>, SimCampaignError> {
+    if spec.days.is_empty() || spec.hours.is_empty() {
+        return Err(SimCampaignError::Invalid(
+            "a campaign needs at least one day and one capture time".into(),
+        ));
+    }
+    let io = |path: &Path| {
+        let path = path.to_path_buf();
+        move |source| SimCampaignError::Io { path, source }
+    };
+    std::fs::create_dir_all(out.join("room")).map_err(io(out))?;
+    for f in ["scene.rad", "sensors.pts"] {
+        std::fs::copy(spec.room_dir.join(f), out.join("room").join(f))
+            .map_err(io(&spec.room_dir.join(f)))?;
+    }
+    CampaignConfig {
+        name: spec.name.clone(),
+        site: spec.site.clone(),
+        files: CampaignFiles::default(),
+    }
+    .write(&out.join("campaign.toml"))?;
+    spec.device.write(&out.join("device.toml"))?;
+
+    let scene = skylux_hps::scene::load(out.join("room/scene.rad"))?;
+    let sensors = skylux_hps::scene::load_sensors(out.join("room/sensors.pts"))?;
+    let mut world = World::new(&scene)?;
+    let mut true_device = spec.device.clone();
+    true_device.orientation.axis_azimuth_deg += spec.effects.orientation_azimuth_deg;
+    let true_camera = CameraModel::new(true_device);
+    let (raw_width, raw_height) = (2592 / spec.skip as usize, 1944 / spec.skip as usize);
+    let raw_width = raw_width & !1;
+    let raw_height = raw_height & !1;
+    let offset = FixedOffset::east_opt(spec.utc_offset_s)
+        .ok_or_else(|| SimCampaignError::Invalid("UTC offset out of range".into()))?;
+    let sun_site = SunSite {
+        latitude_deg: spec.site.latitude_deg,
+        longitude_deg: spec.site.longitude_deg,
+        elevation_m: spec.site.elevation_m,
+    };
+
+    let mut truth = Vec::new();
+    let mut readings = Vec::new();
+    let mut pyranometer = Vec::new();
+    let total = spec.days.len() * spec.hours.len();
+    let mut k = 0u64;
+    for &(date, kind) in &spec.days {
+        for &hour in &spec.hours {
+            k += 1;
+            progress(k as usize - 1, total);
+            let midnight = offset
+                .from_local_datetime(&date.and_hms_opt(0, 0, 0).expect("midnight"))
+                .single()
+                .ok_or_else(|| SimCampaignError::Invalid("ambiguous local time".into()))?;
+            let time = midnight + Duration::seconds((hour * 3600.0).round() as i64);
+            let sun = solar_position(time.with_timezone(&Utc), &sun_site, None)
+                .map_err(|e| SimCampaignError::Invalid(e.to_string()))?;
+            let sun_dir = sun.direction();
+            let altitude = sun.altitude_deg().to_radians();
+            if altitude < 3f64.to_radians() {
+                continue;
+            }
+            let seed = spec.seed ^ (k << 20);
+            let (dni_clear, dhi_clear) = clear_sky_w_m2(altitude);
+            let ghi_clear = dni_clear * altitude.sin() + dhi_clear;
+            // Sun visible at this time? Partly cloudy days hide it one time in three.
+            let (dni, dhi) = match kind {
+                DaySky::Clear => (dni_clear, dhi_clear),
+                DaySky::Overcast => (0.0, 0.35 * ghi_clear),
+                DaySky::Partly => {
+                    if hash01(seed, 99) < 0.35 {
+                        (0.0, 0.55 * ghi_clear)
+                    } else {
+                        (0.85 * dni_clear, 0.25 * ghi_clear)
+                    }
+                }
+            };
+            let perez = PerezSky::new(
+                PerezInput::DirectNormalDiffuse {
+                    direct_normal_w_m2: dni,
+                    diffuse_horizontal_w_m2: dhi,
+                },
+                &PerezConditions {
+                    day_of_year: date.ordinal() as u16,
+                    ground_reflectance: spec.effects.ground_reflectance,
+                    ..PerezConditions::gendaylit_ang(sun_dir)
+                },
+            )
+            .map_err(|e| SimCampaignError::Invalid(e.to_string()))?;
+            let clouds = Clouds::new(kind, seed);
+            let sky = {
+                let perez = perez.clone();
+                let clouds = clouds.clone();
+                move |d: DVec3| perez.luminance_cd_m2(d) * clouds.factor(d)
+            };
+            // True outdoor horizontal illuminance: the modulated sky integrated, plus the sun.
+            let patches = skylux_hps::sky::SkyPatches::reinhart(4);
+            let diffuse_lux: f64 = (0..patches.len())
+                .map(|p| {
+                    let c = patches.centre(p);
+                    sky(c) * c.z * patches.solid_angle_sr(p)
+                })
+                .sum();
+            let sun_lux = if dni > 0.0 {
+                perez.direct_normal_illuminance_lux() * altitude.sin()
+            } else {
+                0.0
+            };
+            let ghi_lux = diffuse_lux + sun_lux;
+            let ground_cd_m2 = spec.effects.ground_reflectance * ghi_lux / std::f64::consts::PI;
+            let sun_cd_m2 = if dni > 0.0 {
+                perez.sun_luminance_cd_m2()
+            } else {
+                0.0
+            };
+            let sun_half = perez.sun_solid_angle_sr() / std::f64::consts::TAU;
+            let sun_cos_half = 1.0 - sun_half;
+            let field = {
+                let sky = sky.clone();
+                move |d: DVec3| {
+                    if d.z < 0.0 {
+                        ground_cd_m2
+                    } else if sun_cd_m2 > 0.0 && d.dot(sun_dir) >= sun_cos_half {
+                        sun_cd_m2
+                    } else {
+                        sky(d)
+                    }
+                }
+            };
+            // Frames, through the true camera.
+            let stamp = time.format("%Y-%m-%dT%H%M").to_string();
+            let capture_dir = out.join("captures").join(&stamp);
+            simulate_capture(
+                &capture_dir,
+                &true_camera,
+                &field,
+                &CaptureSpec {
+                    time: time.to_rfc3339(),
+                    readout: Readout {
+                        col_start: 0,
+                        row_start: 0,
+                        skip: spec.skip,
+                    },
+                    raw_width,
+                    raw_height,
+                    exposures_us: spec.exposures_us.clone(),
+                    gain: 1.0,
+                    seed,
+                    footprint: crate::sensor::Footprint::Integrated,
+                },
+            )?;
+            // The room, by direct path tracing of the continuous sky and a light sun.
+            world.set_environment(Some(Arc::new({
+                let sky = sky.clone();
+                move |d: DVec3| {
+                    let l = if d.z < 0.0 { ground_cd_m2 } else { sky(d) };
+                    DVec3::splat(l / engine::WHITE_EFFICACY_LM_PER_W)
+                }
+            })));
+            if sun_cd_m2 > 0.0 {
+                world.add_distant(DistantEmitter::sun(
+                    sun_dir,
+                    perez.sun_solid_angle_sr(),
+                    sun_cd_m2 / engine::WHITE_EFFICACY_LM_PER_W,
+                ));
+            }
+            let settings = Settings {
+                ambient_bounces: 5,
+                samples_per_sensor: spec.truth_samples,
+                seed,
+                ..Default::default()
+            };
+            let lux = engine::illuminance(&world, &sensors, &settings, &|_, _| {})?;
+            world.clear_distant();
+            world.set_environment(None);
+            let room_lux: Vec<f64> = lux.iter().map(|s| s.illuminance_lux).collect();
+            for (s, &e) in room_lux.iter().enumerate() {
+                // Box-Muller from the hash: a reproducible Gaussian per reading.
+                let (u1, u2) = (
+                    hash01(seed, 1000 + 2 * s as u64).max(1e-12),
+                    hash01(seed, 1001 + 2 * s as u64),
+                );
+                let g = (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos();
+                let measured = (e * spec.effects.glazing_transmittance
+                    + spec.effects.light_leak * ghi_lux)
+                    * (1.0 + spec.luxmeter_noise * g);
+                readings.push(LuxmeterReading {
+                    time,
+                    sensor: sensors[s].name.clone(),
+                    illuminance_lux: measured.max(0.0),
+                });
+            }
+            // The pyranometer measures the sky as it is (clouds and all), not the Perez sky
+            // its irradiance was drawn from.
+            let dhi_measured = if perez.diffuse_horizontal_illuminance_lux() > 0.0 {
+                dhi * diffuse_lux / perez.diffuse_horizontal_illuminance_lux()
+            } else {
+                dhi
+            };
+            pyranometer.push(PyranometerRow {
+                time,
+                ghi_wm2: Some(dni * altitude.sin() + dhi_measured),
+                dhi_wm2: Some(dhi_measured),
+                dni_wm2: Some(dni),
+            });
+            truth.push(TruthRecord {
+                time,
+                sun_direction: sun_dir,
+                global_horizontal_lux: ghi_lux,
+                room_lux,
+            });
+        }
+    }
+    progress(total, total);
+    let mut text = Vec::new();
+    write_luxmeters(&mut text, &readings).map_err(io(&out.join("luxmeters.csv")))?;
+    std::fs::write(out.join("luxmeters.csv"), text).map_err(io(&out.join("luxmeters.csv")))?;
+    let mut text = Vec::new();
+    write_pyranometer_csv(&mut text, &pyranometer).map_err(io(&out.join("pyranometer.csv")))?;
+    std::fs::write(out.join("pyranometer.csv"), text).map_err(io(&out.join("pyranometer.csv")))?;
+    Ok(truth)
+}
