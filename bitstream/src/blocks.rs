@@ -42,7 +42,27 @@ pub const BLOCKS: &[ExportedBlock] = &[
         verilog: fresh::<skylux_rtl::capture::CapturePath>,
     },
     ExportedBlock {
+        name: "skylux_core",
+        verilog: fresh::<skylux_rtl::SkyluxCore>,
+    },
+    ExportedBlock {
         name: "raybox_unit",
         verilog: fresh::<skylux_rtl::raybox::RayBoxUnit<{ skylux_rtl::raybox::DEFAULT_LANES }>>,
     },
 ];
+
+/// The checked-in copy of the whole core that the Quartus project compiles
+/// (`quartus/skylux.qsf`), relative to this crate.
+pub const CORE_VERILOG_PATH: &str = "quartus/core/skylux_core.v";
+
+/// The whole core as the board top instantiates it: module `skylux_core` (rust-hdl names the
+/// top `top` and its sub-modules `top$...`), ports as in `quartus/core_ports.md`.
+pub fn core_verilog() -> String {
+    let v = fresh::<skylux_rtl::SkyluxCore>();
+    let v = v.replace("module top(", "module skylux_core(");
+    let v = v.replace("top$", "skylux_core$");
+    format!(
+        "// skylux_core: the whole Skylux fabric core, exported from rust-hdl by\n\
+         // `cargo run -p skylux-bitstream -- verilog`. Generated: do not edit.\n{v}"
+    )
+}

@@ -1,10 +1,11 @@
 //! `skylux-bitstream`: Verilog export and the open-source checks.
 //!
-//! - `verilog [--out DIR]`: writes every block as `DIR/<block>.v` (default `target/verilog`).
+//! - `verilog [--out DIR]`: writes every block as `DIR/<block>.v` (default `target/verilog`),
+//!   and the whole core as `bitstream/quartus/core/skylux_core.v`, the copy Quartus compiles.
 //! - `check`: lints, structurally checks and synthesises every block for the Cyclone V and
 //!   prints the resource table (Markdown) that BENCHMARKS.md carries.
 
-use skylux_bitstream::blocks::BLOCKS;
+use skylux_bitstream::blocks::{core_verilog, BLOCKS, CORE_VERILOG_PATH};
 use skylux_bitstream::xcheck;
 use std::path::PathBuf;
 
@@ -12,6 +13,8 @@ use std::path::PathBuf;
 const DEVICE_ALMS: u64 = 32_070;
 const DEVICE_M10K: u64 = 397;
 const DEVICE_DSP: u64 = 87;
+/// The whole core's ALM budget, in percent of the device.
+const CORE_BUDGET_PERCENT: u64 = 60;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -39,6 +42,9 @@ fn export(out: Option<PathBuf>) -> Result<(), String> {
         std::fs::write(&path, (block.verilog)()).map_err(|e| format!("{}: {e}", path.display()))?;
         println!("wrote {}", path.display());
     }
+    let core = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(CORE_VERILOG_PATH);
+    std::fs::write(&core, core_verilog()).map_err(|e| format!("{}: {e}", core.display()))?;
+    println!("wrote {}", core.display());
     Ok(())
 }
 
@@ -54,6 +60,12 @@ fn check() -> Result<(), String> {
         let alms = r.alm_estimate();
         if alms > DEVICE_ALMS || r.m10k > DEVICE_M10K || r.dsp > DEVICE_DSP {
             return Err(format!("{} does not fit the 5CSEMA5: {r:?}", block.name));
+        }
+        // The whole core must leave room for timing closure and later blocks (issue 10).
+        if block.name == "skylux_core" && alms * 100 > CORE_BUDGET_PERCENT * DEVICE_ALMS {
+            return Err(format!(
+                "skylux_core uses {alms} ALMs, over its budget of {CORE_BUDGET_PERCENT} % of {DEVICE_ALMS}"
+            ));
         }
         println!(
             "| {} | {} | {} | {} | {} | {} | {} | {:.1} % |",

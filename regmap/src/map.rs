@@ -22,7 +22,7 @@ pub const DESIGN_ID: u32 = 0x534B_594C;
 /// Major version of the map: the HPS refuses a different major version.
 pub const VERSION_MAJOR: u32 = 0;
 /// Minor version: compatible additions. The HPS accepts a newer minor version.
-pub const VERSION_MINOR: u32 = 1;
+pub const VERSION_MINOR: u32 = 2;
 
 register_block! {
     /// Identification, scratch, time base, interrupts and bus errors.
@@ -161,6 +161,14 @@ register_block! {
         timeout @ 0x01C {
             /// System clocks before a transaction is abandoned (10 ms at 100 MHz).
             CYCLES [0 +: 24] RW = 1_000_000;
+        }
+        /// The sensor's other control pins (hardware-facts.md §1.7, §1.8).
+        sensor_pins @ 0x020 {
+            /// Drives RESET_BAR: 0 holds the sensor in reset (the power-up state), 1 releases
+            /// it. The HPS releases it once XCLKIN runs, then waits before the first I2C access.
+            RESET_N [0 +: 1] RW = 0;
+            /// STROBE (the sensor's exposure indicator), synchronised to the system clock.
+            STROBE [1 +: 1] RO = 0;
         }
     }
 }

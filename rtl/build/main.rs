@@ -1,7 +1,9 @@
-//! Generates the rust-hdl register file from the register map, so that no offset, field or
-//! reset value is written twice. The output is `$OUT_DIR/register_file.rs`, included by
-//! `src/regfile.rs`.
+//! Generates the rust-hdl register file and the whole core's wiring from the register map, so
+//! that no offset, field or reset value is written twice. The outputs are
+//! `$OUT_DIR/register_file.rs` (included by `src/regfile.rs`) and `$OUT_DIR/core.rs`
+//! (included by `src/core.rs`).
 
+mod core;
 mod register_file;
 
 fn main() {
@@ -12,6 +14,11 @@ fn main() {
         }
         panic!("the register map is inconsistent ({} errors)", errors.len());
     }
-    let out = std::path::PathBuf::from(std::env::var("OUT_DIR").unwrap()).join("register_file.rs");
-    std::fs::write(out, register_file::generate(skylux_regmap::MAP)).unwrap();
+    let out_dir = std::path::PathBuf::from(std::env::var("OUT_DIR").unwrap());
+    std::fs::write(
+        out_dir.join("register_file.rs"),
+        register_file::generate(skylux_regmap::MAP),
+    )
+    .unwrap();
+    std::fs::write(out_dir.join("core.rs"), core::generate(skylux_regmap::MAP)).unwrap();
 }

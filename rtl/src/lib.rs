@@ -6,6 +6,7 @@
 pub mod avalon;
 pub mod bayer;
 pub mod capture;
+pub mod core;
 pub mod dma;
 pub mod drive;
 pub mod i2c;
@@ -13,4 +14,5 @@ pub mod raybox;
 pub mod regfile;
 pub mod sequencer;
 
+pub use core::SkyluxCore;
 pub use regfile::RegisterFile;

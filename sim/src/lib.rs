@@ -9,6 +9,7 @@ pub mod bus;
 pub mod campaign;
 pub mod capture;
 pub mod capture_path;
+pub mod core_rig;
 pub mod f2sdram;
 pub mod mt9p031;
 pub mod pixel_bus;

@@ -96,6 +96,9 @@ pub struct PixelCapture {
     first_of_line: Signal<Local, Bit>,
     lines_now: Signal<Local, Bits<COUNT_BITS>>,
     start_now: Signal<Local, Bit>,
+    in_frame_now: Signal<Local, Bit>,
+    pixels_now: Signal<Local, Bits<COUNT_BITS>>,
+    lines_base: Signal<Local, Bits<COUNT_BITS>>,
     pixels_reported: Signal<Local, Bits<12>>,
     lines_reported: Signal<Local, Bits<12>>,
     end_entry: Signal<Local, Bits<{ entry::BITS }>>,
@@ -158,6 +161,9 @@ impl Default for PixelCapture {
             first_of_line: Default::default(),
             lines_now: Default::default(),
             start_now: Default::default(),
+            in_frame_now: Default::default(),
+            pixels_now: Default::default(),
+            lines_base: Default::default(),
             pixels_reported: Default::default(),
             lines_reported: Default::default(),
             end_entry: Default::default(),
@@ -216,21 +222,52 @@ impl Logic for PixelCapture {
         self.width_wide.next = bit_cast::<COUNT_BITS, 12>(self.width.val());
         self.height_wide.next = bit_cast::<COUNT_BITS, 12>(self.height.val());
 
+        // ---- frame start ----------------------------------------------------------------
+        self.start_now.next = false;
+        if self.fv_rise.val() & self.enable_sync.q.val() {
+            if !self.end_pending.q.val() & (self.fifo_fill.val() < self.start_limit.val()) {
+                self.start_now.next = true;
+                self.in_frame.d.next = true;
+                self.pixels.d.next = 0.into();
+                self.lines.d.next = 0.into();
+                self.last_pixels.d.next = 0.into();
+                self.line_short.d.next = false;
+                self.line_long.d.next = false;
+                self.frame_short.d.next = false;
+                self.frame_long.d.next = false;
+                self.overflow.d.next = false;
+                self.frame_skipped.d.next = self.skipped.q.val();
+                self.skipped.d.next = false;
+            } else {
+                self.skipped.d.next = true;
+            }
+        }
+
+        // The frame counts from the PIXCLK of FV's rise: LV may rise with FV (no frame start
+        // blanking), and that first pixel belongs to the frame.
+        self.in_frame_now.next = self.in_frame.q.val() | self.start_now.val();
+        self.pixels_now.next = self.pixels.q.val();
+        self.lines_base.next = self.lines.q.val();
+        if self.start_now.val() {
+            self.pixels_now.next = 0.into();
+            self.lines_base.next = 0.into();
+        }
+
         // ---- the pixel stream -----------------------------------------------------------
-        self.forward.next = self.in_frame.q.val()
+        self.forward.next = self.in_frame_now.val()
             & self.active.val()
-            & (self.pixels.q.val() < self.width_wide.val())
-            & (self.lines.q.val() < self.height_wide.val());
-        self.first_of_line.next = !self.pixels.q.val().any();
+            & (self.pixels_now.val() < self.width_wide.val())
+            & (self.lines_base.val() < self.height_wide.val());
+        self.first_of_line.next = !self.pixels_now.val().any();
         self.pixel.next = self.d_r.q.val();
         self.pixel_valid.next = self.forward.val();
         self.line_start.next = self.forward.val() & self.first_of_line.val();
         self.frame_start.next =
-            self.forward.val() & self.first_of_line.val() & !self.lines.q.val().any();
+            self.forward.val() & self.first_of_line.val() & !self.lines_base.val().any();
 
         // ---- counting against the window ------------------------------------------------
-        if self.in_frame.q.val() & self.active.val() & !self.pixels.q.val().all() {
-            self.pixels.d.next = self.pixels.q.val() + 1;
+        if self.in_frame_now.val() & self.active.val() & !self.pixels_now.val().all() {
+            self.pixels.d.next = self.pixels_now.val() + 1;
         }
         self.lines_now.next = self.lines.q.val();
         if self.line_end.val() {
@@ -257,27 +294,6 @@ impl Logic for PixelCapture {
             }
             self.end_pending.d.next = true;
             self.end_countdown.d.next = self.end_delay.val();
-        }
-
-        // ---- frame start ----------------------------------------------------------------
-        self.start_now.next = false;
-        if self.fv_rise.val() & self.enable_sync.q.val() {
-            if !self.end_pending.q.val() & (self.fifo_fill.val() < self.start_limit.val()) {
-                self.start_now.next = true;
-                self.in_frame.d.next = true;
-                self.pixels.d.next = 0.into();
-                self.lines.d.next = 0.into();
-                self.last_pixels.d.next = 0.into();
-                self.line_short.d.next = false;
-                self.line_long.d.next = false;
-                self.frame_short.d.next = false;
-                self.frame_long.d.next = false;
-                self.overflow.d.next = false;
-                self.frame_skipped.d.next = self.skipped.q.val();
-                self.skipped.d.next = false;
-            } else {
-                self.skipped.d.next = true;
-            }
         }
 
         // ---- the end marker's payload ---------------------------------------------------

@@ -1,6 +1,7 @@
 //! Drivers for the Skylux fabric, written against the bus traits only.
 
 mod bringup;
+pub mod capture;
 mod exposure;
 pub mod frames;
 pub mod raybox;
@@ -8,4 +9,5 @@ pub mod sensor;
 pub mod sequence;
 
 pub use bringup::{BringUpError, Fabric, FabricInfo};
+pub use capture::{CaptureConfig, CaptureConfigError, CaptureFaults, GroupingConfig};
 pub use exposure::{ExposureError, ExposureSlot, MAX_EXPOSURES};

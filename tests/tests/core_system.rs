@@ -1,0 +1,201 @@
+//! The whole fabric core (`SkyluxCore`: register file, sensor control, capture path, ray-box
+//! unit, wired from the register map) driven by the HPS drivers through the bus traits, with
+//! an MT9P031 model on the camera pins and SDRAM models with random back-pressure on both
+//! f2sdram ports: configure the sensor, run a 5-exposure sequence, read every frame and
+//! descriptor back, and compare the payloads with the golden Bayer model bit for bit.
+
+use skylux_bus::RegisterAccess;
+use skylux_hps::fpga::frames::CapturedFrame;
+use skylux_hps::fpga::sensor::{I2cTiming, SensorConfig, SensorError};
+use skylux_hps::fpga::sequence::ShieldConfig;
+use skylux_hps::fpga::{CaptureConfig, ExposureSlot, Fabric};
+use skylux_regmap::{sys, VERSION_MINOR};
+use skylux_rtl::bayer::golden::{expected_words, BayerConfig, Frame, Phase};
+use skylux_sim::core_rig::{sim_core, CoreRigConfig, SharedCore, SimCoreMemory, SimCoreRegisters};
+use skylux_sim::mt9p031::{Mt9p031, RampSource, CHIP_VERSION};
+
+const FAST_I2C: I2cTiming = I2cTiming {
+    half_period_cycles: 4,
+    timeout_cycles: 5_000,
+};
+
+const SHIELD: ShieldConfig = ShieldConfig {
+    steps: 3,
+    step_period_cycles: 40,
+    limit_cycles: 2_000_000,
+    trigger_pulse_cycles: 4,
+};
+
+const WIDTH: u32 = 16;
+const HEIGHT: u32 = 8;
+/// Frame memory: the ring sits 4 KiB into it, with 4 KiB of guard after it.
+const WINDOW_BASE: u64 = 0x3000_1000;
+
+fn sensor_window() -> SensorConfig {
+    SensorConfig {
+        row_start: 54,
+        col_start: 16,
+        height: HEIGHT,
+        width: WIDTH,
+        shutter_width_rows: 3,
+        global_gain_code: 0x0010,
+        ..SensorConfig::default()
+    }
+}
+
+fn slots() -> Vec<ExposureSlot> {
+    (0..5)
+        .map(|i| ExposureSlot {
+            shutter_width_rows: 1 + 3 * i,
+            shutter_delay: 0,
+            gain_code: 8 + i,
+        })
+        .collect()
+}
+
+struct Bench {
+    shared: SharedCore,
+    fabric: Fabric<SimCoreRegisters>,
+    memory: SimCoreMemory,
+    capture: CaptureConfig,
+}
+
+fn bench(waitrequest_probability: f64, ring_slots: u8) -> Bench {
+    bench_sized(waitrequest_probability, ring_slots, WIDTH, HEIGHT)
+}
+
+fn bench_sized(waitrequest_probability: f64, ring_slots: u8, width: u32, height: u32) -> Bench {
+    let capture = CaptureConfig::fitted(width, height, WINDOW_BASE, ring_slots);
+    let memory_bytes = 0x1000 + capture.window_size_bytes as usize + 0x1000;
+    let sensor = Mt9p031::new(Box::new(RampSource), 96e6);
+    let (shared, regs, memory, _raybox) = sim_core(
+        sensor,
+        CoreRigConfig::new(memory_bytes, 4096, waitrequest_probability),
+    );
+    let fabric = Fabric::bring_up(regs).expect("bring-up of the whole core");
+    Bench {
+        shared,
+        fabric,
+        memory,
+        capture,
+    }
+}
+
+fn read_frames(b: &mut Bench, n: u8) -> Vec<CapturedFrame> {
+    (0..n)
+        .map(|slot| {
+            b.capture
+                .ring
+                .read_slot(&mut b.memory, slot)
+                .expect("slot readable")
+                .unwrap_or_else(|| panic!("slot {slot} holds no frame"))
+        })
+        .collect()
+}
+
+fn wait_frames_written(f: &mut Fabric<SimCoreRegisters>, n: u32) -> u32 {
+    let mut written = 0;
+    for _ in 0..20_000 {
+        written = f.frames_written().unwrap();
+        if written >= n {
+            break;
+        }
+    }
+    written
+}
+
+#[test]
+fn the_whole_core_captures_a_five_exposure_sequence_bit_for_bit() {
+    let mut b = bench(0.3, 5);
+    let f = &mut b.fabric;
+    assert_eq!(f.info().version_minor, VERSION_MINOR);
+
+    // The sensor powers up held in reset: it does not answer until RESET_BAR is released.
+    f.sensor_bus_setup(FAST_I2C).unwrap();
+    match f.sensor_read(0x00) {
+        Err(SensorError::Nack { reg: 0 }) => {}
+        other => panic!("a sensor in reset answered: {other:?}"),
+    }
+    f.sensor_reset_release(true).unwrap();
+    assert_eq!(f.sensor_configure(&sensor_window()).unwrap(), CHIP_VERSION);
+
+    f.capture_configure(&b.capture).unwrap();
+    f.set_exposures(&slots()).unwrap();
+    f.configure_shield(&SHIELD).unwrap();
+    let bus = f.bus();
+    bus.write_reg(&sys::irq_enable::REG, 0, sys::irq_enable::FRAME_DONE.mask())
+        .unwrap();
+    let outcome = f.run_sequence(200_000).unwrap();
+    assert_eq!(outcome.frames, 5);
+    assert_eq!(wait_frames_written(f, 5), 5, "the DMA finished every frame");
+    let faults = f.capture_take_faults().unwrap();
+    assert!(!faults.any(), "{faults:?}");
+    let irq = f.bus().read_reg(&sys::irq_status::REG, 0).unwrap();
+    assert_ne!(sys::irq_status::FRAME_DONE.get(irq), 0);
+    assert_ne!(sys::irq_status::SEQUENCE_DONE.get(irq), 0);
+
+    let frames = read_frames(&mut b, 5);
+    let rig = b.shared.lock().unwrap();
+    assert_eq!(rig.log.frames.len(), 5, "one sensor frame per trigger");
+    let mut previous_timestamp = 0;
+    for (i, (got, sent)) in frames.iter().zip(&rig.log.frames).enumerate() {
+        let d = &got.descriptor;
+        assert_eq!(d.frame_number, i as u32, "frame {i}");
+        assert_eq!(d.exposure_index, i as u8, "frame {i}");
+        assert_eq!(d.flags, 0, "frame {i}: {:?}", got.flag_names());
+        assert_eq!(
+            (u32::from(d.last_line_pixels), u32::from(d.lines)),
+            (WIDTH, HEIGHT)
+        );
+        assert_eq!(got.checksum_ok(), Some(true), "frame {i}");
+        assert!(d.timestamp_cycles > previous_timestamp);
+        previous_timestamp = d.timestamp_cycles;
+        let golden = expected_words(
+            &Frame {
+                width: sent.width,
+                height: sent.height,
+                samples: sent.samples_dn.clone(),
+            },
+            &BayerConfig {
+                phase: Phase::from_register(b.capture.grouping.phase),
+                ..BayerConfig::default()
+            },
+        );
+        assert_eq!(
+            got.words, golden,
+            "frame {i}: payload differs from the golden model"
+        );
+    }
+    // Nothing outside the DMA window, the shield closed and within its limit.
+    let end = WINDOW_BASE + u64::from(b.capture.window_size_bytes);
+    for a in &rig.frames.accesses {
+        assert!(
+            a.write && a.address >= WINDOW_BASE && a.address + a.bytes <= end,
+            "{a:?}"
+        );
+    }
+    assert_eq!(rig.log.shield_position, 0);
+    assert!(rig.log.shield_open_cycles_max > 0);
+    assert!(rig.log.shield_open_cycles_max <= u64::from(SHIELD.limit_cycles));
+    assert_eq!(rig.log.triggers, 5);
+}
+
+#[test]
+fn a_ring_smaller_than_the_sequence_flags_nothing_and_keeps_the_newest() {
+    // Three slots for five frames: the ring wraps, slots hold frames 3, 4, 2.
+    let mut b = bench(0.0, 3);
+    let f = &mut b.fabric;
+    f.sensor_bus_setup(FAST_I2C).unwrap();
+    f.sensor_reset_release(true).unwrap();
+    f.sensor_configure(&sensor_window()).unwrap();
+    f.capture_configure(&b.capture).unwrap();
+    f.set_exposures(&slots()).unwrap();
+    f.configure_shield(&SHIELD).unwrap();
+    f.run_sequence(200_000).unwrap();
+    assert_eq!(wait_frames_written(f, 5), 5);
+    let numbers: Vec<u32> = read_frames(&mut b, 3)
+        .iter()
+        .map(|c| c.descriptor.frame_number)
+        .collect();
+    assert_eq!(numbers, vec![3, 4, 2]);
+}
