@@ -193,7 +193,7 @@ impl<B: RegisterBus> Fabric<B> {
             &dma::window_base::ADDR,
             c.ring.window_base,
         )?;
-        if base % 8 != 0 || c.ring.slot_stride_bytes % 8 != 0 {
+        if (base | c.ring.slot_stride_bytes) & 7 != 0 {
             return Err(CaptureConfigError::OutOfRange {
                 field: "ring.window_base/slot_stride_bytes",
                 value: u64::from(base | c.ring.slot_stride_bytes),
