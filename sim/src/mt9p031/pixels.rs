@@ -2,10 +2,10 @@
 //! noise model (`crate::sensor::FrameRenderer`), then the sensor's mirroring.
 
 use super::frame::FrameSettings;
-use crate::sensor::{Footprint, FrameRenderer, Noise};
+use crate::sensor::{ChannelResponse, Footprint, FrameRenderer, Noise};
 use glam::DVec3;
 use skylux_hps::camera::CameraModel;
-use skylux_hps::campaign::{RawFrame, Readout};
+use skylux_hps::campaign::{BayerPattern, RawFrame, Readout};
 
 /// Where a frame's samples come from.
 pub trait PixelSource {
@@ -40,6 +40,9 @@ pub struct SceneSource {
     pub luminance_cd_m2: Box<dyn Fn(DVec3) -> f64 + Sync + Send>,
     /// Noise seed; each frame uses `seed + frame_index`. `None`: no noise.
     pub noise_seed: Option<u64>,
+    /// Each channel's response to the scene's spectrum ([`ChannelResponse::GREY`]: a
+    /// spectrally grey scene, or the device's calibration spectrum).
+    pub channel_response: ChannelResponse,
 }
 
 impl PixelSource for SceneSource {
@@ -63,7 +66,16 @@ impl PixelSource for SceneSource {
             None => Noise::None,
         };
         let exposure_s = settings.exposure_pixclk as f64 / pixclk_hz;
-        let raw = renderer.render(&*self.luminance_cd_m2, exposure_s, settings.gain, noise);
+        // Start addresses are even (the datasheet requires it, the driver refuses odd ones), so
+        // the array reads GRBG (hardware-facts.md §1.1); mirroring below moves the phase.
+        let raw = renderer.render_scene_spectral(
+            &renderer.scene(&*self.luminance_cd_m2),
+            exposure_s,
+            settings.gain,
+            noise,
+            &self.channel_response,
+            BayerPattern::GRBG,
+        );
         mirror(&raw, settings.mirror_row, settings.mirror_column)
     }
 }

@@ -2,5 +2,7 @@
 //! camera model (`skylux_hps::camera`) into Bayer samples, with the MT9P031's noise.
 
 mod render;
+pub mod spectral;
 
 pub use render::{AnalogFrame, Footprint, FrameRenderer, Noise};
+pub use spectral::{ChannelResponse, SpectralData};

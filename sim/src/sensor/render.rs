@@ -1,17 +1,19 @@
 //! Rendering raw frames from a known luminance field.
 //!
 //! Each 2x2 Bayer group images the field in the direction of its centre (the camera model's
-//! inverse map), so the truth of a group is one number. The scene is spectrally grey: every
-//! channel's black-subtracted mean signal is `x = L t g V(α) / (cg Σw)`, which makes the
-//! device's response `L = cg (w · RGB) / (t g V)` exact. Noise per sample: Poisson shot noise
+//! inverse map), so the truth of a group is one number. A spectrally grey scene gives every
+//! channel the black-subtracted mean signal `x = L t g V(α) / (cg Σw)`, which makes the
+//! device's response `L = cg (w · RGB) / (t g V)` exact; another spectrum scales each
+//! channel by its response (`spectral.rs`, `render_scene_spectral`). Noise per sample: Poisson shot noise
 //! on `x / (K g)` electrons (K: DN per electron at unity gain), Gaussian read noise, then the
 //! black level, rounding to whole DN and clipping to 12 bits.
 
+use super::spectral::ChannelResponse;
 use glam::DVec3;
 use rand_distr::{Distribution, Normal, Poisson};
 use rayon::prelude::*;
 use skylux_hps::camera::{CameraModel, ImagePoint};
-use skylux_hps::campaign::{RawFrame, Readout, MAX_SAMPLE_DN};
+use skylux_hps::campaign::{BayerPattern, RawFrame, Readout, MAX_SAMPLE_DN};
 use skylux_hps::hdr::Samples;
 
 /// Which noise to add.
@@ -213,6 +215,27 @@ impl FrameRenderer<'_> {
         gain: f64,
         noise: Noise,
     ) -> RawFrame {
+        self.render_scene_spectral(
+            scene,
+            exposure_s,
+            gain,
+            noise,
+            &ChannelResponse::GREY,
+            BayerPattern::GRBG,
+        )
+    }
+
+    /// As [`Self::render_scene`], with each sample scaled by its channel's response to the
+    /// scene's spectrum (`pattern`: the colours of the frame's first 2x2 block).
+    pub fn render_scene_spectral(
+        &self,
+        scene: &[f64],
+        exposure_s: f64,
+        gain: f64,
+        noise: Noise,
+        response: &ChannelResponse,
+        pattern: BayerPattern,
+    ) -> RawFrame {
         let mean = self.mean_signal_dn(scene, exposure_s, gain);
         let d = &self.camera.config;
         let black = d.sensor.black_level_dn;
@@ -232,7 +255,8 @@ impl FrameRenderer<'_> {
                 );
                 (0..self.raw_width)
                     .map(|x| {
-                        let m = mean[(y / 2) * gw + x / 2].max(0.0);
+                        let m = (mean[(y / 2) * gw + x / 2] * response.sample_gain(pattern, x, y))
+                            .max(0.0);
                         let dn = match noise {
                             Noise::None => black + m,
                             Noise::Sensor { .. } => {

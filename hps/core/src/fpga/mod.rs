@@ -7,6 +7,7 @@ pub mod frames;
 pub mod raybox;
 pub mod sensor;
 pub mod sequence;
+pub mod shield_plan;
 
 pub use bringup::{BringUpError, Fabric, FabricInfo};
 pub use capture::{CaptureConfig, CaptureConfigError, CaptureFaults, GroupingConfig};

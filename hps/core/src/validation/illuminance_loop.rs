@@ -275,11 +275,7 @@ fn perez_predictions(
     let n = patches.len();
     let mut out = Vec::new();
     for c in captures {
-        let row = table
-            .rows
-            .iter()
-            .filter(|r| (r.time - c.time).abs() <= window)
-            .min_by_key(|r| (r.time - c.time).abs());
+        let row = nearest_in_time(&table.rows, window, |r| r.time - c.time);
         let Some(row) = row else {
             out.push(None);
             outdoor.push(None);
@@ -380,14 +376,7 @@ pub fn run_loop(
         let measured: Vec<Option<f64>> = sensor_names
             .iter()
             .map(|name| {
-                campaign
-                    .luxmeters
-                    .iter()
-                    .filter(|r| {
-                        &r.sensor == name && (r.time - c.time).abs() <= options.match_window
-                    })
-                    .min_by_key(|r| (r.time - c.time).abs())
-                    .map(|r| r.illuminance_lux)
+                reading_at(campaign, name, c.time, options.match_window)
             })
             .collect();
         if measured.iter().any(Option::is_some) {
@@ -648,13 +637,7 @@ pub fn run_loop(
             s.direction.angle_between(c.spa_sun).to_degrees()
         });
         for (k, name) in sensor_names.iter().enumerate() {
-            let Some(m) = campaign
-                .luxmeters
-                .iter()
-                .filter(|r| &r.sensor == name && (r.time - c.time).abs() <= options.match_window)
-                .min_by_key(|r| (r.time - c.time).abs())
-                .map(|r| r.illuminance_lux)
-            else {
+            let Some(m) = reading_at(campaign, name, c.time, options.match_window) else {
                 continue;
             };
             let direct = t.sun_lux_per_dn_lux[k] * t.sun_dn_lux * state.glazing_transmittance;
@@ -686,12 +669,7 @@ pub fn run_loop(
     for (i, c) in captures.iter().enumerate() {
         let time = c.time.to_rfc3339();
         for (k, name) in sensor_names.iter().enumerate() {
-            let measured = campaign
-                .luxmeters
-                .iter()
-                .filter(|r| &r.sensor == name && (r.time - c.time).abs() <= options.match_window)
-                .min_by_key(|r| (r.time - c.time).abs())
-                .map(|r| r.illuminance_lux);
+            let measured = reading_at(campaign, name, c.time, options.match_window);
             let mut push = |model: &str, lux: f64| {
                 rows.push(IlluminanceRow {
                     time: time.clone(),
@@ -715,4 +693,32 @@ pub fn run_loop(
         state,
         device,
     })
+}
+
+/// The item whose time offset (item minus target) is smallest in magnitude and within
+/// `window`: the one rule by which readings are matched to capture times.
+fn nearest_in_time<'a, T>(
+    items: impl IntoIterator<Item = &'a T>,
+    window: TimeDelta,
+    offset: impl Fn(&T) -> TimeDelta,
+) -> Option<&'a T> {
+    items
+        .into_iter()
+        .filter(|r| offset(r).abs() <= window)
+        .min_by_key(|r| offset(r).abs())
+}
+
+/// The lux-meter `sensor`'s reading nearest to `time` within `window`.
+fn reading_at<Tz: chrono::TimeZone>(
+    campaign: &Campaign,
+    sensor: &str,
+    time: chrono::DateTime<Tz>,
+    window: TimeDelta,
+) -> Option<f64> {
+    nearest_in_time(
+        campaign.luxmeters.iter().filter(|r| r.sensor == sensor),
+        window,
+        |r| r.time.clone().signed_duration_since(time.clone()),
+    )
+    .map(|r| r.illuminance_lux)
 }
