@@ -160,3 +160,24 @@ fn a_full_fifo_skips_frames_and_drops_words_but_always_flags_them() {
         vec!["FRAME_SHORT", "FIFO_OVERFLOW"]
     );
 }
+
+#[test]
+fn a_line_that_starts_with_frame_valid_keeps_its_first_pixel() {
+    // No frame-start blanking: LV rises on FV's first PIXCLK (the sensor model's timing).
+    let mut b = Bench::new(8, 2);
+    for line in 0..2 {
+        for x in 0..8 {
+            b.cycle(true, true, (16 * line + x) as u64);
+        }
+        b.cycle(line == 0, false, 0);
+    }
+    b.idle(entry::END_MARKER_DELAY as usize + 4);
+    assert_eq!(b.entries.len(), 2);
+    assert!(
+        end_flags(b.entries[1]).is_empty(),
+        "{:?}",
+        end_flags(b.entries[1])
+    );
+    assert_eq!(counts(b.entries[1]), (8, 2));
+    assert_eq!(b.forwarded, 16);
+}
