@@ -119,6 +119,10 @@ fn the_whole_core_captures_a_five_exposure_sequence_bit_for_bit() {
     f.sensor_reset_release(true).unwrap();
     assert_eq!(f.sensor_configure(&sensor_window()).unwrap(), CHIP_VERSION);
 
+    // A black level and a valid range that flag some of the ramp's groups both ways.
+    b.capture.grouping.black_level_dn = 5;
+    b.capture.grouping.valid_min_dn = 20;
+    b.capture.grouping.valid_max_dn = 150;
     f.capture_configure(&b.capture).unwrap();
     f.set_exposures(&slots()).unwrap();
     f.configure_shield(&SHIELD).unwrap();
@@ -158,6 +162,9 @@ fn the_whole_core_captures_a_five_exposure_sequence_bit_for_bit() {
             },
             &BayerConfig {
                 phase: Phase::from_register(b.capture.grouping.phase),
+                black: 5,
+                valid_min: 20,
+                valid_max: 150,
                 ..BayerConfig::default()
             },
         );
@@ -166,6 +173,8 @@ fn the_whole_core_captures_a_five_exposure_sequence_bit_for_bit() {
             "frame {i}: payload differs from the golden model"
         );
     }
+    hdr_from_words_equals_hdr_from_samples(&frames, &rig.log.frames);
+
     // Nothing outside the DMA window, the shield closed and within its limit.
     let end = WINDOW_BASE + u64::from(b.capture.window_size_bytes);
     for a in &rig.frames.accesses {
@@ -198,4 +207,87 @@ fn a_ring_smaller_than_the_sequence_flags_nothing_and_keeps_the_newest() {
         .map(|c| c.descriptor.frame_number)
         .collect();
     assert_eq!(numbers, vec![3, 4, 2]);
+}
+
+/// The HDR merge of the fabric's grouped words equals the merge of the raw frames the sensor
+/// sent, when the device's black level, valid range and weights are the fabric's.
+fn hdr_from_words_equals_hdr_from_samples(
+    captured: &[CapturedFrame],
+    sent: &[skylux_hps::campaign::RawFrame],
+) {
+    use skylux_hps::camera::{CameraModel, DeviceConfig};
+    use skylux_hps::campaign::{BayerPattern, Readout};
+    use skylux_hps::hdr::{merge, Exposure, GroupGeometry, GroupedFrame, MapFlag};
+    let mut device = DeviceConfig::default();
+    device.sensor.black_level_dn = 5.0;
+    device.sensor.valid_min_dn = 20.0;
+    device.sensor.valid_max_dn = 150.0;
+    // The fabric's reset weights, 0x1000, 0x2000, 0x1000 in Q2.14.
+    device.response.weights = [0.25, 0.5, 0.25];
+    let camera = CameraModel::new(device.clone());
+    let readout = Readout {
+        col_start: 1288,
+        row_start: 968,
+        skip: 1,
+    };
+    let geometry = GroupGeometry::new(&camera, &readout, WIDTH as usize, HEIGHT as usize);
+    let exposure_s = |i: usize| 1e-3 * (1 << i) as f64;
+    let grouped: Vec<GroupedFrame> = captured
+        .iter()
+        .map(|c| GroupedFrame {
+            width: WIDTH as usize / 2,
+            height: HEIGHT as usize / 2,
+            words: c.words.clone(),
+        })
+        .collect();
+    let from_words = merge(
+        &grouped
+            .iter()
+            .enumerate()
+            .map(|(i, f)| Exposure {
+                frame: f,
+                exposure_s: exposure_s(i),
+                gain: 1.0,
+            })
+            .collect::<Vec<_>>(),
+        &device,
+        BayerPattern::GRBG,
+        &geometry,
+    )
+    .unwrap();
+    let from_samples = merge(
+        &sent
+            .iter()
+            .enumerate()
+            .map(|(i, f)| Exposure {
+                frame: f,
+                exposure_s: exposure_s(i),
+                gain: 1.0,
+            })
+            .collect::<Vec<_>>(),
+        &device,
+        BayerPattern::GRBG,
+        &geometry,
+    )
+    .unwrap();
+    assert_eq!(from_words.flags, from_samples.flags);
+    let valid = from_words
+        .flags
+        .iter()
+        .filter(|f| **f == MapFlag::Valid)
+        .count();
+    assert!(
+        valid > 0 && valid < from_words.flags.len(),
+        "the case must hold valid and flagged groups: {valid}"
+    );
+    for (i, (a, b)) in from_words
+        .luminance_cd_m2
+        .iter()
+        .zip(&from_samples.luminance_cd_m2)
+        .enumerate()
+    {
+        if from_words.flags[i] == MapFlag::Valid {
+            assert!(((a / b) - 1.0).abs() < 1e-5, "group {i}: {a} vs {b}");
+        }
+    }
 }

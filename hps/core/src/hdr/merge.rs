@@ -41,9 +41,109 @@ impl Samples for RawFrame {
     }
 }
 
+/// What a frame gives the merge per 2x2 group: raw samples (any [`Samples`]) or the fabric's
+/// grouped words ([`GroupedFrame`]).
+pub trait ExposureFrame: Sync {
+    /// Width and height in groups.
+    fn groups(&self) -> (usize, usize);
+    /// For group row `gy`: the black-subtracted weighted signal `Σ w X'` (DN) and whether a
+    /// sample was above `valid_max` or below `valid_min`.
+    fn group_row(
+        &self,
+        gy: usize,
+        p: &GroupParams,
+        signal: &mut [f64],
+        over: &mut [bool],
+        under: &mut [bool],
+    );
+}
+
+/// The per-sample constants of the group signal.
+pub struct GroupParams {
+    /// Weight of the sample at (dx, dy) of a 2x2 block, indexed [dy][dx].
+    pub weight_at: [[f64; 2]; 2],
+    pub black: f64,
+    pub valid_min: f64,
+    pub valid_max: f64,
+}
+
+impl<F: Samples> ExposureFrame for F {
+    fn groups(&self) -> (usize, usize) {
+        (self.width() / 2, self.height() / 2)
+    }
+
+    fn group_row(
+        &self,
+        gy: usize,
+        p: &GroupParams,
+        signal: &mut [f64],
+        over: &mut [bool],
+        under: &mut [bool],
+    ) {
+        let width = signal.len();
+        let [[w00, w10], [w01, w11]] = p.weight_at;
+        let top = &self.row(2 * gy)[..2 * width];
+        let bottom = &self.row(2 * gy + 1)[..2 * width];
+        for (gx, (t, b)) in top.chunks_exact(2).zip(bottom.chunks_exact(2)).enumerate() {
+            let (a, bb, c, d): (f64, f64, f64, f64) =
+                (t[0].into(), t[1].into(), b[0].into(), b[1].into());
+            let lo = a.min(bb).min(c.min(d));
+            let hi = a.max(bb).max(c.max(d));
+            signal[gx] = w00 * (a - p.black)
+                + w10 * (bb - p.black)
+                + w01 * (c - p.black)
+                + w11 * (d - p.black);
+            over[gx] = hi > p.valid_max;
+            under[gx] = lo < p.valid_min;
+        }
+    }
+}
+
+/// A frame as the fabric's DMA wrote it in grouped mode: one word per 2x2 group
+/// (`skylux_regmap::words::grouped`: the weighted, black-subtracted luminance in Q16.14 and the
+/// over/under flags), row pairs top to bottom. The fabric's `bayer.*` registers must hold the
+/// device's black level, valid range and weights (to Q2.14): the merge takes the signal as
+/// the fabric computed it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct GroupedFrame {
+    /// Groups per row and rows of groups.
+    pub width: usize,
+    pub height: usize,
+    pub words: Vec<u32>,
+}
+
+impl ExposureFrame for GroupedFrame {
+    fn groups(&self) -> (usize, usize) {
+        if self.words.len() == self.width * self.height {
+            (self.width, self.height)
+        } else {
+            // A payload of the wrong length fits no geometry: the size check refuses it.
+            (0, 0)
+        }
+    }
+
+    fn group_row(
+        &self,
+        gy: usize,
+        _p: &GroupParams,
+        signal: &mut [f64],
+        over: &mut [bool],
+        under: &mut [bool],
+    ) {
+        use skylux_regmap::words::grouped;
+        let width = signal.len();
+        let row = &self.words[gy * self.width..gy * self.width + width];
+        for (gx, &w) in row.iter().enumerate() {
+            signal[gx] = grouped::luma(w);
+            over[gx] = grouped::over(w);
+            under[gx] = grouped::under(w);
+        }
+    }
+}
+
 /// One exposure of an HDR set.
 #[derive(Copy, Clone, Debug)]
-pub struct Exposure<'a, F: Samples = RawFrame> {
+pub struct Exposure<'a, F: ExposureFrame = RawFrame> {
     pub frame: &'a F,
     /// Integration time, seconds.
     pub exposure_s: f64,
@@ -80,7 +180,7 @@ pub struct LuminanceMap {
 pub enum HdrError {
     #[error("no exposures to merge")]
     Empty,
-    #[error("exposure {index}: frame is {width}x{height} samples, the set's geometry needs {expected_width}x{expected_height}")]
+    #[error("exposure {index}: frame is {width}x{height} samples (or a grouped payload that is not whole rows), the set's geometry needs {expected_width}x{expected_height}")]
     FrameSize {
         index: usize,
         width: usize,
@@ -97,7 +197,7 @@ pub enum HdrError {
 }
 
 /// Merges raw exposures into a luminance map.
-pub fn merge<F: Samples>(
+pub fn merge<F: ExposureFrame>(
     exposures: &[Exposure<F>],
     device: &DeviceConfig,
     pattern: BayerPattern,
@@ -107,11 +207,12 @@ pub fn merge<F: Samples>(
         return Err(HdrError::Empty);
     }
     for (index, e) in exposures.iter().enumerate() {
-        if e.frame.width() != 2 * geometry.width || e.frame.height() != 2 * geometry.height {
+        let (gw, gh) = e.frame.groups();
+        if (gw, gh) != (geometry.width, geometry.height) {
             return Err(HdrError::FrameSize {
                 index,
-                width: e.frame.width(),
-                height: e.frame.height(),
+                width: 2 * gw,
+                height: 2 * gh,
                 expected_width: 2 * geometry.width,
                 expected_height: 2 * geometry.height,
             });
@@ -188,19 +289,16 @@ struct Merger {
     shot_var_per_rate: Vec<f64>,
     /// Index of the exposure with the smallest t g.
     shortest: usize,
-    /// Weight of the sample at (dx, dy) of a 2x2 block, indexed [dy][dx]: w_r, w_g/2 (twice)
-    /// and w_b placed by the Bayer phase.
-    weight_at: [[f64; 2]; 2],
+    /// The sample weights (w_r, w_g/2 twice and w_b placed by the Bayer phase), black level
+    /// and valid range.
+    params: GroupParams,
     /// q (read noise² + 1/12): the variance floor of a group's signal.
     floor_var: f64,
-    black: f64,
-    valid_min: f64,
-    valid_max: f64,
     cg: f64,
 }
 
 impl Merger {
-    fn new<F: Samples>(
+    fn new<F: ExposureFrame>(
         exposures: &[Exposure<F>],
         device: &DeviceConfig,
         pattern: BayerPattern,
@@ -226,18 +324,20 @@ impl Merger {
                 .collect(),
             tg,
             shortest,
-            weight_at,
+            params: GroupParams {
+                weight_at,
+                black: device.sensor.black_level_dn,
+                valid_min: device.sensor.valid_min_dn,
+                valid_max: device.sensor.valid_max_dn,
+            },
             floor_var: q * (device.noise.read_noise_dn.powi(2) + 1.0 / 12.0),
-            black: device.sensor.black_level_dn,
-            valid_min: device.sensor.valid_min_dn,
-            valid_max: device.sensor.valid_max_dn,
             cg: device.response.cg,
         }
     }
 
-    /// Merges group row `gy`: a first pass per exposure over the row's sample pairs (contiguous,
-    /// free of bounds checks, so it vectorises), then a pass per group.
-    fn row<F: Samples>(
+    /// Merges group row `gy`: a first pass per exposure over the row's groups (the frame's
+    /// samples or the fabric's words), then a pass per group.
+    fn row<F: ExposureFrame>(
         &self,
         exposures: &[Exposure<F>],
         gy: usize,
@@ -246,28 +346,17 @@ impl Merger {
     ) -> (Vec<f32>, Vec<MapFlag>, Vec<f32>) {
         let width = inverse_vignetting.len();
         let n = exposures.len();
-        let [[w00, w10], [w01, w11]] = self.weight_at;
         for (k, e) in exposures.iter().enumerate() {
-            let top = &e.frame.row(2 * gy)[..2 * width];
-            let bottom = &e.frame.row(2 * gy + 1)[..2 * width];
             let range = k * width..(k + 1) * width;
-            let (signal, valid) = (
+            e.frame.group_row(
+                gy,
+                &self.params,
                 &mut scratch.signal[range.clone()],
-                &mut scratch.valid[range.clone()],
+                &mut scratch.over[range.clone()],
+                &mut scratch.under[range.clone()],
             );
-            let (over, under) = (&mut scratch.over[range.clone()], &mut scratch.under[range]);
-            for (gx, (t, b)) in top.chunks_exact(2).zip(bottom.chunks_exact(2)).enumerate() {
-                let (a, bb, c, d): (f64, f64, f64, f64) =
-                    (t[0].into(), t[1].into(), b[0].into(), b[1].into());
-                let lo = a.min(bb).min(c.min(d));
-                let hi = a.max(bb).max(c.max(d));
-                signal[gx] = w00 * (a - self.black)
-                    + w10 * (bb - self.black)
-                    + w01 * (c - self.black)
-                    + w11 * (d - self.black);
-                over[gx] = hi > self.valid_max;
-                under[gx] = lo < self.valid_min;
-                valid[gx] = !(over[gx] || under[gx]);
+            for i in range {
+                scratch.valid[i] = !(scratch.over[i] || scratch.under[i]);
             }
         }
         let mut luminance = Vec::with_capacity(width);

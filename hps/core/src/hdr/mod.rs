@@ -12,7 +12,10 @@ pub use capture::{map_capture, CaptureMap, CaptureMapError};
 pub use exr_file::{read_exr, write_exr, MapFileError, DEVICE_ATTRIBUTE, READOUT_ATTRIBUTE};
 pub use geometry::GroupGeometry;
 pub use lookup::SkyLookup;
-pub use merge::{merge, Exposure, HdrError, LuminanceMap, MapFlag, Samples};
+pub use merge::{
+    merge, Exposure, ExposureFrame, GroupParams, GroupedFrame, HdrError, LuminanceMap, MapFlag,
+    Samples,
+};
 pub use radiance_sky::{
     picture_direction, sky_description, write_radiance_sky, CAL_FILE, WHITE_EFFICACY_LM_W,
 };
