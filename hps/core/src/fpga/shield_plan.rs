@@ -64,9 +64,8 @@ pub fn plan_openings(
     cost: &OpeningCost,
 ) -> Result<Vec<std::ops::Range<usize>>, ShieldPlanError> {
     let ok = |v: f64| v.is_finite() && v >= 0.0;
-    if !(ok(cost.motion_us) && ok(cost.readout_us) && ok(cost.per_frame_us))
-        || !(cost.limit_us.is_finite() && cost.limit_us > 0.0)
-    {
+    let costs_ok = ok(cost.motion_us) && ok(cost.readout_us) && ok(cost.per_frame_us);
+    if !costs_ok || !cost.limit_us.is_finite() || cost.limit_us <= 0.0 {
         return Err(ShieldPlanError::BadCost);
     }
     let mut runs = Vec::new();

@@ -375,9 +375,7 @@ pub fn run_loop(
     for (i, c) in captures.iter().enumerate() {
         let measured: Vec<Option<f64>> = sensor_names
             .iter()
-            .map(|name| {
-                reading_at(campaign, name, c.time, options.match_window)
-            })
+            .map(|name| reading_at(campaign, name, c.time, options.match_window))
             .collect();
         if measured.iter().any(Option::is_some) {
             samples.push(Sample {
@@ -718,7 +716,7 @@ fn reading_at<Tz: chrono::TimeZone>(
     nearest_in_time(
         campaign.luxmeters.iter().filter(|r| r.sensor == sensor),
         window,
-        |r| r.time.clone().signed_duration_since(time.clone()),
+        |r| r.time.signed_duration_since(time.clone()),
     )
     .map(|r| r.illuminance_lux)
 }
