@@ -12,6 +12,7 @@ mod loop_cmd;
 mod regs;
 mod sim_cmd;
 mod solpos;
+mod sun_cmd;
 
 use clap::{Parser, Subcommand};
 
@@ -55,6 +56,9 @@ enum Command {
     Regs(regs::RegsArgs),
     /// Prints the sun's zenith and azimuth (NREL SPA) for one time and place, as CSV.
     Solpos(solpos::SolposArgs),
+    /// Tracks the sun in every capture of a campaign against SPA (sun.csv, sun.png); fits
+    /// the camera's orientation and principal point from the sightings.
+    Sun(sun_cmd::SunArgs),
 }
 
 fn main() -> anyhow::Result<()> {
@@ -69,5 +73,6 @@ fn main() -> anyhow::Result<()> {
         Command::Sim(args) => sim_cmd::run(&args),
         Command::Regs(args) => regs::run(&args),
         Command::Solpos(args) => solpos::run(&args),
+        Command::Sun(args) => sun_cmd::run(&args),
     }
 }

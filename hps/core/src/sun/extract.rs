@@ -46,7 +46,8 @@ pub enum SunFlag {
     /// Part of the disk is over-range even in the shortest exposure: its luminance is unknown
     /// (use the pyranometer's DNI if the campaign has one).
     Saturated,
-    /// The disk is smaller than a full sun at half its peak: partly covered by cloud.
+    /// The disk's flux is under 0.6 of a whole disk at its peak luminance: partly covered by
+    /// cloud (its centroid and luminance are then not the sun's).
     PartlyCovered,
     /// Other bright components exist (reflections, a second source); the one nearest the
     /// prediction was taken.
@@ -243,18 +244,12 @@ pub fn extract_sun(
     if saturated {
         flags.push(SunFlag::Saturated);
     } else {
-        // Solid angle of the groups above half the peak: a whole (blurred) disk keeps about
-        // its own solid angle; a partly covered one loses a large share of it.
-        let half: f64 = groups
-            .iter()
-            .filter(|&&i| {
-                seen(i)
-                    && map.flags[i] == MapFlag::Valid
-                    && map.luminance_cd_m2[i] as f64 - background_cd_m2 >= 0.5 * peak
-            })
-            .map(|&i| geometry.solid_angle_sr[i] as f64)
-            .sum();
-        if half < 0.6 * SOLAR_DISK_SR {
+        // A whole disk's flux over its peak excess luminance is at least the disk's solid
+        // angle, however coarse the groups (no group averages more than the disk's own
+        // luminance, and blur only lowers the peak); a disk partly behind a cloud keeps its
+        // peak and loses flux. (Counting the groups above half the peak instead fails when a
+        // group is about as large as the disk, as at skip 4.)
+        if peak > 0.0 && flux / peak < 0.6 * SOLAR_DISK_SR {
             flags.push(SunFlag::PartlyCovered);
         }
     }

@@ -6,6 +6,8 @@ pub mod extract;
 mod michalsky;
 pub mod orientation;
 pub mod position;
+pub mod principal_point;
+pub mod tracking;
 
 pub use delta_t::{delta_t_s, DELTA_T_YEARS};
 pub use extract::{
@@ -17,6 +19,7 @@ pub use position::{
     angle_between_deg, parse_time_utc, refraction_deg, solar_position, solar_position_with_delta_t,
     sun_direction, Atmosphere, Site, SolarPosition, REFRACTION_CUTOFF_ELEVATION_DEG,
 };
+pub use principal_point::{fit_orientation_and_principal_point, CameraFit, CameraFitError};
 
 use chrono::{DateTime, Utc};
 

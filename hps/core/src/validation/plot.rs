@@ -406,6 +406,132 @@ pub fn grouped_bars_png(
     })
 }
 
+/// One panel of [`panels_png`]: a y axis shared by reference lines and measured points.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Panel {
+    pub y_label: String,
+    /// Drawn as lines (a line breaks at a skipped point, e.g. a NaN).
+    pub lines: Vec<Series>,
+    /// Drawn as points.
+    pub points: Vec<Series>,
+}
+
+/// Panels stacked vertically over one x axis (e.g. quantities of a day against time), in one
+/// PNG: `frame` gives the title (on the first panel), the x label (on every panel) and the
+/// size of the whole figure. Colours follow the series' order across lines then points, so
+/// a measured series can take the colour of its reference by position.
+pub fn panels_png(path: &Path, frame: &Frame, panels: &[Panel]) -> Result<PlotOutcome, PlotError> {
+    let (w, h) = (frame.width_px, frame.height_px);
+    if !((64..=8192).contains(&w) && (64..=8192).contains(&h)) {
+        return Err(PlotError::Size {
+            path: path.into(),
+            width_px: w,
+            height_px: h,
+        });
+    }
+    if panels.is_empty() {
+        return Err(PlotError::Draw {
+            path: path.into(),
+            message: "no panel to draw".into(),
+        });
+    }
+    let text = frame.text == Text::Auto && system_font();
+    let all: Vec<Series> = panels
+        .iter()
+        .flat_map(|p| p.lines.iter().chain(&p.points).cloned())
+        .collect();
+    let (drawn, skipped) = count(&all);
+    let (x, _) = xy_ranges(&all);
+    let fail = |message: String| PlotError::Draw {
+        path: path.into(),
+        message,
+    };
+    let root = BitMapBackend::new(path, (w, h)).into_drawing_area();
+    let result = (|| -> Result<(), String> {
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let areas = root.split_evenly((panels.len(), 1));
+        for (k, (panel, area)) in panels.iter().zip(&areas).enumerate() {
+            let series: Vec<Series> = panel.lines.iter().chain(&panel.points).cloned().collect();
+            let (_, y) = xy_ranges(&series);
+            let panel_frame = Frame {
+                title: if k == 0 {
+                    frame.title.clone()
+                } else {
+                    String::new()
+                },
+                x_label: frame.x_label.clone(),
+                y_label: panel.y_label.clone(),
+                ..frame.clone()
+            };
+            let mut chart = build(area, &panel_frame, x, y, text)?;
+            for (i, s) in panel.lines.iter().enumerate() {
+                let c = colour(i);
+                let mut segments: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+                for &(px, py) in &s.points {
+                    if plottable(px) && plottable(py) {
+                        if let Some(seg) = segments.last_mut() {
+                            seg.push((px, py));
+                        }
+                    } else if segments.last().is_some_and(|seg| !seg.is_empty()) {
+                        segments.push(Vec::new());
+                    }
+                }
+                for (j, seg) in segments.into_iter().filter(|s| !s.is_empty()).enumerate() {
+                    // A lone point (a line broken on both sides) is drawn as a short mark.
+                    let d = if seg.len() == 1 {
+                        chart
+                            .draw_series(
+                                seg.into_iter()
+                                    .map(move |p| Cross::new(p, 5, c.stroke_width(2))),
+                            )
+                            .map_err(|e| e.to_string())?
+                    } else {
+                        chart
+                            .draw_series(LineSeries::new(seg, c.stroke_width(2)))
+                            .map_err(|e| e.to_string())?
+                    };
+                    if text && j == 0 {
+                        d.label(s.label.as_str()).legend(move |(x, y)| {
+                            PathElement::new(vec![(x, y), (x + 16, y)], c.stroke_width(2))
+                        });
+                    }
+                }
+            }
+            for (i, s) in panel.points.iter().enumerate() {
+                let c = colour(panel.lines.len() + i);
+                let points = s
+                    .points
+                    .iter()
+                    .copied()
+                    .filter(|(x, y)| plottable(*x) && plottable(*y));
+                let d = chart
+                    .draw_series(points.map(move |p| Circle::new(p, 3, c.mix(0.8).filled())))
+                    .map_err(|e| e.to_string())?;
+                if text {
+                    d.label(s.label.as_str())
+                        .legend(move |(x, y)| Circle::new((x + 8, y), 4, c.filled()));
+                }
+            }
+            if text {
+                chart
+                    .configure_series_labels()
+                    .label_font((FAMILY, 13))
+                    .background_style(WHITE.mix(0.85))
+                    .border_style(BLACK)
+                    .draw()
+                    .map_err(|e| e.to_string())?;
+            }
+        }
+        root.present().map_err(|e| e.to_string())
+    })();
+    result.map_err(fail)?;
+    Ok(PlotOutcome {
+        text,
+        drawn,
+        skipped,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

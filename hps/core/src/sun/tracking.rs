@@ -1,0 +1,892 @@
+//! Sun tracking over a campaign (`skylux sun`): per capture, the HDR map (the shared
+//! [`map_capture`] path), the sun extracted from it as the loop extracts it, its measured
+//! altitude and azimuth next to SPA's, its disk luminance and direct-normal illuminance, and
+//! where the disk is saturated even in the shortest exposure, the pyranometer's DNI instead.
+//! From the sightings, the camera's orientation (and optionally its principal point), the
+//! residual in degrees, and the `device.toml` that follows.
+//!
+//! The pyranometer's W/m² become lux through the Perez et al. (1990) direct luminous efficacy
+//! for the pyranometer's own irradiances, as gendaylit converts them
+//! ([`crate::sky::perez::PerezSky::direct_normal_illuminance_lux`]), the conversion the loop's
+//! Perez baseline and the simulated world use.
+
+use super::extract::{extract_sun, NoSun, SunFlag, SunSearch, SOLAR_DISK_SR};
+use super::orientation::{fit_orientation, OrientationError, SunObservation};
+use super::position::{angle_between_deg, solar_position, Atmosphere, Site};
+use super::principal_point::{fit_orientation_and_principal_point, CameraFitError};
+use crate::camera::{alt_az_from_direction, CameraModel, DeviceConfig, ImagePoint};
+use crate::campaign::{Campaign, CaptureEntry};
+use crate::hdr::{map_capture, CaptureMapError};
+use crate::io::irradiance::PyranometerTable;
+use crate::sky::perez::{PerezConditions, PerezInput, PerezSky};
+use crate::validation::plot::{panels_png, Frame, Panel, PlotError, Series};
+use crate::validation::report::{write_atomic, ReportError};
+use chrono::{DateTime, Datelike, FixedOffset, TimeDelta, Timelike, Utc};
+use glam::DVec3;
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+
+/// How the sun is looked for and referenced.
+#[derive(Clone, Debug)]
+pub struct TrackingOptions {
+    /// Groups at or above this luminance are sun candidates, cd/m².
+    pub threshold_cd_m2: f64,
+    /// A bright component farther than this from SPA's sun is not the sun, degrees. 12°, as
+    /// the loop searches: an orientation error of several degrees must not hide the sun.
+    pub max_offset_deg: f64,
+    /// A pyranometer row matches a capture within this time (the loop's Perez baseline uses
+    /// 5 minutes).
+    pub pyranometer_window: TimeDelta,
+    /// Compare with the apparent sun (SPA with refraction for the standard atmosphere at the
+    /// site's elevation, pvlib's 12 °C) instead of the geometric one. Field data needs it
+    /// (refraction lifts the sun by 0.1° at 10° altitude); the simulator renders the
+    /// geometric sun, as the loop assumes.
+    pub refraction: bool,
+}
+
+impl Default for TrackingOptions {
+    fn default() -> Self {
+        Self {
+            threshold_cd_m2: 5e8,
+            max_offset_deg: 12.0,
+            pyranometer_window: TimeDelta::minutes(5),
+            refraction: false,
+        }
+    }
+}
+
+/// SPA's sun farther than this from every imaged group is out of view, degrees: the disk's
+/// radius (0.27°) plus the diagonal of a group at skip 8 (16 px at f = 1136 px: 0.8°).
+const OUT_OF_VIEW_DEG: f64 = 1.1;
+
+/// Where a capture's direct-normal illuminance comes from.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum DniSource {
+    /// Measured on the map: the disk's flux above the circumsolar background.
+    Map,
+    /// The disk is saturated even in the shortest exposure: the pyranometer's DNI.
+    Pyranometer,
+    /// Neither.
+    None,
+}
+
+impl DniSource {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Self::Map => "map",
+            Self::Pyranometer => "pyranometer",
+            Self::None => "none",
+        }
+    }
+}
+
+/// The pyranometer at a capture's time, in lux.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PyranometerDni {
+    /// Direct normal irradiance (measured, or derived from GHI and DHI), W/m².
+    pub dni_w_m2: f64,
+    /// The same as illuminance through the Perez 1990 direct efficacy, lux.
+    pub dni_lux: f64,
+    /// Difference between the row's stamp and the capture's, seconds.
+    pub offset_s: f64,
+}
+
+/// One capture's sun.
+#[derive(Clone, Debug)]
+pub struct SunTrack {
+    pub time: DateTime<FixedOffset>,
+    pub capture_dir: PathBuf,
+    /// SPA's sun (geometric or apparent, as [`TrackingOptions::refraction`] says).
+    pub spa_direction: DVec3,
+    /// The extracted sun through the camera model it was extracted with.
+    pub measured_direction: Option<DVec3>,
+    /// Where the extracted sun is on the image (full-array pixels).
+    pub image_point: Option<ImagePoint>,
+    /// Mean luminance over the disk, cd/m² (from the map, or from the pyranometer's DNI).
+    pub disk_luminance_cd_m2: Option<f64>,
+    /// Direct-normal illuminance, lux (from the map, or from the pyranometer's DNI).
+    pub dni_lux: Option<f64>,
+    pub dni_source: DniSource,
+    /// The pyranometer at this time, if the campaign has a matching row.
+    pub pyranometer: Option<PyranometerDni>,
+    /// The extraction's flags.
+    pub flags: Vec<SunFlag>,
+    /// Why there is no sun, a short machine-readable tag (e.g. `below_threshold`).
+    pub no_sun: Option<&'static str>,
+    /// What the caller must know, in words (the no-sun reason, a failed fallback).
+    pub note: Option<String>,
+}
+
+impl SunTrack {
+    /// Angle between the measured and SPA's sun, degrees.
+    pub fn error_deg(&self) -> Option<f64> {
+        self.measured_direction
+            .map(|m| angle_between_deg(m, self.spa_direction))
+    }
+
+    /// Whether this sighting may enter an orientation fit: a sun was found on the image and
+    /// not flagged as partly covered (a cloud shifts its centroid).
+    pub fn usable_for_fit(&self) -> bool {
+        self.image_point.is_some() && !self.flags.contains(&SunFlag::PartlyCovered)
+    }
+
+    /// The reference disk luminance from the pyranometer, cd/m².
+    pub fn reference_luminance_cd_m2(&self) -> Option<f64> {
+        self.pyranometer.as_ref().map(|p| p.dni_lux / SOLAR_DISK_SR)
+    }
+}
+
+/// Name of a flag in `sun.csv`.
+pub fn flag_name(flag: SunFlag) -> &'static str {
+    match flag {
+        SunFlag::Saturated => "saturated",
+        SunFlag::PartlyCovered => "partly_covered",
+        SunFlag::OtherCandidates => "other_candidates",
+    }
+}
+
+fn no_sun_tag(reason: &NoSun) -> &'static str {
+    match reason {
+        NoSun::BelowThreshold { .. } => "below_threshold",
+        NoSun::OutsideFieldOfView => "outside_field_of_view",
+        NoSun::FarFromPrediction { .. } => "far_from_prediction",
+        NoSun::AllSaturated => "all_saturated",
+    }
+}
+
+/// Why tracking could not run. Every variant names the file or folder.
+#[derive(Debug, thiserror::Error)]
+pub enum TrackingError {
+    #[error(transparent)]
+    Capture(#[from] CaptureMapError),
+    #[error("{path}: {message}")]
+    Sun { path: PathBuf, message: String },
+    #[error(transparent)]
+    Write(#[from] ReportError),
+    #[error(transparent)]
+    Plot(#[from] PlotError),
+}
+
+/// The site of a campaign, for SPA.
+pub fn campaign_site(campaign: &Campaign) -> Site {
+    Site {
+        latitude_deg: campaign.config.site.latitude_deg,
+        longitude_deg: campaign.config.site.longitude_deg,
+        elevation_m: campaign.config.site.elevation_m,
+    }
+}
+
+/// The pyranometer's DNI at `time` (nearest row within `window`), in W/m² and in lux.
+/// `None` without a matching row, or where neither DNI nor GHI and DHI are given, or where
+/// the sun is below the horizon.
+pub fn pyranometer_dni(
+    table: &PyranometerTable,
+    time: DateTime<FixedOffset>,
+    sun: DVec3,
+    window: TimeDelta,
+) -> Option<PyranometerDni> {
+    let row = table
+        .rows
+        .iter()
+        .filter(|r| (r.time - time).abs() <= window)
+        .min_by_key(|r| (r.time - time).abs())?;
+    if sun.z <= 0.0 {
+        return None;
+    }
+    // DHI where only GHI and DNI are given: GHI = DNI sin h + DHI (campaign.md).
+    let dhi = row
+        .dhi_wm2
+        .or_else(|| Some(row.ghi_wm2? - row.dni_wm2? * sun.z));
+    let input = match (row.dni_wm2, dhi, row.ghi_wm2) {
+        (Some(dni), Some(dhi), _) => PerezInput::DirectNormalDiffuse {
+            direct_normal_w_m2: dni,
+            diffuse_horizontal_w_m2: dhi.max(0.0),
+        },
+        (None, Some(dhi), Some(ghi)) => PerezInput::GlobalDiffuse {
+            global_horizontal_w_m2: ghi,
+            diffuse_horizontal_w_m2: dhi,
+        },
+        _ => return None,
+    };
+    let conditions = PerezConditions {
+        day_of_year: time.ordinal() as u16,
+        ..PerezConditions::gendaylit_ang(sun)
+    };
+    let sky = PerezSky::new(input, &conditions).ok()?;
+    let dni_w_m2 = sky.direct_normal_irradiance_w_m2();
+    let dni_lux = sky.direct_normal_illuminance_lux();
+    (dni_w_m2.is_finite() && dni_lux.is_finite()).then(|| PyranometerDni {
+        dni_w_m2,
+        dni_lux,
+        offset_s: (row.time - time).num_milliseconds() as f64 / 1000.0,
+    })
+}
+
+/// SPA's sun for a capture time: geometric, or apparent for the standard atmosphere.
+fn spa_sun(
+    time: DateTime<FixedOffset>,
+    site: &Site,
+    refraction: bool,
+) -> Result<DVec3, super::SunError> {
+    let atmosphere = refraction.then(|| Atmosphere::standard_at(site.elevation_m));
+    Ok(solar_position(time.with_timezone(&Utc), site, atmosphere.as_ref())?.direction())
+}
+
+/// Tracks the sun in one capture with the camera `device`.
+pub fn track_capture(
+    entry: &CaptureEntry,
+    device: &DeviceConfig,
+    site: &Site,
+    pyranometer: Option<&PyranometerTable>,
+    options: &TrackingOptions,
+) -> Result<SunTrack, TrackingError> {
+    let spa = spa_sun(entry.time, site, options.refraction).map_err(|e| TrackingError::Sun {
+        path: entry.dir.join("capture.toml"),
+        message: e.to_string(),
+    })?;
+    let reference =
+        pyranometer.and_then(|t| pyranometer_dni(t, entry.time, spa, options.pyranometer_window));
+    let mut track = SunTrack {
+        time: entry.time,
+        capture_dir: entry.dir.clone(),
+        spa_direction: spa,
+        measured_direction: None,
+        image_point: None,
+        disk_luminance_cd_m2: None,
+        dni_lux: None,
+        dni_source: DniSource::None,
+        pyranometer: reference,
+        flags: vec![],
+        no_sun: None,
+        note: None,
+    };
+    if spa.z <= 0.0 {
+        track.no_sun = Some("below_horizon");
+        track.note = Some("the sun is below the horizon".into());
+        return Ok(track);
+    }
+    let merged = map_capture(&entry.dir, device)?;
+    let search = SunSearch {
+        threshold_cd_m2: options.threshold_cd_m2,
+        predicted_direction: Some(spa),
+        max_offset_deg: options.max_offset_deg,
+        ..Default::default()
+    };
+    let sun = match extract_sun(&merged.map, &merged.geometry, &search) {
+        Ok(sun) => sun,
+        Err(reason) => {
+            track.no_sun = Some(no_sun_tag(&reason));
+            track.note = Some(reason.to_string());
+            // Nothing bright, and SPA's sun is off the imaged field: it is out of view, not
+            // hidden (the extraction only knows there is no imaged group near it when none is
+            // within its search radius).
+            if matches!(reason, NoSun::BelowThreshold { .. }) {
+                let cos_nearest = merged
+                    .geometry
+                    .direction
+                    .iter()
+                    .filter(|d| d.is_finite())
+                    .map(|d| d.as_dvec3().dot(spa))
+                    .fold(-1.0f64, f64::max);
+                let nearest_deg = cos_nearest.clamp(-1.0, 1.0).acos().to_degrees();
+                if nearest_deg > OUT_OF_VIEW_DEG {
+                    track.no_sun = Some("outside_field_of_view");
+                    track.note = Some(format!(
+                        "{reason}; SPA's sun is {nearest_deg:.1} deg from the nearest imaged \
+                         group (declared camera): outside the field of view"
+                    ));
+                }
+            }
+            return Ok(track);
+        }
+    };
+    let camera = CameraModel::new(device.clone());
+    track.measured_direction = Some(sun.direction);
+    track.image_point = camera.project(sun.direction);
+    track.flags = sun.flags.clone();
+    if sun.flags.contains(&SunFlag::Saturated) {
+        match &track.pyranometer {
+            Some(p) if p.dni_lux > 0.0 => {
+                track.dni_lux = Some(p.dni_lux);
+                track.disk_luminance_cd_m2 = Some(p.dni_lux / SOLAR_DISK_SR);
+                track.dni_source = DniSource::Pyranometer;
+            }
+            Some(p) => {
+                track.note = Some(format!(
+                    "the disk is saturated but the pyranometer's DNI is {:.1} W/m2: no DNI",
+                    p.dni_w_m2
+                ));
+            }
+            None => {
+                track.note = Some(
+                    "the disk is saturated even in the shortest exposure and no pyranometer \
+                     DNI matches this time: no DNI"
+                        .into(),
+                );
+            }
+        }
+    } else if sun.direct_normal_illuminance_lux.is_finite() {
+        track.dni_lux = Some(sun.direct_normal_illuminance_lux);
+        track.disk_luminance_cd_m2 = Some(sun.disk_luminance_cd_m2);
+        track.dni_source = DniSource::Map;
+    }
+    Ok(track)
+}
+
+/// Tracks the sun in every capture of the campaign; `progress(done, total)`.
+pub fn track_campaign(
+    campaign: &Campaign,
+    device: &DeviceConfig,
+    options: &TrackingOptions,
+    progress: &dyn Fn(usize, usize),
+) -> Result<Vec<SunTrack>, TrackingError> {
+    let site = campaign_site(campaign);
+    let n = campaign.captures.len();
+    let mut out = Vec::with_capacity(n);
+    for (i, entry) in campaign.captures.iter().enumerate() {
+        progress(i, n);
+        out.push(track_capture(
+            entry,
+            device,
+            &site,
+            campaign.pyranometer.as_ref(),
+            options,
+        )?);
+    }
+    progress(n, n);
+    Ok(out)
+}
+
+/// Figures of a tracking run.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct TrackingSummary {
+    pub captures: usize,
+    /// Captures with a sun found on the map.
+    pub suns: usize,
+    pub saturated: usize,
+    pub partly_covered: usize,
+    /// Captures whose DNI came from the pyranometer.
+    pub dni_from_pyranometer: usize,
+    /// Angle between measured and SPA sun over the suns found, degrees.
+    pub direction_rms_deg: Option<f64>,
+    pub direction_max_deg: Option<f64>,
+    /// Relative RMSE of the map's disk luminance against the pyranometer's (where both
+    /// exist), and over how many captures.
+    pub luminance_rel_rmse: Option<f64>,
+    pub luminance_compared: usize,
+}
+
+fn rms(values: &[f64]) -> Option<f64> {
+    (!values.is_empty())
+        .then(|| (values.iter().map(|v| v * v).sum::<f64>() / values.len() as f64).sqrt())
+}
+
+/// Counts and error figures of `tracks`; `directions` overrides the measured directions
+/// (e.g. through a fitted camera), index by index.
+pub fn summarise(tracks: &[SunTrack], directions: Option<&[Option<DVec3>]>) -> TrackingSummary {
+    let errors: Vec<f64> = tracks
+        .iter()
+        .enumerate()
+        .filter_map(|(i, t)| {
+            let m = match directions {
+                Some(d) => d.get(i).copied().flatten(),
+                None => t.measured_direction,
+            }?;
+            Some(angle_between_deg(m, t.spa_direction))
+        })
+        .collect();
+    let rel: Vec<f64> = tracks
+        .iter()
+        .filter(|t| t.dni_source == DniSource::Map)
+        .filter_map(|t| {
+            let reference = t.reference_luminance_cd_m2().filter(|r| *r > 0.0)?;
+            Some(t.disk_luminance_cd_m2? / reference - 1.0)
+        })
+        .collect();
+    TrackingSummary {
+        captures: tracks.len(),
+        suns: tracks
+            .iter()
+            .filter(|t| t.measured_direction.is_some())
+            .count(),
+        saturated: tracks
+            .iter()
+            .filter(|t| t.flags.contains(&SunFlag::Saturated))
+            .count(),
+        partly_covered: tracks
+            .iter()
+            .filter(|t| t.flags.contains(&SunFlag::PartlyCovered))
+            .count(),
+        dni_from_pyranometer: tracks
+            .iter()
+            .filter(|t| t.dni_source == DniSource::Pyranometer)
+            .count(),
+        direction_rms_deg: rms(&errors),
+        direction_max_deg: (!errors.is_empty()).then(|| errors.iter().cloned().fold(0.0, f64::max)),
+        luminance_rel_rmse: rms(&rel),
+        luminance_compared: rel.len(),
+    }
+}
+
+/// What to fit from the sightings.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum FitTarget {
+    Orientation,
+    OrientationAndPrincipalPoint,
+}
+
+/// Why no camera fit could be made.
+#[derive(Debug, thiserror::Error)]
+pub enum FitError {
+    #[error("{usable} usable sun sightings among {captures} captures (a sun found and not partly covered): at least {needed} are needed")]
+    TooFewSightings {
+        usable: usize,
+        captures: usize,
+        needed: usize,
+    },
+    #[error(transparent)]
+    Orientation(#[from] OrientationError),
+    #[error(transparent)]
+    Camera(#[from] CameraFitError),
+}
+
+/// A camera fitted to a campaign's sun sightings.
+#[derive(Clone, Debug)]
+pub struct SunFit {
+    /// The declared camera with the fitted orientation (and principal point).
+    pub device: DeviceConfig,
+    pub target: FitTarget,
+    /// Indices (into the tracks) of the sightings the fit used: those not partly covered,
+    /// and of those the unsaturated ones if there are enough (see [`fit_camera`]).
+    pub used: Vec<usize>,
+    /// Indices of sightings dropped as outliers (e.g. a reflection taken for the sun).
+    pub dropped: Vec<usize>,
+    /// Residual per used sighting, degrees, and its RMS and maximum.
+    pub residuals_deg: Vec<f64>,
+    pub residual_rms_deg: f64,
+    pub residual_max_deg: f64,
+    /// Standard error of the fitted principal point, pixels (principal-point fits only).
+    pub center_sd_px: Option<[f64; 2]>,
+}
+
+/// Residual above which a sighting is an outlier: 5 times the median residual of a first fit,
+/// and at least 0.2°, well above the centroid noise (a few hundredths of a degree) and below
+/// a reflection or a cloud edge taken for the sun.
+const OUTLIER_FACTOR: f64 = 5.0;
+const OUTLIER_FLOOR_DEG: f64 = 0.2;
+
+/// A fitted camera, its residual per sighting (degrees) and the principal point's standard
+/// error (pixels) when it was fitted.
+type FitOnce = (DeviceConfig, Vec<f64>, Option<[f64; 2]>);
+
+fn fit_once(
+    device: &DeviceConfig,
+    sightings: &[SunObservation],
+    target: FitTarget,
+) -> Result<FitOnce, FitError> {
+    let mut fitted = device.clone();
+    match target {
+        FitTarget::Orientation => {
+            let f = fit_orientation(device, sightings)?;
+            fitted.orientation = f.orientation;
+            Ok((fitted, f.residuals_deg, None))
+        }
+        FitTarget::OrientationAndPrincipalPoint => {
+            let f = fit_orientation_and_principal_point(device, sightings)?;
+            fitted.orientation = f.orientation;
+            fitted.lens.center_px = f.center_px;
+            Ok((fitted, f.residuals_deg, Some(f.center_sd_px)))
+        }
+    }
+}
+
+/// Fits the camera to the usable sightings of `tracks` (extracted with `device`): those
+/// not partly covered, and only the unsaturated ones when there are at least 3 (and as many
+/// as the fit needs). Drops the sightings beyond the outlier limit of a first fit, and
+/// refits once.
+pub fn fit_camera(
+    device: &DeviceConfig,
+    tracks: &[SunTrack],
+    target: FitTarget,
+) -> Result<SunFit, FitError> {
+    let needed = match target {
+        FitTarget::Orientation => 2,
+        FitTarget::OrientationAndPrincipalPoint => 4,
+    };
+    let mut used: Vec<usize> = (0..tracks.len())
+        .filter(|&i| tracks[i].usable_for_fit())
+        .collect();
+    if used.len() < needed {
+        return Err(FitError::TooFewSightings {
+            usable: used.len(),
+            captures: tracks.len(),
+            needed,
+        });
+    }
+    // A saturated disk gives only the geometric centre of its over-range groups (about a
+    // tenth of a degree at skip 4, against hundredths for a measured disk): such sightings
+    // enter the fit only when the measured ones are too few.
+    let measured: Vec<usize> = used
+        .iter()
+        .copied()
+        .filter(|&i| !tracks[i].flags.contains(&SunFlag::Saturated))
+        .collect();
+    if measured.len() >= needed.max(3) {
+        used = measured;
+    }
+    let observations = |idx: &[usize]| -> Vec<SunObservation> {
+        idx.iter()
+            .map(|&i| SunObservation {
+                image_point: tracks[i].image_point.expect("usable"),
+                sun_direction: tracks[i].spa_direction,
+            })
+            .collect()
+    };
+    let (mut fitted, mut residuals, mut center_sd) =
+        fit_once(device, &observations(&used), target)?;
+    let mut sorted = residuals.clone();
+    sorted.sort_by(f64::total_cmp);
+    let limit = (OUTLIER_FACTOR * sorted[sorted.len() / 2]).max(OUTLIER_FLOOR_DEG);
+    let outliers: Vec<usize> = used
+        .iter()
+        .zip(&residuals)
+        .filter(|(_, r)| **r > limit)
+        .map(|(i, _)| *i)
+        .collect();
+    let mut dropped = vec![];
+    if !outliers.is_empty() && used.len() - outliers.len() >= needed {
+        used.retain(|i| !outliers.contains(i));
+        (fitted, residuals, center_sd) = fit_once(device, &observations(&used), target)?;
+        dropped = outliers;
+    }
+    let n = residuals.len() as f64;
+    Ok(SunFit {
+        device: fitted,
+        target,
+        used,
+        dropped,
+        residual_rms_deg: (residuals.iter().map(|r| r * r).sum::<f64>() / n).sqrt(),
+        residual_max_deg: residuals.iter().cloned().fold(0.0, f64::max),
+        residuals_deg: residuals,
+        center_sd_px: center_sd,
+    })
+}
+
+/// The sightings' directions through another camera (e.g. the fitted one): each image point
+/// unprojected with `device`.
+pub fn reproject(tracks: &[SunTrack], device: &DeviceConfig) -> Vec<Option<DVec3>> {
+    let camera = CameraModel::new(device.clone());
+    tracks
+        .iter()
+        .map(|t| t.image_point.and_then(|p| camera.unproject(p)))
+        .collect()
+}
+
+fn opt(v: Option<f64>, decimals: usize) -> String {
+    match v {
+        Some(v) if v.is_finite() => format!("{v:.decimals$}"),
+        _ => String::new(),
+    }
+}
+
+fn sci(v: Option<f64>) -> String {
+    match v {
+        Some(v) if v.is_finite() => format!("{v:.6e}"),
+        _ => String::new(),
+    }
+}
+
+/// The header of `sun.csv`.
+pub const CSV_HEADER: &str = "time,capture,measured_altitude_deg,measured_azimuth_deg,\
+spa_altitude_deg,spa_azimuth_deg,error_deg,image_x_px,image_y_px,disk_luminance_cd_m2,dni_lux,\
+dni_source,pyranometer_dni_w_m2,pyranometer_dni_lux,fitted_altitude_deg,fitted_azimuth_deg,\
+fitted_error_deg,flags,note";
+
+/// `sun.csv`: one row per capture. Measured angles are through the declared camera; the
+/// `fitted_*` columns through the fitted one (empty without a fit). `flags` lists the
+/// extraction's flags separated by `;`, or `no_sun:<reason>`; `note` says it in words.
+pub fn csv_text(tracks: &[SunTrack], fitted: Option<&[Option<DVec3>]>) -> String {
+    let mut s = String::from(CSV_HEADER);
+    s.push('\n');
+    for (i, t) in tracks.iter().enumerate() {
+        let (spa_alt, spa_az) = alt_az_from_direction(t.spa_direction);
+        let measured = t.measured_direction.map(alt_az_from_direction);
+        let fit_dir = fitted.and_then(|f| f.get(i).copied().flatten());
+        let fit = fit_dir.map(alt_az_from_direction);
+        let mut flags: Vec<String> = t.flags.iter().map(|f| flag_name(*f).to_string()).collect();
+        if let Some(tag) = t.no_sun {
+            flags.push(format!("no_sun:{tag}"));
+        }
+        let capture = t
+            .capture_dir
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let fields = [
+            t.time.to_rfc3339(),
+            quote(&capture),
+            opt(measured.map(|m| m.0), 5),
+            opt(measured.map(|m| m.1), 5),
+            format!("{spa_alt:.5}"),
+            format!("{spa_az:.5}"),
+            opt(t.error_deg(), 5),
+            opt(t.image_point.map(|p| p.x_px), 3),
+            opt(t.image_point.map(|p| p.y_px), 3),
+            sci(t.disk_luminance_cd_m2),
+            opt(t.dni_lux, 1),
+            t.dni_source.as_str().into(),
+            opt(t.pyranometer.as_ref().map(|p| p.dni_w_m2), 2),
+            opt(t.pyranometer.as_ref().map(|p| p.dni_lux), 1),
+            opt(fit.map(|m| m.0), 5),
+            opt(fit.map(|m| m.1), 5),
+            opt(fit_dir.map(|d| angle_between_deg(d, t.spa_direction)), 5),
+            flags.join(";"),
+            quote(t.note.as_deref().unwrap_or("")),
+        ];
+        s.push_str(&fields.join(","));
+        s.push('\n');
+    }
+    s
+}
+
+/// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
+fn quote(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
+}
+
+/// Writes `sun.csv` atomically.
+pub fn write_csv(
+    path: &Path,
+    tracks: &[SunTrack],
+    fitted: Option<&[Option<DVec3>]>,
+) -> Result<(), TrackingError> {
+    write_atomic(path, csv_text(tracks, fitted).as_bytes())?;
+    Ok(())
+}
+
+/// Hours since local midnight of the first capture's day (in the first capture's offset), so
+/// a day reads as clock time and later days continue past 24.
+fn hours_axis(tracks: &[SunTrack]) -> Vec<f64> {
+    let Some(first) = tracks.first() else {
+        return vec![];
+    };
+    let offset = *first.time.offset();
+    let midnight = first
+        .time
+        .with_hour(0)
+        .and_then(|t| t.with_minute(0))
+        .and_then(|t| t.with_second(0))
+        .and_then(|t| t.with_nanosecond(0))
+        .unwrap_or(first.time);
+    tracks
+        .iter()
+        .map(|t| (t.time.with_timezone(&offset) - midnight).num_seconds() as f64 / 3600.0)
+        .collect()
+}
+
+/// `sun.png`: disk luminance, altitude and azimuth against time, measured and reference (SPA;
+/// the pyranometer's DNI for the luminance), and the angle between measured and SPA sun, one
+/// panel each; the fitted camera's angles too when `fitted` is given. Lines break between
+/// days and where there is no reference.
+pub fn write_plot(
+    path: &Path,
+    title: &str,
+    tracks: &[SunTrack],
+    fitted: Option<&[Option<DVec3>]>,
+) -> Result<(), TrackingError> {
+    let hours = hours_axis(tracks);
+    // A NaN between captures more than 8 hours apart breaks reference lines across nights.
+    let with_breaks = |points: Vec<(f64, f64)>| -> Vec<(f64, f64)> {
+        let mut out = Vec::with_capacity(points.len());
+        for p in points {
+            if out
+                .last()
+                .is_some_and(|q: &(f64, f64)| p.0 - q.0 > 8.0 && q.0.is_finite())
+            {
+                out.push((f64::NAN, f64::NAN));
+            }
+            out.push(p);
+        }
+        out
+    };
+    let series = |label: &str, f: &dyn Fn(usize, &SunTrack) -> Option<f64>| Series {
+        label: label.into(),
+        points: tracks
+            .iter()
+            .enumerate()
+            .filter_map(|(i, t)| f(i, t).map(|v| (hours[i], v)))
+            .collect(),
+    };
+    let line = |label: &str, f: &dyn Fn(usize, &SunTrack) -> Option<f64>| Series {
+        label: label.into(),
+        points: with_breaks(
+            tracks
+                .iter()
+                .enumerate()
+                .map(|(i, t)| (hours[i], f(i, t).unwrap_or(f64::NAN)))
+                .collect(),
+        ),
+    };
+    let fit_dir = |i: usize| fitted.and_then(|f| f.get(i).copied().flatten());
+    let mut luminance = Panel {
+        y_label: "disk luminance (Gcd/m2)".into(),
+        lines: vec![line("pyranometer DNI / disk", &|_, t| {
+            t.reference_luminance_cd_m2().map(|l| l / 1e9)
+        })],
+        points: vec![series("map", &|_, t| {
+            (t.dni_source == DniSource::Map)
+                .then_some(t.disk_luminance_cd_m2)
+                .flatten()
+                .map(|l| l / 1e9)
+        })],
+    };
+    if tracks
+        .iter()
+        .any(|t| t.dni_source == DniSource::Pyranometer)
+    {
+        luminance
+            .points
+            .push(series("saturated: pyranometer", &|_, t| {
+                (t.dni_source == DniSource::Pyranometer)
+                    .then_some(t.disk_luminance_cd_m2)
+                    .flatten()
+                    .map(|l| l / 1e9)
+            }));
+    }
+    let angle_panel = |label: &str, k: usize| {
+        let pick = move |d: DVec3| {
+            let (alt, az) = alt_az_from_direction(d);
+            if k == 0 {
+                alt
+            } else {
+                az
+            }
+        };
+        let mut p = Panel {
+            y_label: label.into(),
+            lines: vec![line("SPA", &|_, t| Some(pick(t.spa_direction)))],
+            points: vec![series("measured, declared camera", &|_, t| {
+                t.measured_direction.map(pick)
+            })],
+        };
+        if fitted.is_some() {
+            p.points.push(series("measured, fitted camera", &|i, _| {
+                fit_dir(i).map(pick)
+            }));
+        }
+        p
+    };
+    let mut error = Panel {
+        y_label: "angle to SPA's sun (deg)".into(),
+        lines: vec![line("SPA", &|_, _| Some(0.0))],
+        points: vec![series("declared camera", &|_, t| t.error_deg())],
+    };
+    if fitted.is_some() {
+        error.points.push(series("fitted camera", &|i, t| {
+            fit_dir(i).map(|d| angle_between_deg(d, t.spa_direction))
+        }));
+    }
+    let offset = tracks
+        .first()
+        .map(|t| t.time.offset().to_string())
+        .unwrap_or_default();
+    let frame = Frame {
+        width_px: 900,
+        height_px: 1200,
+        ..Frame::new(title, &format!("local time (h, UTC{offset})"), "")
+    };
+    panels_png(
+        path,
+        &frame,
+        &[
+            luminance,
+            angle_panel("altitude (deg)", 0),
+            angle_panel("azimuth (deg)", 1),
+            error,
+        ],
+    )?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::irradiance::PyranometerRow;
+
+    fn time(text: &str) -> DateTime<FixedOffset> {
+        DateTime::parse_from_rfc3339(text).unwrap()
+    }
+
+    /// The pyranometer's DNI is matched within the window, converted with the Perez direct
+    /// efficacy (between 50 and 130 lm/W for a clear sky), and derived from GHI and DHI when
+    /// DNI is missing.
+    #[test]
+    fn pyranometer_dni_matches_and_converts() {
+        let t = time("2017-05-08T12:00:00+02:00");
+        let sun = DVec3::new(0.2, -0.5, 0.84).normalize();
+        let row = |dt: i64, dni: Option<f64>| PyranometerRow {
+            time: t + TimeDelta::seconds(dt),
+            ghi_wm2: Some(850.0 * sun.z + 110.0),
+            dhi_wm2: Some(110.0),
+            dni_wm2: dni,
+        };
+        let table = PyranometerTable {
+            rows: vec![row(-600, Some(100.0)), row(120, Some(850.0))],
+            ignored_columns: vec![],
+        };
+        let p = pyranometer_dni(&table, t, sun, TimeDelta::minutes(5)).unwrap();
+        assert_eq!(p.dni_w_m2, 850.0);
+        assert_eq!(p.offset_s, 120.0);
+        let efficacy = p.dni_lux / p.dni_w_m2;
+        assert!((50.0..130.0).contains(&efficacy), "{efficacy} lm/W");
+        // Nothing within the window.
+        assert!(
+            pyranometer_dni(&table, t + TimeDelta::hours(1), sun, TimeDelta::minutes(5)).is_none()
+        );
+        // DNI derived from GHI and DHI.
+        let table = PyranometerTable {
+            rows: vec![row(0, None)],
+            ignored_columns: vec![],
+        };
+        let p = pyranometer_dni(&table, t, sun, TimeDelta::minutes(5)).unwrap();
+        assert!((p.dni_w_m2 - 850.0).abs() < 1e-9, "{}", p.dni_w_m2);
+        // The sun below the horizon: no DNI.
+        assert!(pyranometer_dni(&table, t, -sun, TimeDelta::minutes(5)).is_none());
+    }
+
+    #[test]
+    fn csv_quotes_and_tags() {
+        let t = SunTrack {
+            time: time("2017-05-08T12:00:00+02:00"),
+            capture_dir: PathBuf::from("captures/a,b"),
+            spa_direction: DVec3::new(0.0, -0.5, 0.8).normalize(),
+            measured_direction: None,
+            image_point: None,
+            disk_luminance_cd_m2: None,
+            dni_lux: None,
+            dni_source: DniSource::None,
+            pyranometer: None,
+            flags: vec![],
+            no_sun: Some("below_threshold"),
+            note: Some("no group reaches \"5e8\", no sun".into()),
+        };
+        let text = csv_text(&[t], None);
+        let line = text.lines().nth(1).unwrap();
+        assert!(line.contains("\"a,b\""), "{line}");
+        assert!(line.contains(",none,"), "{line}");
+        assert!(line.contains("no_sun:below_threshold"), "{line}");
+        assert!(
+            line.ends_with("\"no group reaches \"\"5e8\"\", no sun\""),
+            "{line}"
+        );
+        assert_eq!(
+            text.lines().next().unwrap().split(',').count(),
+            line.split(',').count() - 2 // the two quoted commas
+        );
+    }
+}

@@ -1,0 +1,898 @@
+//! `skyluxd.toml`: what the daemon measures, where it writes, what it serves and what it may
+//! map. Every error names the file, the line (when the text has one) and the field.
+//!
+//! Relative paths are resolved against the directory of the configuration file, so a config
+//! can sit beside its room and camera files.
+
+use chrono::FixedOffset;
+use serde::Deserialize;
+use skylux_regmap::{LW_BRIDGE_PHYS_BASE, LW_BRIDGE_SPAN_BYTES};
+use std::net::SocketAddr;
+use std::path::{Path, PathBuf};
+
+/// The API address when the config names none: loopback only (issue 8, "bound to 127.0.0.1
+/// by default"); port 8740 is a project choice.
+pub const DEFAULT_API_ADDRESS: &str = "127.0.0.1:8740";
+
+/// The DMA buffers' physical region: the `reserved-memory` node with `no-map` of
+/// `bitstream/linux/skylux-overlay.dts`, 0x38000000 for 128 MiB (the top of the DE1-SoC's
+/// 1 GB DDR3). Only memory the kernel does not map may be handed to the fabric: `no-map`
+/// keeps Linux from using it, and /dev/mem then maps it non-cached, which the non-coherent
+/// FPGA-to-SDRAM port needs (hardware-facts.md §3.2, §3.4).
+pub const DMA_RESERVED_BASE: u64 = 0x3800_0000;
+/// Size of the reserved DMA region, bytes (see [`DMA_RESERVED_BASE`]).
+pub const DMA_RESERVED_SIZE: u64 = 0x0800_0000;
+/// Mapping granularity: the ARM Linux page (mmap offsets and lengths are page multiples).
+pub const PAGE_BYTES: u64 = 4096;
+
+/// Why a configuration was refused.
+#[derive(Debug, thiserror::Error)]
+pub enum ConfigError {
+    #[error("{path}: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    /// `line` is 0 when the error has no place in the text.
+    #[error("{}", describe(path, *line, field, message))]
+    Invalid {
+        path: PathBuf,
+        line: usize,
+        field: String,
+        message: String,
+    },
+}
+
+fn describe(path: &Path, line: usize, field: &str, message: &str) -> String {
+    let place = if line > 0 {
+        format!("{}:{line}", path.display())
+    } else {
+        path.display().to_string()
+    };
+    if field.is_empty() {
+        format!("{place}: {message}")
+    } else {
+        format!("{place}: `{field}`: {message}")
+    }
+}
+
+/// The whole configuration, paths resolved.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Config {
+    pub site: SiteConfig,
+    pub camera: CameraConfig,
+    pub room: RoomConfig,
+    pub capture: ScheduleConfig,
+    pub output: OutputConfig,
+    #[serde(default)]
+    pub api: ApiConfig,
+    #[serde(default)]
+    pub retry: RetryConfig,
+    #[serde(default)]
+    pub hardware: HardwareConfig,
+    #[serde(default)]
+    pub sim: SimConfig,
+    /// The file this was read from (set by [`Config::parse`]).
+    #[serde(skip)]
+    pub path: PathBuf,
+}
+
+/// `[site]`, as campaign.md's `campaign.toml` names it, plus the local clock's UTC offset
+/// written into every time stamp (campaign.md: RFC 3339 with an explicit offset).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SiteConfig {
+    pub latitude_deg: f64,
+    pub longitude_deg: f64,
+    pub elevation_m: f64,
+    /// `+02:00`, `-05:00` or `Z`.
+    #[serde(default = "default_utc_offset")]
+    pub utc_offset: String,
+}
+
+fn default_utc_offset() -> String {
+    "+00:00".into()
+}
+
+/// `[camera]`: the calibration and the exposure ladder of one HDR capture.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CameraConfig {
+    /// `device.toml` (campaign.md).
+    pub device: PathBuf,
+    /// Integration times, µs, in the order they are taken.
+    pub exposures_us: Vec<f64>,
+    #[serde(default = "one")]
+    pub gain: f64,
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+/// `[room]`: the RADIANCE scene and sensor points, as `skylux dc` and `skylux loop` take them.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RoomConfig {
+    pub scene: Vec<PathBuf>,
+    pub sensors: PathBuf,
+    /// Reinhart multiplication factor of the daylight-coefficient patches (1: Tregenza 145).
+    #[serde(default = "default_mf")]
+    pub mf: usize,
+    /// Paths per sensor for the daylight coefficients (and, clamped to 64..2048, for the
+    /// sun coefficients, as the offline pipeline does).
+    #[serde(default = "default_dc_samples")]
+    pub dc_samples: u32,
+    #[serde(default = "default_bounces")]
+    pub ambient_bounces: u32,
+    #[serde(default = "one_u64")]
+    pub seed: u64,
+    /// Also trace the room under the measured sky by full Monte-Carlo every cycle.
+    #[serde(default)]
+    pub monte_carlo: bool,
+    #[serde(default = "default_mc_samples")]
+    pub monte_carlo_samples: u32,
+    /// Where the daylight-coefficient matrix is cached (default: `<output.dir>/cache`).
+    #[serde(default)]
+    pub cache_dir: Option<PathBuf>,
+}
+
+fn default_mf() -> usize {
+    2
+}
+fn default_dc_samples() -> u32 {
+    50_000
+}
+fn default_bounces() -> u32 {
+    5
+}
+fn one_u64() -> u64 {
+    1
+}
+fn default_mc_samples() -> u32 {
+    1024
+}
+
+/// `[capture]`: the schedule.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScheduleConfig {
+    /// Seconds between the starts of two captures.
+    pub period_s: f64,
+}
+
+/// `[output]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OutputConfig {
+    /// Results (`results.jsonl`, `illuminance.csv`, `latest.json`), `maps/` and `captures/`.
+    pub dir: PathBuf,
+    /// Most EXR maps kept; the oldest are deleted (0: no maps written).
+    #[serde(default = "default_max_maps")]
+    pub max_maps: usize,
+    /// Most raw capture folders kept in campaign format under `captures/` (0: none).
+    #[serde(default)]
+    pub max_captures: usize,
+}
+
+fn default_max_maps() -> usize {
+    48
+}
+
+/// `[api]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ApiConfig {
+    #[serde(default = "default_api_address")]
+    pub address: String,
+    /// Needed to bind anything but a loopback address.
+    #[serde(default)]
+    pub allow_remote: bool,
+}
+
+fn default_api_address() -> String {
+    DEFAULT_API_ADDRESS.into()
+}
+
+impl Default for ApiConfig {
+    fn default() -> Self {
+        Self {
+            address: default_api_address(),
+            allow_remote: false,
+        }
+    }
+}
+
+/// `[retry]`: exponential back-off after a failed cycle.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RetryConfig {
+    #[serde(default = "default_initial_s")]
+    pub initial_s: f64,
+    #[serde(default = "default_max_s")]
+    pub max_s: f64,
+}
+
+fn default_initial_s() -> f64 {
+    2.0
+}
+fn default_max_s() -> f64 {
+    300.0
+}
+
+impl Default for RetryConfig {
+    fn default() -> Self {
+        Self {
+            initial_s: default_initial_s(),
+            max_s: default_max_s(),
+        }
+    }
+}
+
+/// `[hardware]`: the only physical memory the daemon maps, and who it runs as afterwards.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HardwareConfig {
+    /// Physical base of the register window: must be the lightweight bridge's.
+    #[serde(default = "default_register_base")]
+    pub register_base: u64,
+    #[serde(default = "default_register_size")]
+    pub register_size: u64,
+    /// The frame ring's buffer: inside the reserved DMA region.
+    #[serde(default = "default_dma_base")]
+    pub dma_base: u64,
+    #[serde(default = "default_dma_size")]
+    pub dma_size: u64,
+    /// `/dev/uioN` of the register window (its map 0) and interrupt; `/dev/mem` when absent.
+    #[serde(default)]
+    pub uio_device: Option<PathBuf>,
+    /// Unprivileged user and group to run as once the windows are mapped.
+    #[serde(default = "default_user")]
+    pub user: String,
+    #[serde(default)]
+    pub group: Option<String>,
+}
+
+fn default_register_base() -> u64 {
+    LW_BRIDGE_PHYS_BASE as u64
+}
+fn default_register_size() -> u64 {
+    LW_BRIDGE_SPAN_BYTES as u64
+}
+fn default_dma_base() -> u64 {
+    DMA_RESERVED_BASE
+}
+fn default_dma_size() -> u64 {
+    DMA_RESERVED_SIZE
+}
+fn default_user() -> String {
+    "skylux".into()
+}
+
+impl Default for HardwareConfig {
+    fn default() -> Self {
+        Self {
+            register_base: default_register_base(),
+            register_size: default_register_size(),
+            dma_base: default_dma_base(),
+            dma_size: default_dma_size(),
+            uio_device: None,
+            user: default_user(),
+            group: None,
+        }
+    }
+}
+
+/// `[sim]`: the simulated world behind `--sim`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SimConfig {
+    /// Readout skip of the simulated frames: 2592/skip x 1944/skip samples (1: full size).
+    #[serde(default = "default_skip")]
+    pub skip: u32,
+    #[serde(default)]
+    pub sky: SimSky,
+    #[serde(default = "one_u64")]
+    pub seed: u64,
+    /// Fault injection schedule.
+    #[serde(default, rename = "fault")]
+    pub faults: Vec<FaultRule>,
+}
+
+fn default_skip() -> u32 {
+    8
+}
+
+impl Default for SimConfig {
+    fn default() -> Self {
+        Self {
+            skip: default_skip(),
+            sky: SimSky::Clear,
+            seed: 1,
+            faults: Vec::new(),
+        }
+    }
+}
+
+/// The simulated sky.
+#[derive(Copy, Clone, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum SimSky {
+    #[default]
+    Clear,
+    Overcast,
+}
+
+/// `[[sim.fault]]`: make capture attempts `attempt`..`attempt + count - 1` (1-based) fail.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct FaultRule {
+    pub attempt: u64,
+    #[serde(default = "one_u64")]
+    pub count: u64,
+    pub kind: FaultKind,
+}
+
+/// What an injected fault does.
+#[derive(Copy, Clone, Debug, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum FaultKind {
+    /// The sensor does not answer at all (Chip_Version read NACKed).
+    SensorAbsent,
+    /// One configuration write is not acknowledged.
+    I2cNack,
+    /// The frames never arrive.
+    DmaTimeout,
+    /// A frame arrives with a descriptor flag (FIFO overflow).
+    FlaggedFrame,
+    /// The output disk is full when the results are written (ENOSPC).
+    DiskFull,
+}
+
+impl FaultKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::SensorAbsent => "sensor_absent",
+            Self::I2cNack => "i2c_nack",
+            Self::DmaTimeout => "dma_timeout",
+            Self::FlaggedFrame => "flagged_frame",
+            Self::DiskFull => "disk_full",
+        }
+    }
+}
+
+/// Command-line overrides applied after parsing and before validation.
+#[derive(Clone, Debug, Default)]
+pub struct Overrides {
+    pub output_dir: Option<PathBuf>,
+    pub api_address: Option<String>,
+}
+
+impl Config {
+    /// Reads, resolves and validates `path`.
+    pub fn load(path: &Path, overrides: &Overrides) -> Result<Self, ConfigError> {
+        let text = std::fs::read_to_string(path).map_err(|source| ConfigError::Io {
+            path: path.into(),
+            source,
+        })?;
+        Self::parse(&text, path, overrides)
+    }
+
+    /// Parses, resolves and validates `text`; `path` names the file and anchors relative
+    /// paths. Never panics, whatever the text.
+    pub fn parse(text: &str, path: &Path, overrides: &Overrides) -> Result<Self, ConfigError> {
+        let mut config: Config = toml::from_str(text).map_err(|e: toml::de::Error| {
+            let line = e
+                .span()
+                .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1)
+                .unwrap_or(0);
+            ConfigError::Invalid {
+                path: path.into(),
+                line,
+                field: String::new(),
+                message: e.message().trim().to_string(),
+            }
+        })?;
+        config.path = path.to_path_buf();
+        if let Some(dir) = &overrides.output_dir {
+            config.output.dir = dir.clone();
+        }
+        if let Some(a) = &overrides.api_address {
+            config.api.address = a.clone();
+        }
+        let base = path.parent().unwrap_or(Path::new("")).to_path_buf();
+        let resolve = |p: &mut PathBuf| {
+            if p.is_relative() {
+                *p = base.join(&*p);
+            }
+        };
+        resolve(&mut config.camera.device);
+        config.room.scene.iter_mut().for_each(resolve);
+        resolve(&mut config.room.sensors);
+        if overrides.output_dir.is_none() {
+            resolve(&mut config.output.dir);
+        }
+        if let Some(c) = config.room.cache_dir.as_mut() {
+            resolve(c);
+        }
+        config.validate(text)?;
+        Ok(config)
+    }
+
+    /// The local clock's offset.
+    pub fn utc_offset(&self) -> FixedOffset {
+        parse_offset(&self.site.utc_offset).unwrap_or_else(|| FixedOffset::east_opt(0).expect("0"))
+    }
+
+    /// The API address (validated).
+    pub fn api_address(&self) -> SocketAddr {
+        self.api
+            .address
+            .parse()
+            .unwrap_or_else(|_| SocketAddr::from(([127, 0, 0, 1], 8740)))
+    }
+
+    /// Where the daylight-coefficient cache lives.
+    pub fn cache_dir(&self) -> PathBuf {
+        self.room
+            .cache_dir
+            .clone()
+            .unwrap_or_else(|| self.output.dir.join("cache"))
+    }
+
+    fn validate(&self, text: &str) -> Result<(), ConfigError> {
+        let bad = |section: &str, key: &str, message: String| ConfigError::Invalid {
+            path: self.path.clone(),
+            line: line_of(text, section, key),
+            field: if section.is_empty() {
+                key.to_string()
+            } else {
+                format!("{section}.{key}")
+            },
+            message,
+        };
+        let s = &self.site;
+        if !(s.latitude_deg.is_finite() && (-90.0..=90.0).contains(&s.latitude_deg)) {
+            return Err(bad(
+                "site",
+                "latitude_deg",
+                format!("{} is outside [-90, 90]", s.latitude_deg),
+            ));
+        }
+        if !(s.longitude_deg.is_finite() && (-180.0..=180.0).contains(&s.longitude_deg)) {
+            return Err(bad(
+                "site",
+                "longitude_deg",
+                format!("{} is outside [-180, 180] (east positive)", s.longitude_deg),
+            ));
+        }
+        if !(s.elevation_m.is_finite() && (-500.0..=9000.0).contains(&s.elevation_m)) {
+            return Err(bad(
+                "site",
+                "elevation_m",
+                format!("{} is outside [-500, 9000] m", s.elevation_m),
+            ));
+        }
+        if parse_offset(&s.utc_offset).is_none() {
+            return Err(bad(
+                "site",
+                "utc_offset",
+                format!("{:?} is not an offset such as +02:00 or Z", s.utc_offset),
+            ));
+        }
+        let c = &self.camera;
+        if c.exposures_us.is_empty() || c.exposures_us.len() > skylux_hps::fpga::MAX_EXPOSURES {
+            return Err(bad(
+                "camera",
+                "exposures_us",
+                format!(
+                    "{} exposures: a sequence holds 1 to {} (seq.* registers)",
+                    c.exposures_us.len(),
+                    skylux_hps::fpga::MAX_EXPOSURES
+                ),
+            ));
+        }
+        if let Some(t) = c
+            .exposures_us
+            .iter()
+            .find(|t| !(t.is_finite() && **t > 0.0 && **t <= 10e6))
+        {
+            return Err(bad(
+                "camera",
+                "exposures_us",
+                format!("{t} must be a positive time up to 10 s"),
+            ));
+        }
+        if !(c.gain.is_finite() && (1.0..=64.0).contains(&c.gain)) {
+            return Err(bad(
+                "camera",
+                "gain",
+                format!("{} is outside [1, 64]", c.gain),
+            ));
+        }
+        let r = &self.room;
+        if r.scene.is_empty() {
+            return Err(bad("room", "scene", "name at least one scene file".into()));
+        }
+        if !(1..=8).contains(&r.mf) {
+            return Err(bad("room", "mf", format!("{} is outside 1..=8", r.mf)));
+        }
+        if r.dc_samples == 0 || r.monte_carlo_samples == 0 {
+            return Err(bad(
+                "room",
+                if r.dc_samples == 0 {
+                    "dc_samples"
+                } else {
+                    "monte_carlo_samples"
+                },
+                "must be at least 1".into(),
+            ));
+        }
+        if r.ambient_bounces > 100 {
+            return Err(bad(
+                "room",
+                "ambient_bounces",
+                format!("{} is above 100", r.ambient_bounces),
+            ));
+        }
+        let p = self.capture.period_s;
+        if !(p.is_finite() && (1.0..=86_400.0).contains(&p)) {
+            return Err(bad(
+                "capture",
+                "period_s",
+                format!("{p} is outside [1, 86400] s"),
+            ));
+        }
+        if self.output.dir.as_os_str().is_empty() {
+            return Err(bad("output", "dir", "must name a directory".into()));
+        }
+        let addr: SocketAddr = self.api.address.parse().map_err(|_| {
+            bad(
+                "api",
+                "address",
+                format!("{:?} is not an IP address and port", self.api.address),
+            )
+        })?;
+        if !addr.ip().is_loopback() && !self.api.allow_remote {
+            return Err(bad(
+                "api",
+                "address",
+                format!(
+                    "{addr} is not a loopback address: the API would be reachable from the \
+                     network; set api.allow_remote = true to mean it"
+                ),
+            ));
+        }
+        let q = &self.retry;
+        if !(q.initial_s.is_finite() && q.initial_s > 0.0 && q.max_s.is_finite())
+            || q.max_s < q.initial_s
+            || q.max_s > 86_400.0
+        {
+            return Err(bad(
+                "retry",
+                "initial_s",
+                format!(
+                    "initial_s = {} and max_s = {} must satisfy 0 < initial_s <= max_s <= 86400",
+                    q.initial_s, q.max_s
+                ),
+            ));
+        }
+        check_hardware(&self.hardware).map_err(|(key, message)| bad("hardware", key, message))?;
+        if !(1..=64).contains(&self.sim.skip) {
+            return Err(bad(
+                "sim",
+                "skip",
+                format!("{} is outside 1..=64", self.sim.skip),
+            ));
+        }
+        for f in &self.sim.faults {
+            if f.attempt == 0 || f.count == 0 {
+                return Err(bad(
+                    "sim.fault",
+                    "attempt",
+                    "attempt (1-based) and count must be at least 1".into(),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The least-privilege rule: the daemon maps the register window of the lightweight
+/// HPS-to-FPGA bridge (physical 0xFF200000, 2 MiB: hardware-facts.md §3.1, docs/registers.md)
+/// and a DMA buffer inside the reserved, `no-map` region ([`DMA_RESERVED_BASE`],
+/// hardware-facts.md §3.4), nothing else: not the H2F window, the SDRAM the kernel uses,
+/// the peripherals (reset manager, SDRAM controller) nor the GIC. Both windows must be
+/// page-aligned and non-empty. Returns the offending key and why.
+pub fn check_hardware(h: &HardwareConfig) -> Result<(), (&'static str, String)> {
+    let lw_base = LW_BRIDGE_PHYS_BASE as u64;
+    let lw_span = LW_BRIDGE_SPAN_BYTES as u64;
+    if h.register_base != lw_base {
+        return Err((
+            "register_base",
+            format!(
+                "{:#x}: the only register window skyluxd maps is the lightweight bridge's at \
+                 {lw_base:#x} (hardware-facts.md §3.1)",
+                h.register_base
+            ),
+        ));
+    }
+    if h.register_size == 0
+        || h.register_size > lw_span
+        || !h.register_size.is_multiple_of(PAGE_BYTES)
+    {
+        return Err((
+            "register_size",
+            format!(
+                "{:#x}: must be a non-zero multiple of {PAGE_BYTES:#x} up to the bridge's \
+                 {lw_span:#x} bytes",
+                h.register_size
+            ),
+        ));
+    }
+    let end = h.dma_base.checked_add(h.dma_size);
+    let reserved_end = DMA_RESERVED_BASE + DMA_RESERVED_SIZE;
+    if h.dma_size == 0
+        || !h.dma_base.is_multiple_of(PAGE_BYTES)
+        || !h.dma_size.is_multiple_of(PAGE_BYTES)
+        || h.dma_base < DMA_RESERVED_BASE
+        || end.is_none_or(|e| e > reserved_end)
+    {
+        return Err((
+            if h.dma_base < DMA_RESERVED_BASE || !h.dma_base.is_multiple_of(PAGE_BYTES) {
+                "dma_base"
+            } else {
+                "dma_size"
+            },
+            format!(
+                "{:#x} + {:#x}: the DMA buffer must be a non-empty, page-aligned part of the \
+                 reserved no-map region {DMA_RESERVED_BASE:#x}..{reserved_end:#x} \
+                 (bitstream/linux/skylux-overlay.dts; hardware-facts.md §3.4)",
+                h.dma_base, h.dma_size
+            ),
+        ));
+    }
+    if let Some(u) = &h.uio_device {
+        let ok = u
+            .to_str()
+            .and_then(|s| s.strip_prefix("/dev/uio"))
+            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()));
+        if !ok {
+            return Err(("uio_device", format!("{}: expected /dev/uioN", u.display())));
+        }
+    }
+    if h.user.is_empty() || h.user == "root" {
+        return Err((
+            "user",
+            "name the unprivileged user to run as after mapping (not root)".into(),
+        ));
+    }
+    Ok(())
+}
+
+/// `+HH:MM`, `-HH:MM` or `Z`.
+pub fn parse_offset(s: &str) -> Option<FixedOffset> {
+    if s == "Z" || s == "z" {
+        return FixedOffset::east_opt(0);
+    }
+    let (sign, rest) = match s.as_bytes().first()? {
+        b'+' => (1, &s[1..]),
+        b'-' => (-1, &s[1..]),
+        _ => return None,
+    };
+    let (h, m) = rest.split_once(':')?;
+    if h.len() != 2 || m.len() != 2 {
+        return None;
+    }
+    let (h, m): (i32, i32) = (h.parse().ok()?, m.parse().ok()?);
+    if !(0..=23).contains(&h) || !(0..=59).contains(&m) {
+        return None;
+    }
+    FixedOffset::east_opt(sign * (h * 3600 + m * 60))
+}
+
+/// The 1-based line of `key` in `[section]` (0 if not found: a default was used).
+fn line_of(text: &str, section: &str, key: &str) -> usize {
+    let mut current = String::new();
+    for (i, raw) in text.lines().enumerate() {
+        let line = raw.trim();
+        if let Some(h) = line.strip_prefix('[') {
+            let h = h.trim_start_matches('[');
+            current = h[..h.find(']').unwrap_or(h.len())].trim().to_string();
+            continue;
+        }
+        if current == section {
+            if let Some(rest) = line.strip_prefix(key) {
+                if rest.trim_start().starts_with('=') {
+                    return i + 1;
+                }
+            }
+        }
+    }
+    // A default: point at the section header if there is one.
+    text.lines()
+        .position(|l| {
+            let l = l.trim();
+            let h = l.trim_start_matches('[');
+            l.starts_with('[') && h[..h.find(']').unwrap_or(h.len())].trim() == section
+        })
+        .map_or(0, |i| i + 1)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    pub(crate) const MINIMAL: &str = r#"
+[site]
+latitude_deg = 46.52
+longitude_deg = 6.57
+elevation_m = 400.0
+utc_offset = "+02:00"
+[camera]
+device = "device.toml"
+exposures_us = [1.0, 100.0]
+[room]
+scene = ["scene.rad"]
+sensors = "sensors.pts"
+[capture]
+period_s = 60
+[output]
+dir = "out"
+"#;
+
+    fn parse(text: &str) -> Result<Config, ConfigError> {
+        Config::parse(
+            text,
+            Path::new("/etc/skylux/skyluxd.toml"),
+            &Overrides::default(),
+        )
+    }
+
+    #[test]
+    fn minimal_config_resolves_paths_and_defaults() {
+        let c = parse(MINIMAL).unwrap();
+        assert_eq!(c.camera.device, Path::new("/etc/skylux/device.toml"));
+        assert_eq!(c.output.dir, Path::new("/etc/skylux/out"));
+        assert_eq!(c.api_address().to_string(), DEFAULT_API_ADDRESS);
+        assert_eq!(c.hardware.register_base, 0xFF20_0000);
+        assert_eq!(c.utc_offset().local_minus_utc(), 7200);
+    }
+
+    #[test]
+    fn errors_name_line_and_field() {
+        let text = MINIMAL.replace("period_s = 60", "period_s = 0.5");
+        let e = parse(&text).unwrap_err().to_string();
+        assert!(e.contains("skyluxd.toml:14"), "{e}");
+        assert!(e.contains("capture.period_s"), "{e}");
+        let text = MINIMAL.replace("period_s = 60", "period_s = \"x\"");
+        let e = parse(&text).unwrap_err().to_string();
+        assert!(e.contains(":14"), "{e}");
+        let text = MINIMAL.replace("[output]", "[output]\ncolour = 3");
+        let e = parse(&text).unwrap_err().to_string();
+        assert!(e.contains("colour"), "{e}");
+    }
+
+    #[test]
+    fn lines_are_found_under_headers_with_comments() {
+        let text = MINIMAL.replace("[capture]", "[capture]   # when");
+        let text = text.replace("period_s = 60", "period_s = 0");
+        let e = parse(&text).unwrap_err().to_string();
+        assert!(e.contains("skyluxd.toml:14"), "{e}");
+    }
+
+    #[test]
+    fn remote_api_needs_allow_remote() {
+        let text = format!("{MINIMAL}[api]\naddress = \"0.0.0.0:8740\"\n");
+        let e = parse(&text).unwrap_err().to_string();
+        assert!(
+            e.contains("api.address") && e.contains("allow_remote"),
+            "{e}"
+        );
+        let text = format!("{MINIMAL}[api]\naddress = \"0.0.0.0:8740\"\nallow_remote = true\n");
+        assert!(parse(&text).is_ok());
+        let text = format!("{MINIMAL}[api]\naddress = \"[::1]:9000\"\n");
+        assert!(parse(&text).is_ok());
+    }
+
+    #[test]
+    fn hardware_windows_other_than_bridge_and_reserved_dma_are_refused() {
+        let with = |extra: &str| parse(&format!("{MINIMAL}[hardware]\n{extra}\n"));
+        assert!(with("").is_ok());
+        // The H2F window, the SDRAM controller, the reset manager: refused.
+        for base in ["0xC0000000", "0xFFC25000", "0xFFD05000", "0xFF201000"] {
+            let e = with(&format!("register_base = {base}"))
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains("hardware.register_base"), "{e}");
+        }
+        let e = with("register_size = 0x400000").unwrap_err().to_string();
+        assert!(e.contains("register_size"), "{e}");
+        assert!(with("register_size = 0x1000").is_ok());
+        // Kernel RAM, a straddle, the end of the region, overflow: refused.
+        for (b, s) in [
+            ("0x00100000", "0x1000"),
+            ("0x37FFF000", "0x2000"),
+            ("0x3FFFF000", "0x2000"),
+            ("0xFFFFFFFFFFFFF000", "0x2000"),
+            ("0x38000800", "0x1000"),
+            ("0x38000000", "0"),
+        ] {
+            let e = with(&format!("dma_base = {b}\ndma_size = {s}"))
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains("hardware.dma_"), "{b} {s}: {e}");
+        }
+        assert!(with("dma_base = 0x3C000000\ndma_size = 0x04000000").is_ok());
+        assert!(with("uio_device = \"/dev/uio0\"").is_ok());
+        assert!(with("uio_device = \"/dev/mem\"").is_err());
+        assert!(with("user = \"root\"").is_err());
+    }
+
+    #[test]
+    fn faults_parse() {
+        let text = format!(
+            "{MINIMAL}[sim]\nskip = 16\nsky = \"overcast\"\n[[sim.fault]]\nattempt = 2\nkind = \"i2c_nack\"\n"
+        );
+        let c = parse(&text).unwrap();
+        assert_eq!(c.sim.sky, SimSky::Overcast);
+        assert_eq!(
+            c.sim.faults,
+            vec![FaultRule {
+                attempt: 2,
+                count: 1,
+                kind: FaultKind::I2cNack
+            }]
+        );
+        let e = parse(&text.replace("i2c_nack", "gremlins"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("gremlins"), "{e}");
+    }
+
+    #[test]
+    fn offsets() {
+        assert_eq!(parse_offset("Z").unwrap().local_minus_utc(), 0);
+        assert_eq!(parse_offset("-05:30").unwrap().local_minus_utc(), -19800);
+        for bad in ["", "+2", "+24:00", "02:00", "+02:60", "+٠٢:00"] {
+            assert!(parse_offset(bad).is_none(), "{bad}");
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(512))]
+        /// No input makes the parser panic.
+        #[test]
+        fn parser_never_panics(text in ".{0,400}") {
+            let _ = parse(&text);
+        }
+
+        /// Nor does a valid config with one line replaced by anything.
+        #[test]
+        fn mutated_config_never_panics(line in 0usize..20, junk in ".{0,60}") {
+            let mut lines: Vec<String> = MINIMAL.lines().map(String::from).collect();
+            let i = line % lines.len();
+            lines[i] = junk;
+            let _ = parse(&lines.join("\n"));
+        }
+
+        /// Any number in any numeric field: an error or a config, never a panic.
+        #[test]
+        fn numbers_never_panic(v in proptest::num::f64::ANY, k in 0usize..6) {
+            let keys = ["latitude_deg", "longitude_deg", "elevation_m", "period_s", "gain", "mf"];
+            let text = match keys[k] {
+                "gain" => MINIMAL.replace("[room]", &format!("gain = {v:?}\n[room]")),
+                "mf" => MINIMAL.replace("[capture]", &format!("mf = {}\n[capture]", v as i64)),
+                key => {
+                    let re: Vec<String> = MINIMAL
+                        .lines()
+                        .map(|l| if l.starts_with(key) { format!("{key} = {v:?}") } else { l.into() })
+                        .collect();
+                    re.join("\n")
+                }
+            };
+            let _ = parse(&text);
+        }
+    }
+}

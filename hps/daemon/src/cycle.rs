@@ -1,0 +1,570 @@
+//! One measurement cycle: capture → HDR map → sun → illuminance per sensor → result record.
+//!
+//! The illuminance is the offline pipeline's, by the same functions: the HDR merge of
+//! `skylux_hps::hdr` (as `hdr::map_capture` does it for a folder), the SPA sun, and
+//! `validation::device_model::{capture_terms, predict}` with the default model state (sun
+//! extracted from the map and handed over as a concentrated source, daylight coefficients
+//! for the sky and the seen ground, the model's ground reflectance where the lens does not
+//! see). So a capture kept by the daemon and run through the loop's code gives the same lux.
+//!
+//! The daylight coefficients are computed once at start and cached in a file keyed by a hash
+//! of the room (scene and sensor files) and the settings. The daemon always uses the matrix
+//! as read back from that file (float32), so a cache hit and a fresh computation give
+//! bit-identical results.
+
+use crate::config::Config;
+use crate::source::CaptureSet;
+use chrono::Utc;
+use glam::DVec3;
+use serde::{Deserialize, Serialize};
+use skylux_hps::camera::{CameraModel, DeviceConfig};
+use skylux_hps::engine::sky::DistantEmitter;
+use skylux_hps::engine::{self, DaylightCoefficients, Settings, World};
+use skylux_hps::hdr::{merge, GroupGeometry, LuminanceMap};
+use skylux_hps::sky::SkyPatches;
+use skylux_hps::sun::{remove_sun, solar_position, Site, SunFlag, SOLAR_DISK_SR};
+use skylux_hps::validation::device_model::{
+    capture_terms, predict, CaptureData, CaptureTerms, ModelState, Room,
+};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::time::Instant;
+
+/// Version of the cache key: bump when the matrix's meaning changes.
+const DC_CACHE_VERSION: &str = "skyluxd-dc-v1";
+/// Minimum patch coverage for the Monte-Carlo sky (as `device_model`'s `MIN_COVERAGE`).
+const MC_MIN_COVERAGE: f64 = 0.3;
+
+/// Why a cycle failed (after the capture itself).
+#[derive(Debug, thiserror::Error)]
+pub enum CycleError {
+    #[error(transparent)]
+    Source(#[from] crate::source::SourceError),
+    #[error("exposure {exposure} ({exposure_us} us): frame flagged {flags:?} by the capture path; capture discarded")]
+    FlaggedFrame {
+        exposure: usize,
+        exposure_us: f64,
+        flags: Vec<String>,
+    },
+    #[error("HDR merge: {0}")]
+    Hdr(String),
+    #[error("sun position: {0}")]
+    Sun(String),
+    #[error("illuminance: {0}")]
+    Model(String),
+    #[error("output: {0}")]
+    Output(String),
+    #[error("disk full: {0}")]
+    DiskFull(String),
+}
+
+impl CycleError {
+    /// A short stable name for logs and metrics.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Self::Source(e) => e.kind(),
+            Self::FlaggedFrame { .. } => "flagged_frame",
+            Self::Hdr(_) => "hdr",
+            Self::Sun(_) => "sun",
+            Self::Model(_) => "model",
+            Self::Output(_) => "output",
+            Self::DiskFull(_) => "disk_full",
+        }
+    }
+}
+
+/// Why the pipeline could not be set up (fatal at start).
+#[derive(Debug, thiserror::Error)]
+pub enum SetupError {
+    #[error("{0}")]
+    Device(#[from] skylux_hps::camera::DeviceError),
+    #[error("{0}")]
+    Scene(#[from] skylux_hps::scene::SceneError),
+    #[error("{0}")]
+    Sensors(#[from] skylux_hps::scene::SensorsError),
+    #[error("{0}")]
+    Engine(#[from] skylux_hps::engine::EngineError),
+    #[error("{path}: {message}")]
+    Cache { path: PathBuf, message: String },
+    #[error("{path}: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+}
+
+/// Illuminance at one sensor.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct SensorLux {
+    pub sensor: String,
+    pub lux: f64,
+    /// Standard error (Monte-Carlo results only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stderr_lux: Option<f64>,
+}
+
+/// The sun of one capture.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct SunRecord {
+    /// NREL SPA, geometric (as the engine's sun and the offline pipeline).
+    pub spa_altitude_deg: f64,
+    pub spa_azimuth_deg: f64,
+    /// Whether a sun disk was found in the map.
+    pub extracted: bool,
+    #[serde(default)]
+    pub extracted_altitude_deg: Option<f64>,
+    #[serde(default)]
+    pub extracted_azimuth_deg: Option<f64>,
+    /// Direct-normal illuminance of the extracted disk, lux.
+    #[serde(default)]
+    pub direct_normal_lux: Option<f64>,
+    /// `saturated`, `partly_covered`, `other_candidates`.
+    pub flags: Vec<String>,
+}
+
+/// How long each stage took, milliseconds.
+#[derive(Clone, Debug, Default, Serialize, Deserialize, PartialEq)]
+pub struct StageDurations {
+    pub capture_ms: f64,
+    pub hdr_ms: f64,
+    /// SPA position.
+    pub sun_ms: f64,
+    /// Sun extraction, sky and ground patches times daylight coefficients, sun coefficients.
+    pub terms_ms: f64,
+    /// The model's prediction per sensor from the terms.
+    pub illuminance_ms: f64,
+    pub monte_carlo_ms: f64,
+    /// Capture to record, before the output (whose time is a metric: `/v1/metrics`).
+    pub total_ms: f64,
+}
+
+/// The result of one cycle: one line of `results.jsonl` and `/v1/latest`.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct CycleRecord {
+    /// Start of the capture, RFC 3339 with the site's offset.
+    pub time: String,
+    /// Successful cycles since the daemon started, from 1.
+    pub sequence: u64,
+    pub source: String,
+    pub sun: SunRecord,
+    /// Illuminance per sensor through the daylight coefficients, lux.
+    pub illuminance: Vec<SensorLux>,
+    /// Full Monte-Carlo illuminance under the measured sky, when `room.monte_carlo` is set.
+    #[serde(default)]
+    pub monte_carlo: Option<Vec<SensorLux>>,
+    /// Outdoor horizontal illuminance the map implies, lux.
+    pub outdoor_horizontal_lux: f64,
+    /// Fraction of valid groups over-range.
+    pub saturated_fraction: f64,
+    /// The map, relative to the output directory (when maps are kept).
+    #[serde(default)]
+    pub map: Option<String>,
+    /// The capture folder, relative to the output directory (when captures are kept).
+    #[serde(default)]
+    pub capture: Option<String>,
+    pub durations_ms: StageDurations,
+}
+
+/// What the cycle hands to the output stage besides the record.
+pub struct CycleProducts {
+    pub record: CycleRecord,
+    pub map: LuminanceMap,
+}
+
+/// Everything computed once at start.
+pub struct Pipeline {
+    pub device: DeviceConfig,
+    camera: CameraModel,
+    site: Site,
+    pub room: Room,
+    state: ModelState,
+    monte_carlo: Option<Settings>,
+    geometry: Option<(GeometryKey, GroupGeometry)>,
+    /// The cache file the daylight coefficients were read from.
+    pub dc_path: PathBuf,
+}
+
+type GeometryKey = (u32, u32, u32, usize, usize);
+
+/// The engine settings of the room's daylight and sun coefficients.
+pub fn room_settings(config: &Config) -> Settings {
+    Settings {
+        ambient_bounces: config.room.ambient_bounces,
+        samples_per_sensor: config.room.dc_samples,
+        seed: config.room.seed,
+        ..Settings::default()
+    }
+}
+
+/// FNV-1a, 64 bits (Fowler, Noll, Vo): a stable hash for the cache key (std's hasher may
+/// change between Rust releases).
+fn fnv1a(hash: &mut u64, bytes: &[u8]) {
+    for &b in bytes {
+        *hash ^= u64::from(b);
+        *hash = hash.wrapping_mul(0x0000_0100_0000_01B3);
+    }
+}
+
+/// The cache key of a room: its files' contents, the patches and the engine settings.
+pub fn room_hash(config: &Config) -> Result<u64, SetupError> {
+    let mut h = 0xCBF2_9CE4_8422_2325u64;
+    fnv1a(&mut h, DC_CACHE_VERSION.as_bytes());
+    for p in config.room.scene.iter().chain([&config.room.sensors]) {
+        let bytes = std::fs::read(p).map_err(|source| SetupError::Io {
+            path: p.clone(),
+            source,
+        })?;
+        fnv1a(&mut h, &(bytes.len() as u64).to_le_bytes());
+        fnv1a(&mut h, &bytes);
+    }
+    let s = room_settings(config);
+    for v in [
+        config.room.mf as u64,
+        u64::from(s.ambient_bounces),
+        u64::from(s.samples_per_sensor),
+        s.seed,
+        u64::from(s.max_specular_events),
+    ] {
+        fnv1a(&mut h, &v.to_le_bytes());
+    }
+    Ok(h)
+}
+
+impl Pipeline {
+    /// Loads the camera and the room, and reads (or computes and caches) the daylight
+    /// coefficients. `progress(done, total)` reports the computation.
+    pub fn new(config: &Config, progress: &(dyn Fn(u64, u64) + Sync)) -> Result<Self, SetupError> {
+        let (device, warnings) = DeviceConfig::read(&config.camera.device)?;
+        for w in warnings {
+            tracing::warn!(file = %config.camera.device.display(), "{w}");
+        }
+        let scene = skylux_hps::scene::load_files(&config.room.scene)?;
+        let sensors = skylux_hps::scene::load_sensors(&config.room.sensors)?;
+        let world = World::new(&scene)?;
+        let settings = room_settings(config);
+        let cache_dir = config.cache_dir();
+        let dc_path = cache_dir.join(format!("dc-{:016x}.dc", room_hash(config)?));
+        let dc = match DaylightCoefficients::read(&dc_path) {
+            Ok(dc) if dc.sensors.len() == sensors.len() => {
+                tracing::info!(path = %dc_path.display(), "daylight coefficients read from the cache");
+                dc
+            }
+            other => {
+                if let Err(e) = other {
+                    if dc_path.exists() {
+                        tracing::warn!(error = %e, "cached daylight coefficients unusable: recomputing");
+                    }
+                }
+                let started = Instant::now();
+                let dc = engine::daylight_coefficients(
+                    &world,
+                    &sensors,
+                    config.room.mf,
+                    &settings,
+                    progress,
+                )?;
+                std::fs::create_dir_all(&cache_dir).map_err(|source| SetupError::Io {
+                    path: cache_dir.clone(),
+                    source,
+                })?;
+                let tmp = dc_path.with_extension("dc.tmp");
+                dc.write(&tmp)
+                    .and_then(|_| crate::output::fsync_file(&tmp))
+                    .and_then(|_| std::fs::rename(&tmp, &dc_path))
+                    .map_err(|source| SetupError::Io {
+                        path: dc_path.clone(),
+                        source,
+                    })?;
+                tracing::info!(
+                    path = %dc_path.display(),
+                    sensors = sensors.len(),
+                    bins = dc.bins,
+                    seconds = started.elapsed().as_secs_f64(),
+                    "daylight coefficients computed and cached"
+                );
+                DaylightCoefficients::read(&dc_path).map_err(|message| SetupError::Cache {
+                    path: dc_path.clone(),
+                    message,
+                })?
+            }
+        };
+        let monte_carlo = config.room.monte_carlo.then_some(Settings {
+            samples_per_sensor: config.room.monte_carlo_samples,
+            ..settings
+        });
+        Ok(Self {
+            camera: CameraModel::new(device.clone()),
+            device,
+            site: Site {
+                latitude_deg: config.site.latitude_deg,
+                longitude_deg: config.site.longitude_deg,
+                elevation_m: config.site.elevation_m,
+            },
+            room: Room {
+                world,
+                sensors,
+                dc,
+                settings,
+            },
+            state: ModelState::default(),
+            monte_carlo,
+            geometry: None,
+            dc_path,
+        })
+    }
+
+    /// The sensor names, in order.
+    pub fn sensor_names(&self) -> Vec<String> {
+        self.room.sensors.iter().map(|s| s.name.clone()).collect()
+    }
+
+    /// Turns a capture into a record (the fields `map`, `capture` and `sequence` are the
+    /// caller's).
+    pub fn process(
+        &mut self,
+        set: &CaptureSet,
+        capture_ms: f64,
+        source: &str,
+    ) -> Result<CycleProducts, CycleError> {
+        let started = Instant::now();
+        // A flagged frame is not merged: a FIFO overflow or a short line means the frame's
+        // pixels are not where the geometry says.
+        for (k, flags) in set.frame_flags.iter().enumerate() {
+            if !flags.is_empty() {
+                return Err(CycleError::FlaggedFrame {
+                    exposure: k,
+                    exposure_us: set
+                        .config
+                        .exposure
+                        .get(k)
+                        .map_or(f64::NAN, |e| e.exposure_us),
+                    flags: flags.clone(),
+                });
+            }
+        }
+        let (raw_width, raw_height) = match set.frames.first() {
+            Some(f) => (f.width, f.height),
+            None => return Err(CycleError::Hdr("the capture holds no frame".into())),
+        };
+        if set.frames.len() != set.config.exposure.len() {
+            return Err(CycleError::Hdr(format!(
+                "{} frames for {} exposures",
+                set.frames.len(),
+                set.config.exposure.len()
+            )));
+        }
+
+        // HDR: as hdr::map_capture, with the geometry kept between cycles.
+        let t = Instant::now();
+        let r = set.config.readout;
+        let key = (r.col_start, r.row_start, r.skip, raw_width, raw_height);
+        if self.geometry.as_ref().map(|(k, _)| *k) != Some(key) {
+            self.geometry = Some((
+                key,
+                GroupGeometry::new(&self.camera, &r, raw_width, raw_height),
+            ));
+        }
+        let geometry = match &self.geometry {
+            Some((_, g)) => g,
+            None => return Err(CycleError::Hdr("no geometry".into())),
+        };
+        let map = merge(&set.exposures(), &self.device, set.config.bayer, geometry)
+            .map_err(|e| CycleError::Hdr(e.to_string()))?;
+        let hdr_ms = ms(t);
+
+        // Sun: SPA, as validation::device_model::load_captures computes it.
+        let t = Instant::now();
+        let spa = solar_position(set.time.with_timezone(&Utc), &self.site, None)
+            .map_err(|e| CycleError::Sun(e.to_string()))?;
+        let sun_ms = ms(t);
+
+        // Terms and prediction: the offline pipeline's functions.
+        let t = Instant::now();
+        let data = [CaptureData {
+            time: set.time,
+            map,
+            readout: r,
+            raw_width,
+            raw_height,
+            spa_sun: spa.direction(),
+        }];
+        let terms = capture_terms(&mut self.room, &data, &self.device, &|_, _| {})
+            .map_err(|e| CycleError::Model(e.to_string()))?;
+        let [CaptureData { map, .. }] = data;
+        let terms = terms
+            .into_iter()
+            .next()
+            .ok_or_else(|| CycleError::Model("no terms for the capture".into()))?;
+        let terms_ms = ms(t);
+        let t = Instant::now();
+        let lux = predict(&self.state, &terms);
+        let illuminance_ms = ms(t);
+
+        let t = Instant::now();
+        let monte_carlo = match self.monte_carlo {
+            Some(settings) => Some(self.monte_carlo(&map, &terms, &settings)?),
+            None => None,
+        };
+        let monte_carlo_ms = ms(t);
+
+        let sun = &terms.sun;
+        let record = CycleRecord {
+            time: set.time.to_rfc3339(),
+            sequence: 0,
+            source: source.to_string(),
+            sun: SunRecord {
+                spa_altitude_deg: spa.altitude_deg(),
+                spa_azimuth_deg: spa.azimuth_deg,
+                extracted: sun.is_some(),
+                extracted_altitude_deg: sun.as_ref().map(|s| altitude_deg(s.direction)),
+                extracted_azimuth_deg: sun.as_ref().map(|s| azimuth_deg(s.direction)),
+                direct_normal_lux: sun.as_ref().map(|s| s.direct_normal_illuminance_lux),
+                flags: sun
+                    .as_ref()
+                    .map(|s| s.flags.iter().map(|f| sun_flag(*f).to_string()).collect())
+                    .unwrap_or_default(),
+            },
+            illuminance: self
+                .room
+                .sensors
+                .iter()
+                .zip(&lux)
+                .map(|(s, &lux)| SensorLux {
+                    sensor: s.name.clone(),
+                    lux,
+                    stderr_lux: None,
+                })
+                .collect(),
+            monte_carlo,
+            outdoor_horizontal_lux: terms.outdoor_horizontal_lux,
+            saturated_fraction: terms.saturated_fraction,
+            map: None,
+            capture: None,
+            durations_ms: StageDurations {
+                capture_ms,
+                hdr_ms,
+                sun_ms,
+                terms_ms,
+                illuminance_ms,
+                monte_carlo_ms,
+                total_ms: capture_ms + ms(started),
+            },
+        };
+        Ok(CycleProducts { record, map })
+    }
+
+    /// Full Monte-Carlo through the engine: the room under the measured sky (the map's
+    /// patches with the sun disk removed), a uniform ground of the model's reflectance, and
+    /// the extracted sun as a `light` of the solar disk's solid angle.
+    fn monte_carlo(
+        &mut self,
+        map: &LuminanceMap,
+        terms: &CaptureTerms,
+        settings: &Settings,
+    ) -> Result<Vec<SensorLux>, CycleError> {
+        let geometry = match &self.geometry {
+            Some((_, g)) => g,
+            None => return Err(CycleError::Model("no geometry".into())),
+        };
+        let without_sun = match &terms.sun {
+            Some(s) => remove_sun(map, s),
+            None => map.clone(),
+        };
+        let patches = SkyPatches::reinhart(self.room.dc.mf);
+        let sky = patches.aggregate(
+            &without_sun,
+            &geometry.direction,
+            &geometry.solid_angle_sr,
+            MC_MIN_COVERAGE,
+        );
+        let ground_cd_m2 =
+            self.state.ground_reflectance * terms.outdoor_horizontal_lux / std::f64::consts::PI;
+        let efficacy = engine::WHITE_EFFICACY_LM_PER_W;
+        let luminance = sky.luminance_cd_m2;
+        self.room
+            .world
+            .set_environment(Some(Arc::new(move |d: DVec3| {
+                let l = if d.z < 0.0 {
+                    ground_cd_m2
+                } else {
+                    patches
+                        .patch_of(d)
+                        .and_then(|p| luminance.get(p).copied())
+                        .filter(|l| l.is_finite())
+                        .unwrap_or(0.0)
+                };
+                DVec3::splat(l / efficacy)
+            })));
+        if let Some(s) = &terms.sun {
+            if s.direct_normal_illuminance_lux > 0.0 {
+                self.room.world.add_distant(DistantEmitter::sun(
+                    s.direction,
+                    SOLAR_DISK_SR,
+                    s.direct_normal_illuminance_lux / (efficacy * SOLAR_DISK_SR),
+                ));
+            }
+        }
+        let result =
+            engine::illuminance(&self.room.world, &self.room.sensors, settings, &|_, _| {});
+        self.room.world.clear_distant();
+        self.room.world.set_environment(None);
+        let result = result.map_err(|e| CycleError::Model(format!("Monte-Carlo: {e}")))?;
+        Ok(result
+            .into_iter()
+            .map(|s| SensorLux {
+                sensor: s.name,
+                lux: s.illuminance_lux,
+                stderr_lux: Some(s.stderr_lux),
+            })
+            .collect())
+    }
+
+    /// Where the daylight coefficients live.
+    pub fn dc_path(&self) -> &Path {
+        &self.dc_path
+    }
+}
+
+fn ms(t: Instant) -> f64 {
+    t.elapsed().as_secs_f64() * 1e3
+}
+
+fn altitude_deg(d: DVec3) -> f64 {
+    d.z.clamp(-1.0, 1.0).asin().to_degrees()
+}
+
+/// Azimuth from north towards east, [0, 360) (campaign.md conventions).
+fn azimuth_deg(d: DVec3) -> f64 {
+    d.x.atan2(d.y).to_degrees().rem_euclid(360.0)
+}
+
+fn sun_flag(f: SunFlag) -> &'static str {
+    match f {
+        SunFlag::Saturated => "saturated",
+        SunFlag::PartlyCovered => "partly_covered",
+        SunFlag::OtherCandidates => "other_candidates",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn angles_follow_campaign_conventions() {
+        assert!((azimuth_deg(DVec3::new(1.0, 0.0, 0.0)) - 90.0).abs() < 1e-12);
+        assert!((azimuth_deg(DVec3::new(0.0, -1.0, 0.0)) - 180.0).abs() < 1e-12);
+        assert!((azimuth_deg(DVec3::new(-1.0, 0.0, 0.0)) - 270.0).abs() < 1e-12);
+        assert!((altitude_deg(DVec3::new(0.0, 1.0, 1.0).normalize()) - 45.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn fnv_is_the_published_function() {
+        // FNV-1a 64 test vectors (Fowler, Noll, Vo reference code): "" and "a".
+        let mut h = 0xCBF2_9CE4_8422_2325u64;
+        fnv1a(&mut h, b"");
+        assert_eq!(h, 0xcbf2_9ce4_8422_2325);
+        fnv1a(&mut h, b"a");
+        assert_eq!(h, 0xaf63_dc4c_8601_ec8c);
+    }
+}

@@ -1,0 +1,551 @@
+//! The main loop: set up, then capture → process → write on the schedule, with failures
+//! logged and retried with capped exponential back-off, until SIGTERM/SIGINT or `--cycles`.
+//!
+//! Nothing a cycle does can end the daemon: every error (and even a panic inside the
+//! pipeline) is caught, logged with its kind, counted for `/v1/health` and `/v1/metrics`,
+//! and the cycle is retried later. Only set-up errors (configuration, room, API address)
+//! end the process, with a non-zero status systemd can act on.
+//!
+//! On SIGTERM or SIGINT the loop stops at the next stage boundary: a capture in progress is
+//! discarded if it has not been processed yet (nothing of it is written), and a cycle already
+//! writing finishes its (atomic) writes. Then the daemon exits 0.
+
+use crate::api::{ApiServer, ApiState, ErrorReport, SharedState};
+use crate::config::{Config, FaultKind, Overrides};
+use crate::cycle::{CycleError, Pipeline};
+use crate::notify::Notifier;
+use crate::output::{FaultHook, Output, API_ADDRESS_FILE, SPOOL_DIR};
+use crate::source::{CaptureSource, SimSource};
+use chrono::{DateTime, FixedOffset, Timelike, Utc};
+use std::panic::AssertUnwindSafe;
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+/// Exit statuses (sysexits.h): a bad configuration is not worth restarting for.
+pub const EXIT_CONFIG: i32 = 78;
+pub const EXIT_SOFTWARE: i32 = 70;
+pub const EXIT_UNAVAILABLE: i32 = 69;
+pub const EXIT_CANTCREAT: i32 = 73;
+
+/// What `main` parsed.
+#[derive(Clone, Debug, Default)]
+pub struct Options {
+    pub config: PathBuf,
+    pub sim: bool,
+    /// Stop after this many successful cycles.
+    pub cycles: Option<u64>,
+    /// Simulated clock: first capture time, and seconds between captures.
+    pub time_start: Option<DateTime<FixedOffset>>,
+    pub time_step_s: Option<f64>,
+    /// Keep serving the API after `--cycles` until a signal.
+    pub serve_after: bool,
+    pub overrides: Overrides,
+}
+
+/// The daemon's clock: the wall clock, or a simulated one that jumps instead of sleeping.
+enum Clock {
+    Wall {
+        offset: FixedOffset,
+        next_due: Option<Instant>,
+    },
+    Sim {
+        now: DateTime<FixedOffset>,
+        step: chrono::TimeDelta,
+    },
+}
+
+impl Clock {
+    fn now(&self) -> DateTime<FixedOffset> {
+        match self {
+            // Whole seconds: capture stamps and file names have second resolution.
+            Clock::Wall { offset, .. } => {
+                let now = Utc::now().with_timezone(offset);
+                now.with_nanosecond(0).unwrap_or(now)
+            }
+            Clock::Sim { now, .. } => *now,
+        }
+    }
+}
+
+/// Sleeps up to `d`, waking for the stop flag and the watchdog.
+fn sleep_interruptible(
+    d: Duration,
+    stop: &AtomicBool,
+    notifier: &Notifier,
+    last_ping: &mut Instant,
+) {
+    let end = Instant::now() + d;
+    loop {
+        ping(notifier, last_ping);
+        if stop.load(Ordering::Relaxed) {
+            return;
+        }
+        let now = Instant::now();
+        if now >= end {
+            return;
+        }
+        std::thread::sleep((end - now).min(Duration::from_millis(100)));
+    }
+}
+
+fn ping(notifier: &Notifier, last_ping: &mut Instant) {
+    if let Some(interval) = notifier.watchdog_interval() {
+        if last_ping.elapsed() >= interval {
+            notifier.watchdog();
+            *last_ping = Instant::now();
+        }
+    }
+}
+
+/// Back-off after `failures` consecutive failures: initial · 2^(failures − 1), capped.
+pub fn backoff_s(initial_s: f64, max_s: f64, failures: u64) -> f64 {
+    let exp = failures.saturating_sub(1).min(62) as i32;
+    (initial_s * 2f64.powi(exp)).min(max_s)
+}
+
+/// Output faults from the `--sim` schedule, by attempt.
+struct SimOutputFaults<'a> {
+    rules: &'a [crate::config::FaultRule],
+    attempt: u64,
+}
+
+impl FaultHook for SimOutputFaults<'_> {
+    fn output_fault(&mut self) -> Option<std::io::Error> {
+        (SimSource::fault_for(self.rules, self.attempt) == Some(FaultKind::DiskFull))
+            .then(|| std::io::Error::from_raw_os_error(libc::ENOSPC))
+    }
+}
+
+/// Runs the daemon; returns the process exit status.
+pub fn run(options: &Options) -> i32 {
+    let config = match Config::load(&options.config, &options.overrides) {
+        Ok(c) => c,
+        Err(e) => {
+            tracing::error!(kind = "config", "refusing to start: {e}");
+            return EXIT_CONFIG;
+        }
+    };
+    if let (Some(_), None) | (None, Some(_)) = (options.time_start, options.time_step_s) {
+        tracing::error!(
+            kind = "config",
+            "--time-start and --time-step-s go together"
+        );
+        return EXIT_CONFIG;
+    }
+    if options.time_start.is_some() && !options.sim {
+        tracing::error!(
+            kind = "config",
+            "a simulated clock (--time-start) needs --sim"
+        );
+        return EXIT_CONFIG;
+    }
+    if let Some(s) = options.time_step_s {
+        if !(s.is_finite() && (1.0..=86_400.0 * 366.0).contains(&s)) {
+            tracing::error!(kind = "config", "--time-step-s {s}: expected 1 s to a year");
+            return EXIT_CONFIG;
+        }
+    }
+    tracing::info!(
+        config = %config.path.display(),
+        output = %config.output.dir.display(),
+        sim = options.sim,
+        "skyluxd {} starting",
+        env!("CARGO_PKG_VERSION")
+    );
+
+    // The hardware: map the two windows, then give up root. In --sim nothing is mapped.
+    if options.sim {
+        tracing::info!("sim: no hardware window mapped; dropping root skipped in --sim");
+    } else {
+        return run_hardware(&config);
+    }
+
+    let stop = Arc::new(AtomicBool::new(false));
+    for signal in [signal_hook::consts::SIGTERM, signal_hook::consts::SIGINT] {
+        if let Err(e) = signal_hook::flag::register(signal, stop.clone()) {
+            tracing::error!(error = %e, "cannot install the signal handler");
+            return EXIT_SOFTWARE;
+        }
+    }
+    let notifier = Notifier::from_env();
+    let mut last_ping = Instant::now();
+
+    // The room and its daylight coefficients (minutes the first time, then cached).
+    notifier.status("computing daylight coefficients");
+    let last_report = std::sync::Mutex::new((0u64, Instant::now()));
+    let pipeline = Pipeline::new(&config, &|done, total| {
+        let pct = 100 * done / total.max(1);
+        let mut last = last_report.lock().unwrap_or_else(|p| p.into_inner());
+        if pct >= last.0 + 10 {
+            last.0 = pct;
+            tracing::info!(percent = pct, "daylight coefficients");
+        }
+        // Keep the watchdog fed through a long first computation.
+        if last.1.elapsed() >= Duration::from_secs(1) {
+            last.1 = Instant::now();
+            notifier.watchdog();
+        }
+    });
+    let mut pipeline = match pipeline {
+        Ok(p) => p,
+        Err(e) => {
+            tracing::error!(kind = "room", "cannot set up the pipeline: {e}");
+            return EXIT_CONFIG;
+        }
+    };
+
+    let state: SharedState = Arc::new(std::sync::Mutex::new(ApiState {
+        started_unix_s: Utc::now().timestamp_millis() as f64 / 1e3,
+        ..ApiState::default()
+    }));
+    let api = match ApiServer::start(config.api_address(), state.clone()) {
+        Ok(a) => a,
+        Err(e) => {
+            tracing::error!(kind = "api", "{e}");
+            return EXIT_UNAVAILABLE;
+        }
+    };
+    tracing::info!(address = %api.address, "API listening (GET /v1/latest, /v1/health, /v1/metrics)");
+
+    let spool = config.output.dir.join(SPOOL_DIR);
+    let mut source: Box<dyn CaptureSource> = Box::new(SimSource::new(
+        pipeline.device.clone(),
+        skylux_hps::sun::Site {
+            latitude_deg: config.site.latitude_deg,
+            longitude_deg: config.site.longitude_deg,
+            elevation_m: config.site.elevation_m,
+        },
+        config.sim.clone(),
+        config.camera.exposures_us.clone(),
+        config.camera.gain,
+        &spool,
+    ));
+
+    let offset = config.utc_offset();
+    let mut clock = match (options.time_start, options.time_step_s) {
+        (Some(start), Some(step)) => Clock::Sim {
+            now: start.with_timezone(&offset),
+            step: chrono::TimeDelta::milliseconds((step * 1e3).round() as i64),
+        },
+        _ => Clock::Wall {
+            offset,
+            next_due: None,
+        },
+    };
+
+    let mut output: Option<Output> = None;
+    let mut api_address_written = false;
+    notifier.ready(&format!("API on {}", api.address));
+    let (mut ok, mut attempts, mut consecutive) = (0u64, 0u64, 0u64);
+    loop {
+        ping(&notifier, &mut last_ping);
+        if stop.load(Ordering::Relaxed) {
+            tracing::info!("stop requested: exiting");
+            break;
+        }
+        if options.cycles.is_some_and(|n| ok >= n) {
+            if options.serve_after {
+                sleep_interruptible(Duration::from_millis(200), &stop, &notifier, &mut last_ping);
+                continue;
+            }
+            tracing::info!(cycles = ok, "requested cycles done: exiting");
+            break;
+        }
+        // Wait for the capture's time (wall clock only).
+        if let Clock::Wall {
+            next_due: Some(due),
+            ..
+        } = &clock
+        {
+            let now = Instant::now();
+            if *due > now {
+                sleep_interruptible(*due - now, &stop, &notifier, &mut last_ping);
+                continue;
+            }
+        }
+        attempts += 1;
+        let at = clock.now();
+        // The output directory, opened (and repaired) lazily so a full or read-only disk at
+        // start is retried like any other failure.
+        if output.is_none() {
+            match Output::open(
+                &config.output.dir,
+                config.output.max_maps,
+                config.output.max_captures,
+            ) {
+                Ok((o, recovery)) => {
+                    if recovery.partial_bytes_dropped > 0 || recovery.stale_files_removed > 0 {
+                        tracing::warn!(
+                            partial_bytes_dropped = recovery.partial_bytes_dropped,
+                            stale_files_removed = recovery.stale_files_removed,
+                            "output: repaired what an interrupted write left"
+                        );
+                    }
+                    output = Some(o);
+                }
+                Err(e) => {
+                    let err = CycleError::Output(e.to_string());
+                    consecutive += 1;
+                    fail(
+                        &state,
+                        &config,
+                        &mut clock,
+                        &err,
+                        at,
+                        attempts,
+                        consecutive,
+                        &notifier,
+                    );
+                    continue;
+                }
+            }
+        }
+        if !api_address_written {
+            let p = config.output.dir.join(API_ADDRESS_FILE);
+            match crate::output::write_atomic(&p, format!("{}\n", api.address).as_bytes()) {
+                Ok(()) => api_address_written = true,
+                Err(e) => tracing::warn!(error = %e, "cannot record the API address"),
+            }
+        }
+        let Some(out) = output.as_mut() else { continue };
+        let started = Instant::now();
+        let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
+            run_cycle(
+                source.as_mut(),
+                &mut pipeline,
+                out,
+                &config,
+                at,
+                attempts,
+                ok + 1,
+                &stop,
+            )
+        }))
+        .unwrap_or_else(|panic| {
+            let what = panic
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_else(|| "unknown panic".into());
+            Err(CycleError::Model(format!(
+                "internal error (panic caught): {what}"
+            )))
+        });
+        match result {
+            Ok(Some((record, output_ms))) => {
+                ok += 1;
+                consecutive = 0;
+                tracing::info!(
+                    sequence = record.sequence,
+                    time = %record.time,
+                    sun_altitude_deg = record.sun.spa_altitude_deg,
+                    sun_extracted = record.sun.extracted,
+                    sensors = record.illuminance.len(),
+                    first_lux = record.illuminance.first().map_or(f64::NAN, |s| s.lux),
+                    capture_ms = record.durations_ms.capture_ms,
+                    hdr_ms = record.durations_ms.hdr_ms,
+                    terms_ms = record.durations_ms.terms_ms,
+                    output_ms,
+                    cycle_ms = started.elapsed().as_secs_f64() * 1e3,
+                    "cycle done"
+                );
+                notifier.status(&format!("cycle {} at {}", record.sequence, record.time));
+                {
+                    let mut s = state.lock().unwrap_or_else(|p| p.into_inner());
+                    s.cycles_ok += 1;
+                    s.consecutive_failures = 0;
+                    s.last_durations = Some(record.durations_ms.clone());
+                    s.last_output_ms = output_ms;
+                    s.latest = Some(record);
+                }
+                match &mut clock {
+                    Clock::Sim { now, step } => *now += *step,
+                    Clock::Wall { next_due, .. } => {
+                        let period = Duration::from_secs_f64(config.capture.period_s);
+                        let due = next_due.map_or(started, |d| d) + period;
+                        // Fallen behind (a long cycle): start the schedule again from now.
+                        *next_due = Some(if due < Instant::now() {
+                            Instant::now()
+                        } else {
+                            due
+                        });
+                    }
+                }
+            }
+            Ok(None) => {
+                tracing::info!(
+                    "stop requested during the capture: capture discarded, nothing written"
+                );
+                break;
+            }
+            Err(e) => {
+                consecutive += 1;
+                fail(
+                    &state,
+                    &config,
+                    &mut clock,
+                    &e,
+                    at,
+                    attempts,
+                    consecutive,
+                    &notifier,
+                );
+            }
+        }
+    }
+    notifier.stopping();
+    api.stop();
+    tracing::info!(cycles_ok = ok, attempts, "skyluxd stopped");
+    0
+}
+
+/// Logs and counts a failed cycle, then backs off.
+#[allow(clippy::too_many_arguments)]
+fn fail(
+    state: &SharedState,
+    config: &Config,
+    clock: &mut Clock,
+    e: &CycleError,
+    at: DateTime<FixedOffset>,
+    attempt: u64,
+    consecutive: u64,
+    notifier: &Notifier,
+) {
+    let retry_s = backoff_s(config.retry.initial_s, config.retry.max_s, consecutive);
+    tracing::error!(
+        kind = e.kind(),
+        attempt,
+        consecutive_failures = consecutive,
+        retry_in_s = retry_s,
+        time = %at.to_rfc3339(),
+        "cycle failed: {e}"
+    );
+    {
+        let mut s = state.lock().unwrap_or_else(|p| p.into_inner());
+        s.cycles_failed += 1;
+        s.consecutive_failures = consecutive;
+        *s.failures_by_kind.entry(e.kind().to_string()).or_default() += 1;
+        s.last_error = Some(ErrorReport {
+            kind: e.kind().to_string(),
+            message: e.to_string(),
+            time: at.to_rfc3339(),
+        });
+    }
+    notifier.status(&format!(
+        "degraded: {} ({} in a row)",
+        e.kind(),
+        consecutive
+    ));
+    match clock {
+        Clock::Sim { now, .. } => {
+            // The simulated clock jumps the back-off; a short real pause keeps a persistent
+            // failure from spinning.
+            *now += chrono::TimeDelta::milliseconds((retry_s * 1e3).round() as i64);
+            std::thread::sleep(Duration::from_millis(50));
+        }
+        Clock::Wall { next_due, .. } => {
+            *next_due = Some(Instant::now() + Duration::from_secs_f64(retry_s));
+        }
+    }
+}
+
+/// One cycle. `Ok(None)`: stopped during the capture, which was discarded.
+#[allow(clippy::too_many_arguments)]
+fn run_cycle(
+    source: &mut dyn CaptureSource,
+    pipeline: &mut Pipeline,
+    output: &mut Output,
+    config: &Config,
+    at: DateTime<FixedOffset>,
+    attempt: u64,
+    sequence: u64,
+    stop: &AtomicBool,
+) -> Result<Option<(crate::cycle::CycleRecord, f64)>, CycleError> {
+    let t = Instant::now();
+    let set = source.capture(at)?;
+    let capture_ms = t.elapsed().as_secs_f64() * 1e3;
+    if stop.load(Ordering::Relaxed) {
+        return Ok(None);
+    }
+    let products = pipeline.process(&set, capture_ms, source.name())?;
+    let mut record = products.record;
+    record.sequence = sequence;
+    let t = Instant::now();
+    let mut faults = SimOutputFaults {
+        rules: &config.sim.faults,
+        attempt,
+    };
+    output
+        .write_cycle(
+            &mut record,
+            &products.map,
+            &pipeline.device,
+            Some((&set.config, &set.frames)),
+            &mut faults,
+        )
+        .map_err(|e| {
+            if e.is_disk_full() {
+                CycleError::DiskFull(e.to_string())
+            } else {
+                CycleError::Output(e.to_string())
+            }
+        })?;
+    Ok(Some((record, t.elapsed().as_secs_f64() * 1e3)))
+}
+
+/// On the board: map the register window and the DMA buffer, drop root, bring the fabric
+/// up. The fabric capture source arrives with the whole core (issue 10); until then the
+/// daemon says so and exits.
+fn run_hardware(config: &Config) -> i32 {
+    // The physical addresses are the Cyclone V HPS's: mapping them on another machine would
+    // touch whatever that machine has there.
+    if !cfg!(all(target_arch = "arm", target_os = "linux")) {
+        tracing::error!(
+            kind = "hardware",
+            "the hardware mode runs on the DE1-SoC's ARM Linux only: use --sim here"
+        );
+        return EXIT_UNAVAILABLE;
+    }
+    let windows = match crate::hardware::map(&config.hardware) {
+        Ok(w) => w,
+        Err(e) => {
+            tracing::error!(kind = "hardware", "{e}");
+            return EXIT_CANTCREAT;
+        }
+    };
+    match crate::privilege::drop_root(&config.hardware.user, config.hardware.group.as_deref()) {
+        Ok(d) => tracing::info!(?d, "privileges"),
+        Err(e) => {
+            tracing::error!(kind = "privilege", "{e}");
+            return EXIT_SOFTWARE;
+        }
+    }
+    match skylux_hps::fpga::Fabric::bring_up(windows.registers) {
+        Ok(f) => tracing::info!(info = ?f.info(), "fabric up"),
+        Err(e) => {
+            tracing::error!(kind = "bring_up", "{e}");
+            return EXIT_UNAVAILABLE;
+        }
+    }
+    tracing::error!(
+        kind = "source",
+        "this build has no fabric capture source yet (FabricSource lands with the whole \
+         core, issue 10): run with --sim"
+    );
+    EXIT_UNAVAILABLE
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn backoff_doubles_and_caps() {
+        let b: Vec<f64> = (1..=6).map(|k| backoff_s(2.0, 20.0, k)).collect();
+        assert_eq!(b, vec![2.0, 4.0, 8.0, 16.0, 20.0, 20.0]);
+        assert_eq!(backoff_s(1.0, 300.0, u64::MAX), 300.0);
+        assert_eq!(backoff_s(1.0, 300.0, 0), 1.0);
+    }
+}

@@ -1,0 +1,28 @@
+//! skyluxd: the Skylux HPS daemon. Captures an HDR sky on a schedule, turns it into a
+//! luminance map, finds the sun, computes the illuminance at the room's sensors through
+//! daylight coefficients (the offline pipeline's own functions), writes the results safely
+//! and serves them over a read-only HTTP API.
+//!
+//! | module | what |
+//! |---|---|
+//! | [`config`] | `skyluxd.toml`, validated (including which physical memory may be mapped) |
+//! | [`source`] | the capture source trait and the simulated source |
+//! | [`cycle`] | capture → HDR → sun → illuminance → record |
+//! | [`output`] | crash-safe results, maps and captures, with retention |
+//! | [`api`] | `/v1/latest`, `/v1/health`, `/v1/metrics` |
+//! | [`daemon`] | the loop: schedule, back-off, signals, watchdog |
+//! | [`notify`] | sd_notify over `$NOTIFY_SOCKET` |
+//! | [`hardware`], [`privilege`] | map the two windows, then drop root |
+//! | [`drivers`] | embedded-hal drivers: the shield stepper, the MT9P031 on HPS I2C |
+
+pub mod api;
+pub mod config;
+pub mod cycle;
+pub mod daemon;
+pub mod drivers;
+pub mod hardware;
+pub mod notify;
+pub mod output;
+pub mod privilege;
+pub mod source;
+pub mod spawn;

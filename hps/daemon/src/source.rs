@@ -1,0 +1,376 @@
+//! Where captures come from: the [`CaptureSource`] trait, and [`SimSource`], the simulated
+//! camera under a simulated sky (`--sim`).
+//!
+//! A source hands back the raw exposures of one HDR capture in the form `hdr/` consumes: the
+//! campaign `capture.toml` content (time, Bayer phase, readout window, and per exposure its
+//! integration time and gain) and one [`RawFrame`] per exposure, with the DMA descriptor flags
+//! of each frame. The fabric source (`FabricSource<B: RegisterBus, M: DmaMemory>`, with the
+//! whole core of issue 10) implements the same trait over `skylux_hps::fpga`.
+
+use crate::config::{FaultKind, FaultRule, SimConfig, SimSky};
+use chrono::{DateTime, Datelike, FixedOffset, Utc};
+use glam::DVec3;
+use skylux_hps::camera::{CameraModel, DeviceConfig};
+use skylux_hps::campaign::{CaptureConfig, RawFrame, Readout};
+use skylux_hps::hdr::Exposure;
+use skylux_hps::sky::perez::{PerezConditions, PerezInput, PerezSky};
+use skylux_hps::sun::{solar_position, Site};
+use std::path::{Path, PathBuf};
+
+/// One HDR capture as it left the sensor and the DMA.
+#[derive(Clone, Debug)]
+pub struct CaptureSet {
+    /// Start of the exposure sequence.
+    pub time: DateTime<FixedOffset>,
+    /// What `capture.toml` would hold (its `file` names are where the frames go when the
+    /// capture is kept).
+    pub config: CaptureConfig,
+    /// One frame per `config.exposure` entry, in the same order.
+    pub frames: Vec<RawFrame>,
+    /// Per frame, the names of the DMA descriptor flags that were set (empty: a good frame).
+    pub frame_flags: Vec<Vec<String>>,
+}
+
+impl CaptureSet {
+    /// The exposures as the HDR merge takes them.
+    pub fn exposures(&self) -> Vec<Exposure<'_>> {
+        self.frames
+            .iter()
+            .zip(&self.config.exposure)
+            .map(|(frame, e)| Exposure {
+                frame,
+                exposure_s: e.exposure_us * 1e-6,
+                gain: e.gain,
+            })
+            .collect()
+    }
+}
+
+/// Why a capture failed. Every variant says what the hardware did, so the log line is
+/// enough to act on.
+#[derive(Clone, Debug, thiserror::Error, PartialEq)]
+pub enum SourceError {
+    #[error("sensor absent: {detail}")]
+    SensorAbsent { detail: String },
+    #[error("I2C NACK at sensor register {register:#04x}: {detail}")]
+    I2cNack { register: u8, detail: String },
+    #[error("DMA timeout: {frames_received} of {frames_expected} frames after {waited_ms} ms")]
+    DmaTimeout {
+        frames_received: usize,
+        frames_expected: usize,
+        waited_ms: u64,
+    },
+    #[error("capture source: {0}")]
+    Other(String),
+}
+
+impl SourceError {
+    /// A short stable name for logs and metrics.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Self::SensorAbsent { .. } => "sensor_absent",
+            Self::I2cNack { .. } => "i2c_nack",
+            Self::DmaTimeout { .. } => "dma_timeout",
+            Self::Other(_) => "source",
+        }
+    }
+}
+
+/// Something that takes HDR captures.
+pub trait CaptureSource {
+    /// Takes one capture starting at `at` (the simulated clock in `--sim`, the wall clock on
+    /// the board).
+    fn capture(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError>;
+    /// A name for logs (`sim`, `fabric`).
+    fn name(&self) -> &'static str;
+}
+
+/// The simulated world: SPA sun, an ASHRAE clear-day or overcast Perez sky, a grey ground,
+/// imaged through the declared camera and the MT9P031 noise model
+/// (`skylux_sim::capture::simulate_capture`) at reduced resolution, with injected faults.
+pub struct SimSource {
+    camera: CameraModel,
+    site: Site,
+    sim: SimConfig,
+    exposures_us: Vec<f64>,
+    gain: f64,
+    spool: PathBuf,
+    attempts: u64,
+}
+
+/// Ground reflectance of the simulated world (and the model's default: `ModelState`).
+const GROUND_REFLECTANCE: f64 = 0.2;
+/// Below this solar altitude the simulated sky is dark (the campaign simulator takes no
+/// capture below 3°, sim/src/campaign.rs).
+const MIN_SUN_ALTITUDE_DEG: f64 = 3.0;
+
+impl SimSource {
+    /// `spool` is a scratch folder where the simulator writes each capture before it is read
+    /// back (the simulator writes the campaign format).
+    pub fn new(
+        device: DeviceConfig,
+        site: Site,
+        sim: SimConfig,
+        exposures_us: Vec<f64>,
+        gain: f64,
+        spool: &Path,
+    ) -> Self {
+        Self {
+            camera: CameraModel::new(device),
+            site,
+            sim,
+            exposures_us,
+            gain,
+            spool: spool.to_path_buf(),
+            attempts: 0,
+        }
+    }
+
+    /// The fault scheduled for the attempt about to be made (1-based), if any.
+    pub fn fault_for(faults: &[FaultRule], attempt: u64) -> Option<FaultKind> {
+        faults
+            .iter()
+            .find(|f| attempt >= f.attempt && attempt - f.attempt < f.count)
+            .map(|f| f.kind)
+    }
+
+    /// Attempts made so far.
+    pub fn attempts(&self) -> u64 {
+        self.attempts
+    }
+
+    /// The luminance of the simulated world in every direction at `at`, cd/m².
+    fn world(&self, at: DateTime<FixedOffset>) -> Result<impl Fn(DVec3) -> f64 + Sync, String> {
+        let sun =
+            solar_position(at.with_timezone(&Utc), &self.site, None).map_err(|e| e.to_string())?;
+        let sun_dir = sun.direction();
+        let altitude = sun.altitude_deg();
+        let sky = if altitude >= MIN_SUN_ALTITUDE_DEG {
+            let (dni_clear, dhi_clear) = ashrae_clear_day_w_m2(altitude.to_radians());
+            let (dni, dhi) = match self.sim.sky {
+                SimSky::Clear => (dni_clear, dhi_clear),
+                // Overcast as in the campaign simulator: no beam, 35 % of the clear global.
+                SimSky::Overcast => (
+                    0.0,
+                    0.35 * (dni_clear * altitude.to_radians().sin() + dhi_clear),
+                ),
+            };
+            let perez = PerezSky::new(
+                PerezInput::DirectNormalDiffuse {
+                    direct_normal_w_m2: dni,
+                    diffuse_horizontal_w_m2: dhi,
+                },
+                &PerezConditions {
+                    day_of_year: at.ordinal() as u16,
+                    ground_reflectance: GROUND_REFLECTANCE,
+                    ..PerezConditions::gendaylit_ang(sun_dir)
+                },
+            )
+            .map_err(|e| e.to_string())?;
+            Some((perez, dni > 0.0))
+        } else {
+            None
+        };
+        let (ground, sun_cd_m2, sun_cos_half) = match &sky {
+            Some((p, with_sun)) => {
+                let horizontal = p.diffuse_horizontal_illuminance_lux()
+                    + if *with_sun {
+                        p.direct_normal_illuminance_lux() * sun_dir.z.max(0.0)
+                    } else {
+                        0.0
+                    };
+                (
+                    GROUND_REFLECTANCE * horizontal / std::f64::consts::PI,
+                    if *with_sun {
+                        p.sun_luminance_cd_m2()
+                    } else {
+                        0.0
+                    },
+                    1.0 - p.sun_solid_angle_sr() / std::f64::consts::TAU,
+                )
+            }
+            None => (0.0, 0.0, 1.0),
+        };
+        Ok(move |d: DVec3| {
+            let Some((perez, _)) = &sky else { return 0.0 };
+            if d.z < 0.0 {
+                ground
+            } else if sun_cd_m2 > 0.0 && d.dot(sun_dir) >= sun_cos_half {
+                sun_cd_m2
+            } else {
+                perez.luminance_cd_m2(d)
+            }
+        })
+    }
+}
+
+/// ASHRAE clear-day model for May (ASHRAE Handbook of Fundamentals 1985, ch. 27, table 1,
+/// 21 May: A = 1088 W/m², B = 0.205, C = 0.134): DNI = A exp(−B / sin h), DHI = C · DNI. The
+/// campaign simulator (sim/src/campaign.rs) uses the same model.
+fn ashrae_clear_day_w_m2(altitude_rad: f64) -> (f64, f64) {
+    let s = altitude_rad.sin().max(0.02);
+    let dni = 1088.0 * (-0.205 / s).exp();
+    (dni, 0.134 * dni)
+}
+
+impl CaptureSource for SimSource {
+    fn name(&self) -> &'static str {
+        "sim"
+    }
+
+    fn capture(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
+        self.attempts += 1;
+        let fault = Self::fault_for(&self.sim.faults, self.attempts);
+        match fault {
+            // MT9P031 register 0x00 is Chip_Version: the first read of bring-up.
+            Some(FaultKind::SensorAbsent) => {
+                return Err(SourceError::SensorAbsent {
+                    detail: "Chip_Version (0x00) read not acknowledged: no device at the \
+                             sensor's I2C address (injected)"
+                        .into(),
+                })
+            }
+            // Register 0x09 is Shutter_Width_Lower, written for every exposure.
+            Some(FaultKind::I2cNack) => {
+                return Err(SourceError::I2cNack {
+                    register: 0x09,
+                    detail: "write of Shutter_Width_Lower not acknowledged (injected)".into(),
+                })
+            }
+            Some(FaultKind::DmaTimeout) => {
+                return Err(SourceError::DmaTimeout {
+                    frames_received: 0,
+                    frames_expected: self.exposures_us.len(),
+                    waited_ms: 2000,
+                })
+            }
+            _ => {}
+        }
+        let field = self.world(at).map_err(SourceError::Other)?;
+        let skip = self.sim.skip;
+        let spec = skylux_sim::capture::CaptureSpec {
+            time: at.to_rfc3339(),
+            readout: Readout {
+                col_start: 0,
+                row_start: 0,
+                skip,
+            },
+            raw_width: (2592 / skip as usize) & !1,
+            raw_height: (1944 / skip as usize) & !1,
+            exposures_us: self.exposures_us.clone(),
+            gain: self.gain,
+            // The same time gives the same frames.
+            seed: self.sim.seed ^ (at.timestamp() as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15),
+            footprint: skylux_sim::sensor::Footprint::Integrated,
+        };
+        let dir = self.spool.join(format!("capture-{}", self.attempts));
+        let result = skylux_sim::capture::simulate_capture(&dir, &self.camera, &field, &spec)
+            .map_err(|e| SourceError::Other(format!("simulator: {e}")))
+            .and_then(|config| {
+                let frames = config
+                    .exposure
+                    .iter()
+                    .map(|e| RawFrame::read(&dir.join(&e.file)))
+                    .collect::<Result<Vec<_>, _>>()
+                    .map_err(|e| SourceError::Other(format!("simulator: {e}")))?;
+                Ok((config, frames))
+            });
+        let _ = std::fs::remove_dir_all(&dir);
+        let (config, frames) = result?;
+        let mut frame_flags = vec![Vec::new(); frames.len()];
+        if fault == Some(FaultKind::FlaggedFrame) {
+            // The middle exposure's descriptor reports a capture FIFO overflow.
+            let k = frames.len() / 2;
+            frame_flags[k].push("FIFO_OVERFLOW".to_string());
+        }
+        Ok(CaptureSet {
+            time: at,
+            config,
+            frames,
+            frame_flags,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fault_schedule() {
+        let faults = vec![
+            FaultRule {
+                attempt: 2,
+                count: 2,
+                kind: FaultKind::I2cNack,
+            },
+            FaultRule {
+                attempt: 5,
+                count: 1,
+                kind: FaultKind::DmaTimeout,
+            },
+        ];
+        let got: Vec<_> = (1..=6).map(|a| SimSource::fault_for(&faults, a)).collect();
+        assert_eq!(
+            got,
+            vec![
+                None,
+                Some(FaultKind::I2cNack),
+                Some(FaultKind::I2cNack),
+                None,
+                Some(FaultKind::DmaTimeout),
+                None
+            ]
+        );
+    }
+
+    #[test]
+    fn sim_source_renders_and_injects() {
+        let dir = tempfile::tempdir().unwrap();
+        let sim = SimConfig {
+            skip: 32,
+            faults: vec![
+                FaultRule {
+                    attempt: 1,
+                    count: 1,
+                    kind: FaultKind::SensorAbsent,
+                },
+                FaultRule {
+                    attempt: 3,
+                    count: 1,
+                    kind: FaultKind::FlaggedFrame,
+                },
+            ],
+            ..SimConfig::default()
+        };
+        let mut s = SimSource::new(
+            DeviceConfig::default(),
+            Site {
+                latitude_deg: 46.52,
+                longitude_deg: 6.57,
+                elevation_m: 400.0,
+            },
+            sim,
+            vec![10.0, 1000.0, 100_000.0],
+            1.0,
+            dir.path(),
+        );
+        let t = DateTime::parse_from_rfc3339("2017-05-08T12:00:00+02:00").unwrap();
+        let e = s.capture(t).unwrap_err();
+        assert_eq!(e.kind(), "sensor_absent");
+        let a = s.capture(t).unwrap();
+        assert_eq!(a.frames.len(), 3);
+        assert_eq!((a.frames[0].width, a.frames[0].height), (80, 60));
+        assert!(a.frame_flags.iter().all(Vec::is_empty));
+        let b = s.capture(t).unwrap();
+        assert_eq!(b.frame_flags[1], vec!["FIFO_OVERFLOW".to_string()]);
+        // Same time, same frames; the spool is left empty.
+        assert_eq!(a.frames, b.frames);
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+        // Brighter at noon than in the dark.
+        let night = DateTime::parse_from_rfc3339("2017-05-08T01:00:00+02:00").unwrap();
+        let n = s.capture(night).unwrap();
+        let sum = |f: &RawFrame| f.samples_dn.iter().map(|&v| v as u64).sum::<u64>();
+        assert!(sum(&n.frames[2]) < sum(&a.frames[2]));
+    }
+}

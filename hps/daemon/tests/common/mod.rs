@@ -1,0 +1,124 @@
+//! Helpers shared by the daemon's end-to-end tests: start the real `skyluxd` binary (through
+//! qemu-arm when the tests themselves run under it), talk HTTP with a plain TcpStream, read
+//! the output files.
+
+#![allow(dead_code)]
+
+use std::io::{Read, Write};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Stdio};
+use std::time::{Duration, Instant};
+
+/// The repository's example configuration.
+pub fn example_config() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../skyluxd.toml")
+}
+
+/// The example configuration with its relative paths made absolute and `extra` appended
+/// (the example ends in its `[sim]` section, so `[[sim.fault]]` tables can follow), written
+/// into `dir`.
+pub fn config_with(dir: &Path, replace: &[(&str, &str)], extra: &str) -> PathBuf {
+    let hps = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let mut text = std::fs::read_to_string(example_config()).unwrap();
+    text = text.replace(
+        "\"daemon/device.toml\"",
+        &format!("\"{}\"", hps.join("daemon/device.toml").display()),
+    );
+    text = text.replace(
+        "\"../../shared/",
+        &format!("\"{}/", hps.join("../../shared").display()),
+    );
+    for (a, b) in replace {
+        assert!(text.contains(a), "the example config has no `{a}`");
+        text = text.replace(a, b);
+    }
+    text.push_str(extra);
+    let path = dir.join("skyluxd.toml");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// Starts skyluxd with `args`, stderr captured into `dir/stderr.log`.
+pub fn start(args: &[&str], log: &Path) -> Child {
+    let exe = Path::new(env!("CARGO_BIN_EXE_skyluxd"));
+    let mut cmd = skyluxd::spawn::command_for(exe);
+    cmd.args(args)
+        .stdout(Stdio::null())
+        .stderr(std::fs::File::create(log).unwrap());
+    cmd.spawn().expect("skyluxd starts")
+}
+
+/// Waits for the child to exit (at most `limit`), killing it on timeout.
+pub fn wait(child: &mut Child, limit: Duration) -> std::process::ExitStatus {
+    let end = Instant::now() + limit;
+    loop {
+        if let Some(s) = child.try_wait().unwrap() {
+            return s;
+        }
+        if Instant::now() > end {
+            let _ = child.kill();
+            panic!("skyluxd did not exit within {limit:?}");
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    }
+}
+
+/// Polls `f` until it returns Some, or panics after `limit`, showing the log.
+pub fn until<T>(limit: Duration, log: &Path, mut f: impl FnMut() -> Option<T>) -> T {
+    let end = Instant::now() + limit;
+    loop {
+        if let Some(v) = f() {
+            return v;
+        }
+        if Instant::now() > end {
+            panic!(
+                "timed out after {limit:?}; daemon log:\n{}",
+                std::fs::read_to_string(log).unwrap_or_default()
+            );
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    }
+}
+
+/// Complete lines of `results.jsonl` (a partial last line is not counted).
+pub fn complete_lines(path: &Path) -> Vec<String> {
+    let text = std::fs::read_to_string(path).unwrap_or_default();
+    let mut lines: Vec<String> = text.split_inclusive('\n').map(String::from).collect();
+    if lines.last().is_some_and(|l| !l.ends_with('\n')) {
+        lines.pop();
+    }
+    lines
+}
+
+/// A GET over a plain TcpStream: (status, body).
+pub fn http_get(address: &str, path: &str) -> (u16, String) {
+    http(address, "GET", path)
+}
+
+pub fn http(address: &str, method: &str, path: &str) -> (u16, String) {
+    let mut s = std::net::TcpStream::connect(address).expect("connect to the API");
+    s.set_read_timeout(Some(Duration::from_secs(20))).unwrap();
+    write!(
+        s,
+        "{method} {path} HTTP/1.1\r\nHost: {address}\r\nConnection: close\r\nContent-Length: 0\r\n\r\n"
+    )
+    .unwrap();
+    let mut text = String::new();
+    s.read_to_string(&mut text).unwrap();
+    let status = text
+        .split_whitespace()
+        .nth(1)
+        .and_then(|c| c.parse().ok())
+        .unwrap_or(0);
+    let body = text
+        .split_once("\r\n\r\n")
+        .map(|(_, b)| b.to_string())
+        .unwrap_or_default();
+    (status, body)
+}
+
+/// Sends `signal` to the child.
+pub fn signal(child: &Child, signal: i32) {
+    let rc = unsafe { libc::kill(child.id() as libc::pid_t, signal) };
+    assert_eq!(rc, 0, "kill({}, {signal})", child.id());
+}
