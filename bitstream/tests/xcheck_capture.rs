@@ -6,8 +6,8 @@ use rust_hdl::prelude::*;
 use skylux_bitstream::xcheck::{self, Tool};
 use skylux_rtl::bayer::golden::{expected_words, Frame};
 use skylux_rtl::capture::CapturePath;
+use skylux_sim::bus::WaitPolicy;
 use skylux_sim::capture_path::{CapturePathSim, PathConfig};
-use skylux_sim::f2sdram::WaitPolicy;
 use skylux_sim::pixel_bus::{Blanking, Fault};
 
 #[test]

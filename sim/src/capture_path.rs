@@ -1,6 +1,6 @@
 //! The capture path on the bench: the pixel bus drives the rust-hdl `CapturePath` in its
-//! PIXCLK domain while the f2sdram model answers its Avalon-MM master in the system clock
-//! domain, the two clocks interleaved on a picosecond time line.
+//! PIXCLK domain while the Avalon-MM memory model ([`AvalonMemory`], the f2sdram port) answers
+//! its master in the system clock domain, the two clocks interleaved on a picosecond time line.
 //!
 //! Inputs change in the same settle as their own clock's falling edge, and a falling edge
 //! shares the settle of the other clock's next rising edge when that comes first (flops
@@ -9,7 +9,9 @@
 //! `skylux_rtl::drive` guards against: no rising edge ever shares a settle with an input
 //! change of its own domain or with another rising edge.
 
-use crate::f2sdram::{F2sdramModel, HostSignals, WaitPolicy};
+use crate::bus::avalon_memory::{
+    AddressUnit, AvalonMemory, AvalonMemoryConfig, HostCommand, WaitPolicy,
+};
 use crate::pixel_bus::{Blanking, Fault, PixelBus, Step};
 use rust_hdl::prelude::*;
 use skylux_rtl::bayer::golden::BayerConfig;
@@ -87,7 +89,9 @@ pub struct RunCounters {
 pub struct CapturePathSim {
     pub driver: Driver<CapturePath>,
     pub bus: PixelBus,
-    pub memory: F2sdramModel,
+    /// The f2sdram port: byte addresses, writes allowed only in the DMA window, full byte
+    /// enables required. The HPS reads it through `skylux_bus::DmaMemory`.
+    pub memory: AvalonMemory,
     pub config: PathConfig,
     pub status: StatusSeen,
     pub counters: RunCounters,
@@ -116,14 +120,21 @@ impl CapturePathSim {
         let len = (u64::from(config.window_base) - base)
             + u64::from(config.window_size_bytes)
             + guard_bytes;
-        let memory = F2sdramModel::new(
-            base,
-            len as usize,
-            8,
-            u64::from(config.window_base),
-            u64::from(config.window_size_bytes),
-            policy,
-            seed,
+        let memory = AvalonMemory::new(
+            AvalonMemoryConfig {
+                width_bytes: 8,
+                address_unit: AddressUnit::Bytes,
+                base,
+                size_bytes: len as usize,
+                write_window: Some((
+                    u64::from(config.window_base),
+                    u64::from(config.window_size_bytes),
+                )),
+                require_full_byteenable: true,
+                seed,
+                ..Default::default()
+            }
+            .with_wait_policy(policy),
         );
         let mut sim = CapturePathSim {
             driver: Driver::new(CapturePath::default()),
@@ -266,7 +277,8 @@ impl CapturePathSim {
 
     fn sysclk_event(&mut self) -> Result<(), DriveError> {
         if self.sys_high {
-            let wait = self.memory.waitrequest();
+            // The agent's outputs for the cycle that ends at the next rising edge.
+            let wait = self.memory.begin_cycle().waitrequest;
             let d = &mut self.driver.dut;
             d.avm_waitrequest.next = wait;
             d.tag_timestamp.next = self.counters.sys_cycles.into();
@@ -307,20 +319,23 @@ impl CapturePathSim {
         }
     }
 
-    /// What the register file and the f2sdram port take at this rising edge.
+    /// What the register file and the f2sdram port take at this rising edge. (The first
+    /// edge comes before any falling edge: the port's outputs are still their reset values,
+    /// waitrequest low, as the DUT sees them.)
     fn sample_before_edge(&mut self) {
         let d = &self.driver.dut;
         let write = d.avm_write.val();
         let host = if write {
-            HostSignals {
-                write,
+            HostCommand {
                 address: d.avm_address.val().to_u64(),
+                read: false,
+                write,
                 burstcount: d.avm_burstcount.val().to_u64() as u32,
-                writedata: d.avm_writedata.val().to_u64(),
+                writedata: u128::from(d.avm_writedata.val().to_u64()),
                 byteenable: d.avm_byteenable.val().to_u64() as u32,
             }
         } else {
-            HostSignals::default()
+            HostCommand::default()
         };
         let s = &mut self.status;
         s.line_short |= d.capture_status_line_short_set.val();
@@ -338,6 +353,6 @@ impl CapturePathSim {
         let hw = d.capture_fifo_high_water_words.val().to_u64();
         self.counters.fifo_high_water = self.counters.fifo_high_water.max(hw);
         self.counters.pixels_sent = self.bus.pixels_sent;
-        self.memory.clock_edge(&host);
+        self.memory.end_cycle(&host);
     }
 }

@@ -352,35 +352,24 @@ impl DmaMemory for SimCoreMemory {
     fn phys_base(&self) -> u64 {
         self.shared
             .lock()
-            .map(|mut s| s.memory(self.port).config.base)
+            .map(|mut s| s.memory(self.port).phys_base())
             .unwrap_or(0)
     }
     fn len_bytes(&self) -> u64 {
         self.shared
             .lock()
-            .map(|mut s| s.memory(self.port).config.size_bytes as u64)
+            .map(|mut s| s.memory(self.port).len_bytes())
             .unwrap_or(0)
     }
     fn read_bytes(&mut self, offset: u64, buf: &mut [u8]) -> Result<(), BusError> {
-        let mut s = lock(&self.shared)?;
-        let m = s.memory(self.port);
-        check_access(offset, buf.len() as u64, m.config.size_bytes as u64, 1)?;
-        let src = m
-            .slice(m.config.base + offset, buf.len())
-            .ok_or_else(|| BusError::Simulation("memory model range".into()))?;
-        buf.copy_from_slice(src);
-        Ok(())
+        lock(&self.shared)?
+            .memory(self.port)
+            .read_bytes(offset, buf)
     }
     fn write_bytes(&mut self, offset: u64, data: &[u8]) -> Result<(), BusError> {
-        let mut s = lock(&self.shared)?;
-        let m = s.memory(self.port);
-        check_access(offset, data.len() as u64, m.config.size_bytes as u64, 1)?;
-        let base = m.config.base;
-        let dst = m
-            .slice_mut(base + offset, data.len())
-            .ok_or_else(|| BusError::Simulation("memory model range".into()))?;
-        dst.copy_from_slice(data);
-        Ok(())
+        lock(&self.shared)?
+            .memory(self.port)
+            .write_bytes(offset, data)
     }
 }
 

@@ -10,7 +10,6 @@ pub mod campaign;
 pub mod capture;
 pub mod capture_path;
 pub mod core_rig;
-pub mod f2sdram;
 pub mod mt9p031;
 pub mod pixel_bus;
 pub mod raybox;

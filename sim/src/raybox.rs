@@ -215,45 +215,16 @@ pub struct SimRayBoxMemory<const LANES: usize>(pub SharedRayBox<LANES>);
 
 impl<const L: usize> DmaMemory for SimRayBoxMemory<L> {
     fn phys_base(&self) -> u64 {
-        self.0.lock().map(|s| s.memory.config.base).unwrap_or(0)
+        self.0.lock().map(|s| s.memory.phys_base()).unwrap_or(0)
     }
     fn len_bytes(&self) -> u64 {
-        self.0
-            .lock()
-            .map(|s| s.memory.config.size_bytes as u64)
-            .unwrap_or(0)
+        self.0.lock().map(|s| s.memory.len_bytes()).unwrap_or(0)
     }
     fn read_bytes(&mut self, offset: u64, buf: &mut [u8]) -> Result<(), BusError> {
-        let s = lock(&self.0)?;
-        check_access(
-            offset,
-            buf.len() as u64,
-            s.memory.config.size_bytes as u64,
-            1,
-        )?;
-        let base = s.memory.config.base;
-        let src = s
-            .memory
-            .slice(base + offset, buf.len())
-            .ok_or_else(|| BusError::Simulation("memory model range".into()))?;
-        buf.copy_from_slice(src);
-        Ok(())
+        lock(&self.0)?.memory.read_bytes(offset, buf)
     }
     fn write_bytes(&mut self, offset: u64, data: &[u8]) -> Result<(), BusError> {
-        let mut s = lock(&self.0)?;
-        check_access(
-            offset,
-            data.len() as u64,
-            s.memory.config.size_bytes as u64,
-            1,
-        )?;
-        let base = s.memory.config.base;
-        let dst = s
-            .memory
-            .slice_mut(base + offset, data.len())
-            .ok_or_else(|| BusError::Simulation("memory model range".into()))?;
-        dst.copy_from_slice(data);
-        Ok(())
+        lock(&self.0)?.memory.write_bytes(offset, data)
     }
 }
 

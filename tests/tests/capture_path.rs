@@ -9,8 +9,8 @@ use rand::{Rng, SeedableRng};
 use skylux_hps::fpga::frames::{CapturedFrame, RingLayout};
 use skylux_regmap::descriptor::flag;
 use skylux_rtl::bayer::golden::{expected_words, BayerConfig, Frame, Phase};
+use skylux_sim::bus::WaitPolicy;
 use skylux_sim::capture_path::{CapturePathSim, PathConfig};
-use skylux_sim::f2sdram::WaitPolicy;
 use skylux_sim::pixel_bus::{Blanking, Fault};
 
 fn random_frame(width: usize, height: usize, rng: &mut StdRng) -> Frame {

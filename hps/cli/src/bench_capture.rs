@@ -4,8 +4,8 @@
 use anyhow::{bail, Context};
 use skylux_hps::fpga::frames::RingLayout;
 use skylux_rtl::bayer::golden::{expected_words, Frame};
+use skylux_sim::bus::WaitPolicy;
 use skylux_sim::capture_path::{CapturePathSim, PathConfig};
-use skylux_sim::f2sdram::WaitPolicy;
 use skylux_sim::pixel_bus::Blanking;
 use std::time::Instant;
 

@@ -1,16 +1,29 @@
-//! An Avalon-MM memory agent model standing in for SDRAM behind an f2sdram port: byte-addressed
-//! storage, a configurable data width, read and write bursts, variable-latency pipelined reads
-//! (`readdatavalid`, in order), and random `waitrequest` from a seed (Avalon Interface
-//! Specifications §3.5 to §3.7; hardware-facts.md §4).
+//! The Avalon-MM memory agent model: SDRAM behind an f2sdram port, as every host in the fabric
+//! sees it. Byte-addressed storage, a configurable data width, word or byte addresses, read
+//! and write bursts, variable-latency pipelined reads (`readdatavalid`, in order), and
+//! `waitrequest` from a seeded [`WaitPolicy`]: random, long stalls, and one deterministic hold
+//! (Avalon Interface Specifications §3.5 to §3.7; hardware-facts.md §4).
+//!
+//! It is the only model of that port. The frame DMA (`capture_path`, `core_rig` port 0) and
+//! the ray-box unit (`raybox`, `core_rig` port 1) are checked by the same code, so a protocol
+//! rule or a kind of back-pressure added for one host holds for all of them, and a host that
+//! passes in one harness cannot break the rules in another. (The capture path once had a
+//! write-only model of its own, `f2sdram.rs`; this one absorbed it.)
 //!
 //! It is signal-agnostic: each cycle the harness asks [`AvalonMemory::begin_cycle`] for the
 //! agent's outputs, drives them into the host, samples the host's command, and hands it to
-//! [`AvalonMemory::end_cycle`] at the rising edge. Protocol violations by the host are
-//! recorded, never panicked on, so a test can assert there were none.
+//! [`AvalonMemory::end_cycle`] at the rising edge. Protocol violations by the host, and writes
+//! outside the allowed window, are recorded as [`Violation`]s, never panicked on, so a test
+//! can assert there were none. The HPS reads the storage through `skylux_bus::DmaMemory`, as
+//! it reads the reserved buffer on the board.
 
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
+use skylux_bus::{check_access, BusError, DmaMemory};
 use std::collections::VecDeque;
+
+/// Largest burst of the f2sdram port's 8-bit burstcount (hardware-facts.md §3.2, §4).
+pub const MAX_BURST_BEATS: u32 = 128;
 
 /// How the host's `address` counts.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -19,6 +32,40 @@ pub enum AddressUnit {
     Bytes,
     /// Word addresses of the data width (the HPS f2sdram conduit, hardware-facts.md §3.2).
     Words,
+}
+
+/// When the agent stalls the host: the waitrequest fields of [`AvalonMemoryConfig`] as one
+/// value, for harnesses that take a policy ([`AvalonMemoryConfig::with_wait_policy`]).
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct WaitPolicy {
+    /// Probability of waitrequest in any cycle.
+    pub random: f64,
+    /// Probability that a long stall starts in a cycle, and its length (a refresh, another
+    /// port's burst).
+    pub stall_start: f64,
+    pub stall_cycles: u64,
+    /// One deterministic stall: from this cycle, for this many cycles (back-pressure tests).
+    pub hold_from_cycle: u64,
+    pub hold_cycles: u64,
+}
+
+impl WaitPolicy {
+    /// Never stalls.
+    pub const NONE: WaitPolicy = WaitPolicy {
+        random: 0.0,
+        stall_start: 0.0,
+        stall_cycles: 0,
+        hold_from_cycle: 0,
+        hold_cycles: 0,
+    };
+
+    /// waitrequest in a random `fraction` of cycles.
+    pub fn random(fraction: f64) -> Self {
+        WaitPolicy {
+            random: fraction,
+            ..Self::NONE
+        }
+    }
 }
 
 /// The model's configuration.
@@ -31,8 +78,21 @@ pub struct AvalonMemoryConfig {
     pub base: u64,
     /// Storage size in bytes.
     pub size_bytes: usize,
-    /// Probability that waitrequest is high in a cycle.
+    /// Probability that waitrequest is high in a cycle ([`WaitPolicy::random`]).
     pub waitrequest_probability: f64,
+    /// Probability that a long stall starts in a cycle ([`WaitPolicy::stall_start`]).
+    pub stall_start_probability: f64,
+    /// Length of a long stall in cycles ([`WaitPolicy::stall_cycles`]).
+    pub stall_length_cycles: u64,
+    /// One deterministic stall: waitrequest from this cycle for `hold_cycles` cycles.
+    pub hold_from_cycle: u64,
+    pub hold_cycles: u64,
+    /// Physical byte range `(base, bytes)` the host may write. A write beat outside it is
+    /// recorded as [`Violation::OutsideWindow`] and not written. `None`: all of the storage.
+    pub write_window: Option<(u64, u64)>,
+    /// Every write beat must enable every byte (the frame DMA's rule). Avalon itself allows
+    /// partial byte enables, and the model honours them either way.
+    pub require_full_byteenable: bool,
     /// Cycles from an accepted read command to its first data beat (at least 1).
     pub read_latency_cycles: usize,
     /// Probability that a due read beat is held back one more cycle.
@@ -43,7 +103,7 @@ pub struct AvalonMemoryConfig {
 }
 
 impl Default for AvalonMemoryConfig {
-    /// A 64-bit f2sdram-like port: word addresses, bursts up to 128, no stalls.
+    /// A 64-bit f2sdram-like port: word addresses, bursts up to 128, no stalls, no window.
     fn default() -> Self {
         Self {
             width_bytes: 8,
@@ -51,10 +111,41 @@ impl Default for AvalonMemoryConfig {
             base: 0,
             size_bytes: 1 << 16,
             waitrequest_probability: 0.0,
+            stall_start_probability: 0.0,
+            stall_length_cycles: 0,
+            hold_from_cycle: 0,
+            hold_cycles: 0,
+            write_window: None,
+            require_full_byteenable: false,
             read_latency_cycles: 4,
             read_gap_probability: 0.0,
-            max_burst: 128,
+            max_burst: MAX_BURST_BEATS,
             seed: 1,
+        }
+    }
+}
+
+impl AvalonMemoryConfig {
+    /// The waitrequest fields as one policy.
+    pub fn wait_policy(&self) -> WaitPolicy {
+        WaitPolicy {
+            random: self.waitrequest_probability,
+            stall_start: self.stall_start_probability,
+            stall_cycles: self.stall_length_cycles,
+            hold_from_cycle: self.hold_from_cycle,
+            hold_cycles: self.hold_cycles,
+        }
+    }
+
+    /// This configuration with the waitrequest fields set from `policy`.
+    pub fn with_wait_policy(self, policy: WaitPolicy) -> Self {
+        Self {
+            waitrequest_probability: policy.random,
+            stall_start_probability: policy.stall_start,
+            stall_length_cycles: policy.stall_cycles,
+            hold_from_cycle: policy.hold_from_cycle,
+            hold_cycles: policy.hold_cycles,
+            ..self
         }
     }
 }
@@ -88,12 +179,13 @@ pub struct Access {
     pub bytes: u64,
 }
 
-/// A protocol violation or an access the storage does not hold.
+/// A protocol violation, an access the storage does not hold, or a write it must not take.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Violation {
     ReadAndWrite {
         cycle: u64,
     },
+    /// burstcount 0 or above the port's largest burst (the command is ignored).
     BadBurstCount {
         cycle: u64,
         burstcount: u32,
@@ -101,13 +193,17 @@ pub enum Violation {
     ReadDuringWriteBurst {
         cycle: u64,
     },
+    /// Address or burstcount changed inside a write burst (the f2sdram hosts keep them
+    /// constant through the burst).
     WriteBurstChanged {
         cycle: u64,
     },
+    /// An address not aligned to the data width.
     Unaligned {
         cycle: u64,
         address: u64,
     },
+    /// A command reaching bytes the storage does not have (those bytes are not written).
     OutOfRange {
         cycle: u64,
         address: u64,
@@ -116,21 +212,38 @@ pub enum Violation {
     CommandDroppedUnderWaitrequest {
         cycle: u64,
     },
+    /// A write beat without every byte enabled, where the configuration requires them all.
+    PartialByteEnable {
+        cycle: u64,
+        byteenable: u32,
+    },
+    /// A write beat outside the allowed write window (it was not written).
+    OutsideWindow {
+        cycle: u64,
+        address: u64,
+        bytes: u64,
+    },
 }
 
+#[derive(Clone, Debug)]
 struct WriteBurst {
+    /// The first beat's `address` and `burstcount`, as the host drove them.
+    address: u64,
+    burstcount: u32,
     next_byte: u64,
     beats_left: u32,
-    burstcount: u32,
 }
 
 /// The memory agent model.
+#[derive(Clone, Debug)]
 pub struct AvalonMemory {
     pub config: AvalonMemoryConfig,
     bytes: Vec<u8>,
     rng: StdRng,
     cycle: u64,
     outputs: AgentOutputs,
+    /// Cycles left in the current long stall.
+    stall_left: u64,
     /// Read beats due: (cycle from which it may be returned, physical byte address).
     pending_reads: VecDeque<(u64, u64)>,
     write_burst: Option<WriteBurst>,
@@ -140,6 +253,10 @@ pub struct AvalonMemory {
     pub violations: Vec<Violation>,
     /// Cycles in which waitrequest was high.
     pub waitrequest_cycles: u64,
+    /// Cycles in which the host drove a command and waitrequest held it off.
+    pub stall_cycles: u64,
+    /// Write beats taken (including beats refused outside the write window).
+    pub beats: u64,
     /// When set, waitrequest stays high from this cycle on (a hung port).
     pub hang_from_cycle: Option<u64>,
 }
@@ -158,14 +275,22 @@ impl AvalonMemory {
             config,
             cycle: 0,
             outputs: AgentOutputs::default(),
+            stall_left: 0,
             pending_reads: VecDeque::new(),
             write_burst: None,
             stalled: None,
             accesses: vec![],
             violations: vec![],
             waitrequest_cycles: 0,
+            stall_cycles: 0,
+            beats: 0,
             hang_from_cycle: None,
         }
+    }
+
+    /// Changes the waitrequest policy from the next cycle on.
+    pub fn set_wait_policy(&mut self, policy: WaitPolicy) {
+        self.config = self.config.clone().with_wait_policy(policy);
     }
 
     /// Cycles run so far.
@@ -176,6 +301,11 @@ impl AvalonMemory {
     /// Read beats still to be returned.
     pub fn reads_pending(&self) -> usize {
         self.pending_reads.len()
+    }
+
+    /// Whether a write burst is in progress.
+    pub fn in_write_burst(&self) -> bool {
+        self.write_burst.is_some()
     }
 
     /// The storage's bytes at physical `address`, if it holds them all.
@@ -201,13 +331,30 @@ impl AvalonMemory {
         self.slice(address, bytes as usize).is_some()
     }
 
-    /// The agent's outputs for this cycle: waitrequest (random, or a hang) and the next read
-    /// beat if one is due.
+    fn in_write_window(&self, address: u64, bytes: u64) -> bool {
+        self.config.write_window.is_none_or(|(base, size)| {
+            address >= base && address.saturating_add(bytes) <= base.saturating_add(size)
+        })
+    }
+
+    /// The agent's outputs for this cycle: waitrequest (a hang, the hold, a long stall or a
+    /// random stall) and the next read beat if one is due.
     pub fn begin_cycle(&mut self) -> AgentOutputs {
-        let hung = self.hang_from_cycle.is_some_and(|c| self.cycle >= c);
-        let waitrequest = hung || self.rng.gen_bool(self.config.waitrequest_probability);
+        let c = &self.config;
+        let hung = self.hang_from_cycle.is_some_and(|h| self.cycle >= h);
+        let held = self.cycle >= c.hold_from_cycle
+            && self.cycle < c.hold_from_cycle.saturating_add(c.hold_cycles);
+        // A long stall runs its length; the cycle after it, none starts.
+        if self.stall_left > 0 {
+            self.stall_left -= 1;
+        } else if c.stall_start_probability > 0.0
+            && self.rng.gen_bool(c.stall_start_probability.min(1.0))
+        {
+            self.stall_left = c.stall_length_cycles;
+        }
+        let random = !hung && self.rng.gen_bool(c.waitrequest_probability.min(1.0));
         let mut out = AgentOutputs {
-            waitrequest,
+            waitrequest: hung || held || self.stall_left > 0 || random,
             ..Default::default()
         };
         if let Some(&(due, address)) = self.pending_reads.front() {
@@ -248,101 +395,137 @@ impl AvalonMemory {
         }
         if self.outputs.waitrequest {
             self.stalled = Some(*cmd);
+            self.stall_cycles += 1;
             return;
         }
-        let w = self.config.width_bytes as u64;
         if cmd.read {
-            if self.write_burst.is_some() {
-                self.violations
-                    .push(Violation::ReadDuringWriteBurst { cycle });
-                return;
-            }
-            if cmd.burstcount == 0 || cmd.burstcount > self.config.max_burst {
-                self.violations.push(Violation::BadBurstCount {
-                    cycle,
-                    burstcount: cmd.burstcount,
-                });
-                return;
-            }
-            let address = self.byte_address(cmd.address);
-            let bytes = w * cmd.burstcount as u64;
-            if !address.is_multiple_of(w) {
-                self.violations
-                    .push(Violation::Unaligned { cycle, address });
-            }
-            if !self.in_range(address, bytes) {
-                self.violations.push(Violation::OutOfRange {
-                    cycle,
-                    address,
-                    bytes,
-                });
-            }
-            self.accesses.push(Access {
-                write: false,
+            self.read_command(cycle, cmd);
+        } else {
+            self.write_beat(cycle, cmd);
+        }
+    }
+
+    /// The checks every command makes when it starts a transfer (a read, or a write burst's
+    /// first beat): burstcount, alignment and range. Logs the access and returns its physical
+    /// byte address, or `None` when the burstcount makes it no transfer at all.
+    fn check_command(&mut self, cycle: u64, cmd: &HostCommand) -> Option<u64> {
+        if cmd.burstcount == 0 || cmd.burstcount > self.config.max_burst {
+            self.violations.push(Violation::BadBurstCount {
+                cycle,
+                burstcount: cmd.burstcount,
+            });
+            return None;
+        }
+        let w = self.config.width_bytes as u64;
+        let address = self.byte_address(cmd.address);
+        let bytes = w * u64::from(cmd.burstcount);
+        if !address.is_multiple_of(w) {
+            self.violations
+                .push(Violation::Unaligned { cycle, address });
+        }
+        if !self.in_range(address, bytes) {
+            self.violations.push(Violation::OutOfRange {
+                cycle,
                 address,
                 bytes,
             });
-            let first = self.cycle + self.config.read_latency_cycles as u64 - 1;
-            for k in 0..cmd.burstcount as u64 {
-                self.pending_reads.push_back((first, address + k * w));
-            }
+        }
+        self.accesses.push(Access {
+            write: cmd.write,
+            address,
+            bytes,
+        });
+        Some(address)
+    }
+
+    fn read_command(&mut self, cycle: u64, cmd: &HostCommand) {
+        if self.write_burst.is_some() {
+            self.violations
+                .push(Violation::ReadDuringWriteBurst { cycle });
             return;
         }
-        // A write beat: the first of a burst carries address and burstcount.
+        let Some(address) = self.check_command(cycle, cmd) else {
+            return;
+        };
+        let w = self.config.width_bytes as u64;
+        let first = self.cycle + self.config.read_latency_cycles as u64 - 1;
+        for k in 0..u64::from(cmd.burstcount) {
+            self.pending_reads.push_back((first, address + k * w));
+        }
+    }
+
+    /// A write beat: the first of a burst carries address and burstcount.
+    fn write_beat(&mut self, cycle: u64, cmd: &HostCommand) {
         let mut burst = match self.write_burst.take() {
             Some(b) => {
-                if cmd.burstcount != b.burstcount {
+                if cmd.address != b.address || cmd.burstcount != b.burstcount {
                     self.violations.push(Violation::WriteBurstChanged { cycle });
                 }
                 b
             }
             None => {
-                if cmd.burstcount == 0 || cmd.burstcount > self.config.max_burst {
-                    self.violations.push(Violation::BadBurstCount {
-                        cycle,
-                        burstcount: cmd.burstcount,
-                    });
+                let Some(address) = self.check_command(cycle, cmd) else {
                     return;
-                }
-                let address = self.byte_address(cmd.address);
-                let bytes = w * cmd.burstcount as u64;
-                if !address.is_multiple_of(w) {
-                    self.violations
-                        .push(Violation::Unaligned { cycle, address });
-                }
-                if !self.in_range(address, bytes) {
-                    self.violations.push(Violation::OutOfRange {
-                        cycle,
-                        address,
-                        bytes,
-                    });
-                }
-                self.accesses.push(Access {
-                    write: true,
-                    address,
-                    bytes,
-                });
+                };
                 WriteBurst {
+                    address: cmd.address,
+                    burstcount: cmd.burstcount,
                     next_byte: address,
                     beats_left: cmd.burstcount,
-                    burstcount: cmd.burstcount,
                 }
             }
         };
-        let data = cmd.writedata.to_le_bytes();
-        let (address, enables) = (burst.next_byte, cmd.byteenable);
-        if let Some(s) = self.slice_mut(address, w as usize) {
+        let w = self.config.width_bytes;
+        let full = (1u32 << w) - 1;
+        if self.config.require_full_byteenable && cmd.byteenable & full != full {
+            self.violations.push(Violation::PartialByteEnable {
+                cycle,
+                byteenable: cmd.byteenable,
+            });
+        }
+        self.beats += 1;
+        let address = burst.next_byte;
+        if !self.in_write_window(address, w as u64) {
+            self.violations.push(Violation::OutsideWindow {
+                cycle,
+                address,
+                bytes: w as u64,
+            });
+        } else if let Some(s) = self.slice_mut(address, w) {
+            let data = cmd.writedata.to_le_bytes();
             for (i, b) in s.iter_mut().enumerate() {
-                if enables & (1 << i) != 0 {
+                if cmd.byteenable & (1 << i) != 0 {
                     *b = data[i];
                 }
             }
         }
-        burst.next_byte += w;
+        burst.next_byte += w as u64;
         burst.beats_left -= 1;
         if burst.beats_left > 0 {
             self.write_burst = Some(burst);
         }
+    }
+}
+
+/// The storage as the HPS sees its DMA buffer: offsets from `config.base`.
+impl DmaMemory for AvalonMemory {
+    fn phys_base(&self) -> u64 {
+        self.config.base
+    }
+    fn len_bytes(&self) -> u64 {
+        self.bytes.len() as u64
+    }
+    fn read_bytes(&mut self, offset: u64, buf: &mut [u8]) -> Result<(), BusError> {
+        check_access(offset, buf.len() as u64, self.len_bytes(), 1)?;
+        let o = offset as usize;
+        buf.copy_from_slice(&self.bytes[o..o + buf.len()]);
+        Ok(())
+    }
+    fn write_bytes(&mut self, offset: u64, data: &[u8]) -> Result<(), BusError> {
+        check_access(offset, data.len() as u64, self.len_bytes(), 1)?;
+        let o = offset as usize;
+        self.bytes[o..o + data.len()].copy_from_slice(data);
+        Ok(())
     }
 }
 
@@ -478,5 +661,159 @@ mod tests {
                 },
             ]
         );
+    }
+
+    fn write(address: u64, burstcount: u32, writedata: u128) -> HostCommand {
+        HostCommand {
+            address,
+            write: true,
+            burstcount,
+            writedata,
+            byteenable: 0xFF,
+            ..Default::default()
+        }
+    }
+
+    /// One cycle of a harness that drives every command until it is taken; returns whether
+    /// it was (waitrequest low).
+    fn cycle(m: &mut AvalonMemory, cmd: &HostCommand) -> bool {
+        let out = m.begin_cycle();
+        m.end_cycle(cmd);
+        !out.waitrequest
+    }
+
+    /// The frame DMA's port: byte addresses, full byte enables, a window inside the storage.
+    fn frame_port(policy: WaitPolicy) -> AvalonMemory {
+        AvalonMemory::new(
+            AvalonMemoryConfig {
+                address_unit: AddressUnit::Bytes,
+                base: 0,
+                size_bytes: 256,
+                write_window: Some((64, 64)),
+                require_full_byteenable: true,
+                seed: 7,
+                ..Default::default()
+            }
+            .with_wait_policy(policy),
+        )
+    }
+
+    #[test]
+    fn write_burst_counts_beats_and_stalls_and_reads_back_through_dma_memory() {
+        let mut m = frame_port(WaitPolicy::random(0.5));
+        let (mut written, mut cycles) = (0u64, 0u64);
+        while written < 4 {
+            if cycle(&mut m, &write(80, 4, 0x1111 * u128::from(written + 1))) {
+                written += 1;
+            }
+            cycles += 1;
+        }
+        assert!(m.violations.is_empty(), "{:?}", m.violations);
+        assert!(!m.in_write_burst());
+        assert_eq!(m.beats, 4);
+        assert_eq!(m.stall_cycles, cycles - 4);
+        assert_eq!(m.stall_cycles, m.waitrequest_cycles);
+        assert!(m.stall_cycles > 0);
+        let mut buf = [0u8; 8];
+        m.read_bytes(80 + 3 * 8, &mut buf).unwrap();
+        assert_eq!(u64::from_le_bytes(buf), 0x4444);
+        assert_eq!((m.phys_base(), m.len_bytes()), (0, 256));
+        m.write_bytes(0, &[9]).unwrap();
+        assert_eq!(m.slice(0, 1), Some(&[9u8][..]));
+        assert!(m.read_bytes(250, &mut buf).is_err());
+    }
+
+    #[test]
+    fn writes_outside_the_window_are_refused_and_recorded() {
+        let mut m = frame_port(WaitPolicy::NONE);
+        // A burst from inside the window across its end: the second beat is refused.
+        cycle(&mut m, &write(120, 2, 5));
+        cycle(&mut m, &write(120, 2, 6));
+        assert_eq!(
+            m.violations,
+            vec![Violation::OutsideWindow {
+                cycle: 1,
+                address: 128,
+                bytes: 8
+            }]
+        );
+        assert_eq!(m.beats, 2);
+        assert_eq!(m.slice(120, 1), Some(&[5u8][..]));
+        assert_eq!(m.slice(128, 1), Some(&[0u8][..]));
+        m.violations.clear();
+        // No transfer at all: nothing written, nothing counted.
+        cycle(&mut m, &write(64, 0, 1));
+        assert_eq!(
+            m.violations,
+            vec![Violation::BadBurstCount {
+                cycle: 2,
+                burstcount: 0
+            }]
+        );
+        assert_eq!(m.beats, 2);
+        m.violations.clear();
+        // The address changes inside a burst, then the burstcount; then a partial byte enable.
+        cycle(&mut m, &write(72, 3, 1));
+        cycle(&mut m, &write(80, 3, 2));
+        cycle(&mut m, &write(72, 2, 3));
+        assert!(!m.in_write_burst());
+        cycle(
+            &mut m,
+            &HostCommand {
+                byteenable: 0x0F,
+                ..write(64, 1, u128::MAX)
+            },
+        );
+        assert_eq!(
+            m.violations,
+            vec![
+                Violation::WriteBurstChanged { cycle: 4 },
+                Violation::WriteBurstChanged { cycle: 5 },
+                Violation::PartialByteEnable {
+                    cycle: 6,
+                    byteenable: 0x0F
+                },
+            ]
+        );
+        // The enabled bytes were written, the others kept.
+        assert_eq!(
+            m.slice(64, 8),
+            Some(&[0xFF, 0xFF, 0xFF, 0xFF, 0, 0, 0, 0][..])
+        );
+    }
+
+    #[test]
+    fn long_stalls_and_the_hold_drive_waitrequest() {
+        // The hold: cycles 3 to 5 exactly, and nothing else.
+        let mut m = frame_port(WaitPolicy {
+            hold_from_cycle: 3,
+            hold_cycles: 3,
+            ..WaitPolicy::NONE
+        });
+        let waits: Vec<bool> = (0..10)
+            .map(|_| !cycle(&mut m, &HostCommand::default()))
+            .collect();
+        let want: Vec<bool> = (0..10).map(|c| (3..6).contains(&c)).collect();
+        assert_eq!(waits, want);
+        // Long stalls: runs of exactly their length, each followed by a free cycle.
+        let mut m = frame_port(WaitPolicy {
+            stall_start: 0.2,
+            stall_cycles: 5,
+            ..WaitPolicy::NONE
+        });
+        let waits: Vec<bool> = (0..2000)
+            .map(|_| !cycle(&mut m, &HostCommand::default()))
+            .collect();
+        let runs: Vec<usize> = waits
+            .split(|w| !w)
+            .map(<[bool]>::len)
+            .filter(|&n| n > 0)
+            .collect();
+        // (The last may be cut short by the end of the run.)
+        let (last, whole) = runs.split_last().unwrap();
+        assert!(whole.len() > 50, "{} stalls", whole.len());
+        assert!(whole.iter().all(|&n| n == 5) && *last <= 5, "{runs:?}");
+        assert_eq!(m.waitrequest_cycles, runs.iter().sum::<usize>() as u64);
+        assert_eq!(m.stall_cycles, 0, "no command was stalled");
     }
 }

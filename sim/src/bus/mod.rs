@@ -6,6 +6,6 @@ mod register_bus;
 mod register_model;
 
 pub use avalon_host::AvalonHost;
-pub use avalon_memory::{AvalonMemory, AvalonMemoryConfig};
+pub use avalon_memory::{AvalonMemory, AvalonMemoryConfig, WaitPolicy};
 pub use register_bus::SimRegisterBus;
 pub use register_model::RegisterFileModel;
