@@ -3,6 +3,7 @@
 mod bench;
 mod bench_capture;
 mod bench_raybox;
+mod calibrate;
 mod closure;
 mod dc;
 mod demo;
@@ -37,6 +38,9 @@ enum Command {
         #[arg(long, default_value = "skylux-demo")]
         out: std::path::PathBuf,
     },
+    /// Camera calibration: `skylux calibrate spectral|vignetting|response|geometry ...`
+    /// writes device.toml and a report (docs/calibration.md).
+    Calibrate(calibrate::CalibrateArgs),
     /// The pyranometer closure GHI = DNI cos Z + DHI: residual, instrument effects, report.
     Closure(closure::ClosureArgs),
     /// Measures speed next to a reference (`skylux bench hdr --json`).
@@ -68,6 +72,7 @@ fn main() -> anyhow::Result<()> {
         Command::Hdr(args) => hdr::run(&args),
         Command::Illuminance(args) => illuminance::run(&args),
         Command::Bench(args) => bench::run(&args),
+        Command::Calibrate(args) => calibrate::run(&args),
         Command::Closure(args) => closure::run(&args),
         Command::Loop(args) => loop_cmd::run(&args),
         Command::Sim(args) => sim_cmd::run(&args),

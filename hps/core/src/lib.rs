@@ -1,12 +1,14 @@
 //! The HPS side of Skylux: drivers for the fabric (over `skylux-bus`), and from later issues
 //! HDR synthesis, the sky, the sun and the daylighting engine.
 
+pub mod calibration;
 pub mod camera;
 pub mod campaign;
 pub mod engine;
 pub mod fpga;
 pub mod hdr;
 pub mod io;
+pub mod photometry;
 pub mod scene;
 pub mod sky;
 pub mod sun;
