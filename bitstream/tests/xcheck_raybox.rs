@@ -81,7 +81,7 @@ fn check<const L: usize>(seed: u64) {
     let mut s = RayBoxSystem::<L>::new(AvalonMemoryConfig {
         base: BASE,
         size_bytes: 4096,
-        waitrequest_probability: 0.3,
+        wait: skylux_sim::bus::WaitPolicy::random(0.3),
         read_gap_probability: 0.2,
         seed,
         ..Default::default()

@@ -10,7 +10,7 @@
 //! (the pixel bus), never with a rising edge (rtl/src/drive.rs).
 
 use crate::bus::avalon_memory::{
-    Access, AddressUnit, AgentOutputs, AvalonMemory, AvalonMemoryConfig, HostCommand,
+    Access, AddressUnit, AgentOutputs, AvalonMemory, AvalonMemoryConfig, HostCommand, WaitPolicy,
 };
 use crate::mt9p031::Mt9p031;
 use rust_hdl::prelude::*;
@@ -48,7 +48,7 @@ impl CoreRigConfig {
             address_unit: AddressUnit::Words,
             base,
             size_bytes,
-            waitrequest_probability,
+            wait: WaitPolicy::random(waitrequest_probability),
             seed,
             ..Default::default()
         };
@@ -69,6 +69,7 @@ pub struct CoreLog {
     pub shield_position: i64,
     /// Longest stretch of system clocks with the shield away from closed.
     pub shield_open_cycles_max: u64,
+    /// RESET_BAR (the core's `reset_n` pin) has been high at least once.
     pub reset_released: bool,
 }
 

@@ -1,5 +1,5 @@
 //! The capture path end to end: pixel bus -> rust-hdl CapturePath (capture, Bayer grouper,
-//! clock-domain FIFO, frame DMA) -> f2sdram model -> the HPS frame reader, on small windows.
+//! clock-domain FIFO, frame DMA) -> the SDRAM model (`AvalonMemory`) -> the HPS frame reader, on small windows.
 //! Every frame is checked against the Bayer golden model and its descriptor; every injected
 //! fault must end in a flagged frame or status bit, and no write may leave the window.
 

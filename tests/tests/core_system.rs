@@ -116,8 +116,10 @@ fn the_whole_core_captures_a_five_exposure_sequence_bit_for_bit() {
         Err(SensorError::Nack { reg: 0 }) => {}
         other => panic!("a sensor in reset answered: {other:?}"),
     }
+    assert!(!b.shared.lock().unwrap().log.reset_released);
     f.sensor_reset_release(true).unwrap();
     assert_eq!(f.sensor_configure(&sensor_window()).unwrap(), CHIP_VERSION);
+    assert!(b.shared.lock().unwrap().log.reset_released);
 
     // A black level and a valid range that flag some of the ramp's groups both ways.
     b.capture.grouping.black_level_dn = 5;
@@ -177,7 +179,7 @@ fn the_whole_core_captures_a_five_exposure_sequence_bit_for_bit() {
 
     // Nothing outside the DMA window, the shield closed and within its limit.
     let end = WINDOW_BASE + u64::from(b.capture.window_size_bytes);
-    for a in &rig.frames.accesses {
+    for a in rig.frame_writes() {
         assert!(
             a.write && a.address >= WINDOW_BASE && a.address + a.bytes <= end,
             "{a:?}"
@@ -202,11 +204,37 @@ fn a_ring_smaller_than_the_sequence_flags_nothing_and_keeps_the_newest() {
     f.configure_shield(&SHIELD).unwrap();
     f.run_sequence(200_000).unwrap();
     assert_eq!(wait_frames_written(f, 5), 5);
-    let numbers: Vec<u32> = read_frames(&mut b, 3)
-        .iter()
-        .map(|c| c.descriptor.frame_number)
-        .collect();
+    let frames = read_frames(&mut b, 3);
+    for c in &frames {
+        assert_eq!(c.descriptor.flags, 0, "{:?}", c.flag_names());
+        assert_eq!(c.checksum_ok(), Some(true));
+    }
+    let numbers: Vec<u32> = frames.iter().map(|c| c.descriptor.frame_number).collect();
     assert_eq!(numbers, vec![3, 4, 2]);
+}
+
+/// The HDR merge of `frames` taken at 1, 2, 4, ... ms (the `slots()` exposures), unit gain.
+fn merge_doubling<F: skylux_hps::hdr::ExposureFrame>(
+    frames: &[F],
+    device: &skylux_hps::camera::DeviceConfig,
+    geometry: &skylux_hps::hdr::GroupGeometry,
+) -> skylux_hps::hdr::LuminanceMap {
+    let exposures: Vec<_> = frames
+        .iter()
+        .enumerate()
+        .map(|(i, frame)| skylux_hps::hdr::Exposure {
+            frame,
+            exposure_s: 1e-3 * (1 << i) as f64,
+            gain: 1.0,
+        })
+        .collect();
+    skylux_hps::hdr::merge(
+        &exposures,
+        device,
+        skylux_hps::campaign::BayerPattern::GRBG,
+        geometry,
+    )
+    .expect("merge")
 }
 
 /// The HDR merge of the fabric's grouped words equals the merge of the raw frames the sensor
@@ -216,8 +244,8 @@ fn hdr_from_words_equals_hdr_from_samples(
     sent: &[skylux_hps::campaign::RawFrame],
 ) {
     use skylux_hps::camera::{CameraModel, DeviceConfig};
-    use skylux_hps::campaign::{BayerPattern, Readout};
-    use skylux_hps::hdr::{merge, Exposure, GroupGeometry, GroupedFrame, MapFlag};
+    use skylux_hps::campaign::Readout;
+    use skylux_hps::hdr::{GroupGeometry, GroupedFrame, MapFlag};
     let mut device = DeviceConfig::default();
     device.sensor.black_level_dn = 5.0;
     device.sensor.valid_min_dn = 20.0;
@@ -231,7 +259,6 @@ fn hdr_from_words_equals_hdr_from_samples(
         skip: 1,
     };
     let geometry = GroupGeometry::new(&camera, &readout, WIDTH as usize, HEIGHT as usize);
-    let exposure_s = |i: usize| 1e-3 * (1 << i) as f64;
     let grouped: Vec<GroupedFrame> = captured
         .iter()
         .map(|c| GroupedFrame {
@@ -240,36 +267,8 @@ fn hdr_from_words_equals_hdr_from_samples(
             words: c.words.clone(),
         })
         .collect();
-    let from_words = merge(
-        &grouped
-            .iter()
-            .enumerate()
-            .map(|(i, f)| Exposure {
-                frame: f,
-                exposure_s: exposure_s(i),
-                gain: 1.0,
-            })
-            .collect::<Vec<_>>(),
-        &device,
-        BayerPattern::GRBG,
-        &geometry,
-    )
-    .unwrap();
-    let from_samples = merge(
-        &sent
-            .iter()
-            .enumerate()
-            .map(|(i, f)| Exposure {
-                frame: f,
-                exposure_s: exposure_s(i),
-                gain: 1.0,
-            })
-            .collect::<Vec<_>>(),
-        &device,
-        BayerPattern::GRBG,
-        &geometry,
-    )
-    .unwrap();
+    let from_words = merge_doubling(&grouped, &device, &geometry);
+    let from_samples = merge_doubling(sent, &device, &geometry);
     assert_eq!(from_words.flags, from_samples.flags);
     let valid = from_words
         .flags

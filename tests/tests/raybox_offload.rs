@@ -25,7 +25,7 @@ fn memory(seed: u64, stall: f64) -> AvalonMemoryConfig {
     AvalonMemoryConfig {
         base: BASE,
         size_bytes: 1 << 14,
-        waitrequest_probability: stall,
+        wait: skylux_sim::bus::WaitPolicy::random(stall),
         read_gap_probability: stall / 2.0,
         read_latency_cycles: 5,
         seed,

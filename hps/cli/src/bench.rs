@@ -2,10 +2,10 @@
 //! (BENCHMARKS.md keeps the figures).
 
 use anyhow::Context;
-use glam::DVec3;
-use skylux_hps::camera::{CameraModel, DeviceConfig, ImagePoint, OrientationConfig};
-use skylux_hps::campaign::{BayerPattern, RawFrame, Readout};
-use skylux_hps::hdr::{merge, Exposure, GroupGeometry, LuminanceMap, MapFlag};
+use skylux_hps::camera::{CameraModel, DeviceConfig, ImagePoint};
+use skylux_hps::campaign::BayerPattern;
+use skylux_hps::hdr::{merge, Exposure, LuminanceMap, MapFlag};
+use skylux_sim::hdr_case::{HdrCase, EXPOSURES_S, HEIGHT_PX, WIDTH_PX};
 use std::time::Instant;
 
 #[derive(clap::Args)]
@@ -17,8 +17,8 @@ pub struct BenchArgs {
 #[derive(clap::Subcommand)]
 enum BenchWhat {
     /// One frame through the capture path: pixel bus, rust-hdl capture + Bayer grouper +
-    /// clock-domain FIFO + frame DMA, the f2sdram model with random waitrequest, and the HPS
-    /// frame reader; checked against the Bayer golden model.
+    /// clock-domain FIFO + frame DMA, the SDRAM model on the f2sdram port with random
+    /// waitrequest, and the HPS frame reader; checked against the Bayer golden model.
     Capture(crate::bench_capture::CaptureBenchArgs),
     /// The ray-box unit: tests per cycle in cycle-accurate simulation with memory stalls,
     /// Cyclone V resources, projected tests/s next to the software slab test, false misses.
@@ -51,9 +51,34 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     }
 }
 
-const EXPOSURES_S: [f64; 5] = [1e-6, 2.659_148e-5, 7.071_068e-4, 1.880_302e-2, 0.5];
-const WIDTH: usize = 2592;
-const HEIGHT: usize = 1944;
+const WIDTH: usize = WIDTH_PX;
+const HEIGHT: usize = HEIGHT_PX;
+
+/// CPU time of the calling thread, ms; `None` where the platform has no per-thread clock.
+fn thread_cpu_ms() -> Option<f64> {
+    #[cfg(unix)]
+    {
+        let mut t = libc::timespec {
+            tv_sec: 0,
+            tv_nsec: 0,
+        };
+        // SAFETY: clock_gettime writes the timespec it is given and nothing else.
+        if unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut t) } == 0 {
+            return Some(t.tv_sec as f64 * 1e3 + t.tv_nsec as f64 * 1e-6);
+        }
+    }
+    None
+}
+
+/// The 1-minute load average (Linux), so a reader sees how busy the machine was.
+fn load_average() -> Option<f64> {
+    std::fs::read_to_string("/proc/loadavg")
+        .ok()?
+        .split_whitespace()
+        .next()?
+        .parse()
+        .ok()
+}
 
 fn median_ms(repeat: usize, mut f: impl FnMut()) -> f64 {
     let mut times: Vec<f64> = (0..repeat)
@@ -68,88 +93,36 @@ fn median_ms(repeat: usize, mut f: impl FnMut()) -> f64 {
 }
 
 fn bench_hdr(json: bool, repeat: usize) -> anyhow::Result<()> {
-    let mut device = DeviceConfig::default();
-    device.response.cg = 1.4;
-    device.sensor.black_level_dn = 10.0;
-    device.sensor.valid_min_dn = 50.0;
-    device.sensor.valid_max_dn = 3110.0;
-    device.lens.focal_px = 600.0;
-    device.lens.vignetting = vec![0.6, 0.3, 0.1, 0.0, 0.0];
-    device.orientation = OrientationConfig {
-        axis_azimuth_deg: 0.0,
-        axis_altitude_deg: 90.0,
-        roll_deg: 0.0,
-    };
-    let camera = CameraModel::new(device.clone());
-    let readout = Readout {
-        col_start: 0,
-        row_start: 0,
-        skip: 1,
-    };
-
-    let geometry_start = Instant::now();
-    let geometry = GroupGeometry::new(&camera, &readout, WIDTH, HEIGHT);
-    let geometry_ms = geometry_start.elapsed().as_secs_f64() * 1e3;
-
-    // A 1.2e2 to 3.8e9 cd/m² log ramp across the image (150 dB).
-    let v = DVec3::new(1.0, 0.4, 0.2).normalize();
-    let dots: Vec<f64> = geometry
-        .direction
-        .iter()
-        .filter(|d| d.is_finite())
-        .map(|d| d.as_dvec3().dot(v))
-        .collect();
-    let (lo, hi) = dots
-        .iter()
-        .fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
-    let field = move |d: DVec3| {
-        1.2e2 * (3.8e9f64 / 1.2e2).powf(((d.dot(v) - lo) / (hi - lo)).clamp(0.0, 1.0))
-    };
-    let renderer = skylux_sim::sensor::FrameRenderer {
-        camera: &camera,
-        readout,
-        raw_width: WIDTH,
-        raw_height: HEIGHT,
-        footprint: Default::default(),
-    };
-    let frames: Vec<RawFrame> = EXPOSURES_S
-        .iter()
-        .enumerate()
-        .map(|(k, &t)| {
-            renderer.render(
-                &field,
-                t,
-                1.0,
-                skylux_sim::sensor::Noise::Sensor {
-                    seed: 100 + k as u64,
-                },
-            )
-        })
-        .collect();
-    let exposures: Vec<Exposure> = frames
-        .iter()
-        .zip(EXPOSURES_S)
-        .map(|(f, t)| Exposure {
-            frame: f,
-            exposure_s: t,
-            gain: 1.0,
-        })
-        .collect();
+    let case = HdrCase::new();
+    let (device, camera, geometry) = (&case.device, &case.camera, &case.geometry);
+    let exposures = case.exposures();
 
     let one_core = rayon::ThreadPoolBuilder::new()
         .num_threads(1)
         .build()
         .context("thread pool")?;
     let mut map = None;
+    // Wall time, and the CPU time of the pool's one thread: on a shared machine the second
+    // is what one core spends, whatever else runs.
+    let mut cpu_ms = Vec::new();
     let single_core_ms = median_ms(repeat, || {
-        map = Some(one_core.install(|| merge(&exposures, &device, BayerPattern::GRBG, &geometry)));
+        map = Some(one_core.install(|| {
+            let start = thread_cpu_ms();
+            let m = merge(&exposures, device, BayerPattern::GRBG, geometry);
+            if let (Some(a), Some(b)) = (start, thread_cpu_ms()) {
+                cpu_ms.push(b - a);
+            }
+            m
+        }));
     });
+    cpu_ms.sort_by(f64::total_cmp);
+    let single_core_cpu_ms = cpu_ms.get(cpu_ms.len() / 2).copied();
     let all_cores_ms = median_ms(repeat, || {
-        map = Some(merge(&exposures, &device, BayerPattern::GRBG, &geometry));
+        map = Some(merge(&exposures, device, BayerPattern::GRBG, geometry));
     });
     let map = map.unwrap()?;
     let baseline_ms = median_ms(repeat.min(2), || {
-        std::hint::black_box(naive_merge(&exposures, &device, &camera));
+        std::hint::black_box(naive_merge(&exposures, device, camera));
     });
 
     // Accuracy against the truth, and the noise-limited bound for the same groups.
@@ -159,7 +132,7 @@ fn bench_hdr(json: bool, repeat: usize) -> anyhow::Result<()> {
         if map.flags[i] != MapFlag::Valid || !geometry.direction[i].is_finite() {
             continue;
         }
-        let truth = field(geometry.direction[i].as_dvec3());
+        let truth = case.truth_cd_m2(geometry.direction[i].as_dvec3());
         let l = map.luminance_cd_m2[i] as f64;
         let rate = truth / geometry.inverse_vignetting[i] as f64 / device.response.cg;
         let Some(b) = skylux_sim::analysis::hdr_relative_sigma_bound(&device, &EXPOSURES_S, rate)
@@ -182,9 +155,11 @@ fn bench_hdr(json: bool, repeat: usize) -> anyhow::Result<()> {
         "groups": map.width * map.height,
         "threads": rayon::current_num_threads(),
         "single_core_ms": single_core_ms,
+        "single_core_cpu_ms": single_core_cpu_ms,
         "all_cores_ms": all_cores_ms,
+        "load_average_1min": load_average(),
         "baseline_ms": baseline_ms,
-        "geometry_precompute_ms": geometry_ms,
+        "geometry_precompute_ms": case.geometry_ms,
         "valid_groups": n,
         "mean_rel_error": sum / nf,
         "rms_rel_error": (sum2 / nf).sqrt(),

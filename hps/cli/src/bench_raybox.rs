@@ -58,7 +58,7 @@ fn simulate(n: usize, stall: f64) -> anyhow::Result<(u64, u64)> {
     let mut s = RayBoxSystem::<DEFAULT_LANES>::new(AvalonMemoryConfig {
         base,
         size_bytes: size,
-        waitrequest_probability: stall,
+        wait: skylux_sim::bus::WaitPolicy::random(stall),
         read_gap_probability: stall / 2.0,
         read_latency_cycles: 12,
         seed: 3,

@@ -34,8 +34,7 @@ pub enum AddressUnit {
     Words,
 }
 
-/// When the agent stalls the host: the waitrequest fields of [`AvalonMemoryConfig`] as one
-/// value, for harnesses that take a policy ([`AvalonMemoryConfig::with_wait_policy`]).
+/// When the agent stalls the host (`AvalonMemoryConfig::wait`).
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct WaitPolicy {
     /// Probability of waitrequest in any cycle.
@@ -78,15 +77,8 @@ pub struct AvalonMemoryConfig {
     pub base: u64,
     /// Storage size in bytes.
     pub size_bytes: usize,
-    /// Probability that waitrequest is high in a cycle ([`WaitPolicy::random`]).
-    pub waitrequest_probability: f64,
-    /// Probability that a long stall starts in a cycle ([`WaitPolicy::stall_start`]).
-    pub stall_start_probability: f64,
-    /// Length of a long stall in cycles ([`WaitPolicy::stall_cycles`]).
-    pub stall_length_cycles: u64,
-    /// One deterministic stall: waitrequest from this cycle for `hold_cycles` cycles.
-    pub hold_from_cycle: u64,
-    pub hold_cycles: u64,
+    /// When waitrequest is high.
+    pub wait: WaitPolicy,
     /// Physical byte range `(base, bytes)` the host may write. A write beat outside it is
     /// recorded as [`Violation::OutsideWindow`] and not written. `None`: all of the storage.
     pub write_window: Option<(u64, u64)>,
@@ -110,11 +102,7 @@ impl Default for AvalonMemoryConfig {
             address_unit: AddressUnit::Words,
             base: 0,
             size_bytes: 1 << 16,
-            waitrequest_probability: 0.0,
-            stall_start_probability: 0.0,
-            stall_length_cycles: 0,
-            hold_from_cycle: 0,
-            hold_cycles: 0,
+            wait: WaitPolicy::NONE,
             write_window: None,
             require_full_byteenable: false,
             read_latency_cycles: 4,
@@ -126,25 +114,10 @@ impl Default for AvalonMemoryConfig {
 }
 
 impl AvalonMemoryConfig {
-    /// The waitrequest fields as one policy.
-    pub fn wait_policy(&self) -> WaitPolicy {
-        WaitPolicy {
-            random: self.waitrequest_probability,
-            stall_start: self.stall_start_probability,
-            stall_cycles: self.stall_length_cycles,
-            hold_from_cycle: self.hold_from_cycle,
-            hold_cycles: self.hold_cycles,
-        }
-    }
-
-    /// This configuration with the waitrequest fields set from `policy`.
+    /// This configuration with `policy` as its waitrequest policy.
     pub fn with_wait_policy(self, policy: WaitPolicy) -> Self {
         Self {
-            waitrequest_probability: policy.random,
-            stall_start_probability: policy.stall_start,
-            stall_length_cycles: policy.stall_cycles,
-            hold_from_cycle: policy.hold_from_cycle,
-            hold_cycles: policy.hold_cycles,
+            wait: policy,
             ..self
         }
     }
@@ -290,7 +263,7 @@ impl AvalonMemory {
 
     /// Changes the waitrequest policy from the next cycle on.
     pub fn set_wait_policy(&mut self, policy: WaitPolicy) {
-        self.config = self.config.clone().with_wait_policy(policy);
+        self.config.wait = policy;
     }
 
     /// Cycles run so far.
@@ -342,17 +315,16 @@ impl AvalonMemory {
     pub fn begin_cycle(&mut self) -> AgentOutputs {
         let c = &self.config;
         let hung = self.hang_from_cycle.is_some_and(|h| self.cycle >= h);
-        let held = self.cycle >= c.hold_from_cycle
-            && self.cycle < c.hold_from_cycle.saturating_add(c.hold_cycles);
+        let w = &c.wait;
+        let held = self.cycle >= w.hold_from_cycle
+            && self.cycle < w.hold_from_cycle.saturating_add(w.hold_cycles);
         // A long stall runs its length; the cycle after it, none starts.
         if self.stall_left > 0 {
             self.stall_left -= 1;
-        } else if c.stall_start_probability > 0.0
-            && self.rng.gen_bool(c.stall_start_probability.min(1.0))
-        {
-            self.stall_left = c.stall_length_cycles;
+        } else if w.stall_start > 0.0 && self.rng.gen_bool(w.stall_start.min(1.0)) {
+            self.stall_left = w.stall_cycles;
         }
-        let random = !hung && self.rng.gen_bool(c.waitrequest_probability.min(1.0));
+        let random = !hung && self.rng.gen_bool(w.random.min(1.0));
         let mut out = AgentOutputs {
             waitrequest: hung || held || self.stall_left > 0 || random,
             ..Default::default()
@@ -537,7 +509,7 @@ mod tests {
     #[test]
     fn bursts_through_random_waitrequest() {
         let mut m = AvalonMemory::new(AvalonMemoryConfig {
-            waitrequest_probability: 0.4,
+            wait: WaitPolicy::random(0.4),
             read_gap_probability: 0.3,
             size_bytes: 256,
             seed: 7,

@@ -233,30 +233,42 @@ pub fn merge<F: ExposureFrame>(
         }
     }
     let merger = Merger::new(exposures, device, pattern);
-    let width = geometry.width;
-    let rows: Vec<(Vec<f32>, Vec<MapFlag>, Vec<f32>)> = (0..geometry.height)
-        .into_par_iter()
-        .map_init(
-            || RowScratch::new(exposures.len(), width),
-            |scratch, gy| {
-                let inverse_vignetting = &geometry.inverse_vignetting[gy * width..(gy + 1) * width];
-                merger.row(exposures, gy, inverse_vignetting, scratch)
-            },
-        )
-        .collect();
+    let (width, height) = (geometry.width, geometry.height);
     let mut map = LuminanceMap {
         width,
-        height: geometry.height,
-        luminance_cd_m2: Vec::with_capacity(width * geometry.height),
-        flags: Vec::with_capacity(width * geometry.height),
-        relative_sigma: Vec::with_capacity(width * geometry.height),
+        height,
+        luminance_cd_m2: vec![f32::NAN; width * height],
+        flags: vec![MapFlag::UnderRange; width * height],
+        relative_sigma: vec![f32::NAN; width * height],
     };
-    for (l, f, s) in rows {
-        map.luminance_cd_m2.extend(l);
-        map.flags.extend(f);
-        map.relative_sigma.extend(s);
+    if width > 0 {
+        map.luminance_cd_m2
+            .par_chunks_mut(width)
+            .zip(map.flags.par_chunks_mut(width))
+            .zip(map.relative_sigma.par_chunks_mut(width))
+            .enumerate()
+            .for_each_init(
+                || RowScratch::new(exposures.len(), width),
+                |scratch, (gy, ((luminance, flags), sigma))| {
+                    let inverse_vignetting =
+                        &geometry.inverse_vignetting[gy * width..(gy + 1) * width];
+                    let out = RowOut {
+                        luminance,
+                        flags,
+                        sigma,
+                    };
+                    merger.row(exposures, gy, inverse_vignetting, scratch, out);
+                },
+            );
     }
     Ok(map)
+}
+
+/// One row of the map, written in place.
+struct RowOut<'a> {
+    luminance: &'a mut [f32],
+    flags: &'a mut [MapFlag],
+    sigma: &'a mut [f32],
 }
 
 /// Per-row working arrays, reused across the rows a thread merges.
@@ -267,6 +279,13 @@ struct RowScratch {
     valid: Vec<bool>,
     over: Vec<bool>,
     under: Vec<bool>,
+    /// Per group: Σ signal and Σ t g over the valid exposures, the pilot rate, and the
+    /// inverse-variance sums.
+    sum_s: Vec<f64>,
+    sum_tg: Vec<f64>,
+    pilot: Vec<f64>,
+    num: Vec<f64>,
+    den: Vec<f64>,
 }
 
 impl RowScratch {
@@ -276,6 +295,11 @@ impl RowScratch {
             valid: vec![false; exposures * width],
             over: vec![false; exposures * width],
             under: vec![false; exposures * width],
+            sum_s: vec![0.0; width],
+            sum_tg: vec![0.0; width],
+            pilot: vec![0.0; width],
+            num: vec![0.0; width],
+            den: vec![0.0; width],
         }
     }
 }
@@ -343,7 +367,8 @@ impl Merger {
         gy: usize,
         inverse_vignetting: &[f32],
         scratch: &mut RowScratch,
-    ) -> (Vec<f32>, Vec<MapFlag>, Vec<f32>) {
+        out: RowOut<'_>,
+    ) {
         let width = inverse_vignetting.len();
         let n = exposures.len();
         for (k, e) in exposures.iter().enumerate() {
@@ -359,51 +384,76 @@ impl Merger {
                 scratch.valid[i] = !(scratch.over[i] || scratch.under[i]);
             }
         }
-        let mut luminance = Vec::with_capacity(width);
-        let mut flags = Vec::with_capacity(width);
-        let mut sigma = Vec::with_capacity(width);
-        for (gx, &inv_v) in inverse_vignetting.iter().enumerate() {
-            let (mut sum_s, mut sum_tg) = (0.0, 0.0);
-            let (mut all_over, mut all_under) = (true, true);
-            for k in 0..n {
-                let i = k * width + gx;
-                all_over &= scratch.over[i];
-                all_under &= scratch.under[i];
-                if scratch.valid[i] {
-                    sum_s += scratch.signal[i];
-                    sum_tg += self.tg[k];
-                }
+        // The per-group passes run exposure-major over the whole row, without branches, so
+        // the compiler vectorises them; each group's sums are still taken in exposure order,
+        // so the result is the same as a per-group loop's.
+        let (sum_s, sum_tg) = (&mut scratch.sum_s, &mut scratch.sum_tg);
+        sum_s.iter_mut().for_each(|x| *x = 0.0);
+        sum_tg.iter_mut().for_each(|x| *x = 0.0);
+        for k in 0..n {
+            let row = k * width..(k + 1) * width;
+            let tg = self.tg[k];
+            for (((s, t), &x), &ok) in sum_s
+                .iter_mut()
+                .zip(sum_tg.iter_mut())
+                .zip(&scratch.signal[row.clone()])
+                .zip(&scratch.valid[row])
+            {
+                *s += if ok { x } else { 0.0 };
+                *t += if ok { tg } else { 0.0 };
             }
-            if sum_tg == 0.0 || inv_v == 0.0 {
+        }
+        // Pilot rate (signal per unit t g), then inverse-variance weights from the signal it
+        // predicts for each exposure.
+        let (num, den) = (&mut scratch.num, &mut scratch.den);
+        for ((p, s), t) in scratch
+            .pilot
+            .iter_mut()
+            .zip(sum_s.iter())
+            .zip(sum_tg.iter())
+        {
+            *p = (s / t).max(0.0);
+        }
+        num.iter_mut().for_each(|x| *x = 0.0);
+        den.iter_mut().for_each(|x| *x = 0.0);
+        for k in 0..n {
+            let row = k * width..(k + 1) * width;
+            let (tg, inv_tg) = (self.tg[k], self.inv_tg[k]);
+            let (shot, floor) = (self.shot_var_per_rate[k], self.floor_var);
+            for ((((a, b), &p), &x), &ok) in num
+                .iter_mut()
+                .zip(den.iter_mut())
+                .zip(&scratch.pilot)
+                .zip(&scratch.signal[row.clone()])
+                .zip(&scratch.valid[row])
+            {
+                let inv = tg * tg / (p * shot + floor);
+                *a += if ok { inv * x * inv_tg } else { 0.0 };
+                *b += if ok { inv } else { 0.0 };
+            }
+        }
+        for (gx, &inv_v) in inverse_vignetting.iter().enumerate() {
+            if sum_tg[gx] == 0.0 || inv_v == 0.0 {
+                let (mut all_over, mut all_under) = (true, true);
+                for k in 0..n {
+                    all_over &= scratch.over[k * width + gx];
+                    all_under &= scratch.under[k * width + gx];
+                }
                 let flag = if all_over || (!all_under && scratch.over[self.shortest * width + gx]) {
                     // Mixed: the shortest exposure decides (too bright there means too bright).
                     MapFlag::OverRange
                 } else {
                     MapFlag::UnderRange
                 };
-                luminance.push(f32::NAN);
-                flags.push(flag);
-                sigma.push(f32::NAN);
+                out.luminance[gx] = f32::NAN;
+                out.flags[gx] = flag;
+                out.sigma[gx] = f32::NAN;
                 continue;
             }
-            // Pilot rate (signal per unit t g), then inverse-variance weights from the signal
-            // it predicts for each exposure.
-            let pilot = (sum_s / sum_tg).max(0.0);
-            let (mut num, mut den) = (0.0, 0.0);
-            for k in 0..n {
-                let i = k * width + gx;
-                if scratch.valid[i] {
-                    let var_s = pilot * self.shot_var_per_rate[k] + self.floor_var;
-                    let inv = self.tg[k] * self.tg[k] / var_s;
-                    num += inv * scratch.signal[i] * self.inv_tg[k];
-                    den += inv;
-                }
-            }
-            let rate = num / den;
-            luminance.push((self.cg * rate * inv_v as f64) as f32);
-            flags.push(MapFlag::Valid);
-            sigma.push(((1.0 / den).sqrt() / rate.abs()) as f32);
+            let rate = num[gx] / den[gx];
+            out.luminance[gx] = (self.cg * rate * inv_v as f64) as f32;
+            out.flags[gx] = MapFlag::Valid;
+            out.sigma[gx] = ((1.0 / den[gx]).sqrt() / rate.abs()) as f32;
         }
-        (luminance, flags, sigma)
     }
 }

@@ -165,14 +165,8 @@ fn colour(i: usize) -> RGBColor {
 
 type Chart<'a> = ChartContext<'a, BitMapBackend<'a>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
-/// Opens the PNG, draws the frame (with or without text) and hands the chart to `draw`.
-fn with_chart(
-    path: &Path,
-    frame: &Frame,
-    x: (f64, f64),
-    y: (f64, f64),
-    draw: impl FnOnce(&mut Chart<'_>, bool) -> Result<(), String>,
-) -> Result<bool, PlotError> {
+/// The figure's size, if it is one the backend can draw (64 to 8192 pixels a side).
+fn checked_size(path: &Path, frame: &Frame) -> Result<(u32, u32), PlotError> {
     let (w, h) = (frame.width_px, frame.height_px);
     if !((64..=8192).contains(&w) && (64..=8192).contains(&h)) {
         return Err(PlotError::Size {
@@ -181,6 +175,92 @@ fn with_chart(
             height_px: h,
         });
     }
+    Ok((w, h))
+}
+
+/// The runs of plottable points: a line breaks at a point that cannot be drawn (a NaN).
+fn segments(points: &[(f64, f64)]) -> Vec<Vec<(f64, f64)>> {
+    let mut segments: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+    for &(px, py) in points {
+        if plottable(px) && plottable(py) {
+            if let Some(seg) = segments.last_mut() {
+                seg.push((px, py));
+            }
+        } else if segments.last().is_some_and(|seg| !seg.is_empty()) {
+            segments.push(Vec::new());
+        }
+    }
+    segments.retain(|s| !s.is_empty());
+    segments
+}
+
+/// Draws `s` as a line in colour `c` (a lone point as a cross), labelled once in the legend.
+fn draw_line(chart: &mut Chart<'_>, s: &Series, c: RGBColor, text: bool) -> Result<(), String> {
+    for (j, seg) in segments(&s.points).into_iter().enumerate() {
+        let d = if seg.len() == 1 {
+            chart
+                .draw_series(
+                    seg.into_iter()
+                        .map(move |p| Cross::new(p, 5, c.stroke_width(2))),
+                )
+                .map_err(|e| e.to_string())?
+        } else {
+            chart
+                .draw_series(LineSeries::new(seg, c.stroke_width(2)))
+                .map_err(|e| e.to_string())?
+        };
+        if text && j == 0 {
+            d.label(s.label.as_str()).legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 16, y)], c.stroke_width(2))
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Draws `s` as dots of `radius_px` in colour `c`, labelled in the legend.
+fn draw_points(
+    chart: &mut Chart<'_>,
+    s: &Series,
+    c: RGBColor,
+    radius_px: i32,
+    text: bool,
+) -> Result<(), String> {
+    let points = s
+        .points
+        .iter()
+        .copied()
+        .filter(|(x, y)| plottable(*x) && plottable(*y));
+    let d = chart
+        .draw_series(points.map(move |p| Circle::new(p, radius_px, c.mix(0.75).filled())))
+        .map_err(|e| e.to_string())?;
+    if text {
+        d.label(s.label.as_str())
+            .legend(move |(x, y)| Circle::new((x + 8, y), 4, c.filled()));
+    }
+    Ok(())
+}
+
+/// The legend box.
+fn draw_legend(chart: &mut Chart<'_>, font_px: u32) -> Result<(), String> {
+    chart
+        .configure_series_labels()
+        .label_font((FAMILY, font_px))
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .map_err(|e| e.to_string())
+}
+
+/// Opens the PNG, draws the frame (with or without text) and hands the chart to `draw`.
+fn with_chart(
+    path: &Path,
+    frame: &Frame,
+    x: (f64, f64),
+    y: (f64, f64),
+    draw: impl FnOnce(&mut Chart<'_>, bool) -> Result<(), String>,
+) -> Result<bool, PlotError> {
+    let (w, h) = checked_size(path, frame)?;
     let text = frame.text == Text::Auto && system_font();
     let fail = |message: String| PlotError::Draw {
         path: path.into(),
@@ -192,13 +272,7 @@ fn with_chart(
         let mut chart = build(&root, frame, x, y, text)?;
         draw(&mut chart, text)?;
         if text {
-            chart
-                .configure_series_labels()
-                .label_font((FAMILY, 14))
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK)
-                .draw()
-                .map_err(|e| e.to_string())?;
+            draw_legend(&mut chart, 14)?;
         }
         root.present().map_err(|e| e.to_string())
     })();
@@ -273,20 +347,7 @@ pub fn scatter_png(
     let (x, y) = xy_ranges(series);
     let text = with_chart(path, frame, x, y, |chart, text| {
         for (i, s) in series.iter().enumerate() {
-            let c = colour(i);
-            let points = s
-                .points
-                .iter()
-                .copied()
-                .filter(|(x, y)| plottable(*x) && plottable(*y));
-            let drawn = chart
-                .draw_series(points.map(move |p| Circle::new(p, 2, c.mix(0.7).filled())))
-                .map_err(|e| e.to_string())?;
-            if text {
-                drawn
-                    .label(s.label.as_str())
-                    .legend(move |(x, y)| Circle::new((x + 8, y), 4, c.filled()));
-            }
+            draw_points(chart, s, colour(i), 2, text)?;
         }
         Ok(())
     })?;
@@ -304,28 +365,7 @@ pub fn lines_png(path: &Path, frame: &Frame, series: &[Series]) -> Result<PlotOu
     let (x, y) = xy_ranges(series);
     let text = with_chart(path, frame, x, y, |chart, text| {
         for (i, s) in series.iter().enumerate() {
-            let c = colour(i);
-            let mut segments: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
-            for &(px, py) in &s.points {
-                if plottable(px) && plottable(py) {
-                    if let Some(seg) = segments.last_mut() {
-                        seg.push((px, py));
-                    }
-                } else if segments.last().is_some_and(|seg| !seg.is_empty()) {
-                    segments.push(Vec::new());
-                }
-            }
-            let style = c.stroke_width(2);
-            for (k, seg) in segments.into_iter().filter(|s| !s.is_empty()).enumerate() {
-                let drawn = chart
-                    .draw_series(LineSeries::new(seg, style))
-                    .map_err(|e| e.to_string())?;
-                if text && k == 0 {
-                    drawn.label(s.label.as_str()).legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 16, y)], c.stroke_width(2))
-                    });
-                }
-            }
+            draw_line(chart, s, colour(i), text)?;
         }
         Ok(())
     })?;
@@ -421,14 +461,7 @@ pub struct Panel {
 /// size of the whole figure. Colours follow the series' order across lines then points, so
 /// a measured series can take the colour of its reference by position.
 pub fn panels_png(path: &Path, frame: &Frame, panels: &[Panel]) -> Result<PlotOutcome, PlotError> {
-    let (w, h) = (frame.width_px, frame.height_px);
-    if !((64..=8192).contains(&w) && (64..=8192).contains(&h)) {
-        return Err(PlotError::Size {
-            path: path.into(),
-            width_px: w,
-            height_px: h,
-        });
-    }
+    let (w, h) = checked_size(path, frame)?;
     if panels.is_empty() {
         return Err(PlotError::Draw {
             path: path.into(),
@@ -465,61 +498,13 @@ pub fn panels_png(path: &Path, frame: &Frame, panels: &[Panel]) -> Result<PlotOu
             };
             let mut chart = build(area, &panel_frame, x, y, text)?;
             for (i, s) in panel.lines.iter().enumerate() {
-                let c = colour(i);
-                let mut segments: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
-                for &(px, py) in &s.points {
-                    if plottable(px) && plottable(py) {
-                        if let Some(seg) = segments.last_mut() {
-                            seg.push((px, py));
-                        }
-                    } else if segments.last().is_some_and(|seg| !seg.is_empty()) {
-                        segments.push(Vec::new());
-                    }
-                }
-                for (j, seg) in segments.into_iter().filter(|s| !s.is_empty()).enumerate() {
-                    // A lone point (a line broken on both sides) is drawn as a short mark.
-                    let d = if seg.len() == 1 {
-                        chart
-                            .draw_series(
-                                seg.into_iter()
-                                    .map(move |p| Cross::new(p, 5, c.stroke_width(2))),
-                            )
-                            .map_err(|e| e.to_string())?
-                    } else {
-                        chart
-                            .draw_series(LineSeries::new(seg, c.stroke_width(2)))
-                            .map_err(|e| e.to_string())?
-                    };
-                    if text && j == 0 {
-                        d.label(s.label.as_str()).legend(move |(x, y)| {
-                            PathElement::new(vec![(x, y), (x + 16, y)], c.stroke_width(2))
-                        });
-                    }
-                }
+                draw_line(&mut chart, s, colour(i), text)?;
             }
             for (i, s) in panel.points.iter().enumerate() {
-                let c = colour(panel.lines.len() + i);
-                let points = s
-                    .points
-                    .iter()
-                    .copied()
-                    .filter(|(x, y)| plottable(*x) && plottable(*y));
-                let d = chart
-                    .draw_series(points.map(move |p| Circle::new(p, 3, c.mix(0.8).filled())))
-                    .map_err(|e| e.to_string())?;
-                if text {
-                    d.label(s.label.as_str())
-                        .legend(move |(x, y)| Circle::new((x + 8, y), 4, c.filled()));
-                }
+                draw_points(&mut chart, s, colour(panel.lines.len() + i), 3, text)?;
             }
             if text {
-                chart
-                    .configure_series_labels()
-                    .label_font((FAMILY, 13))
-                    .background_style(WHITE.mix(0.85))
-                    .border_style(BLACK)
-                    .draw()
-                    .map_err(|e| e.to_string())?;
+                draw_legend(&mut chart, 13)?;
             }
         }
         root.present().map_err(|e| e.to_string())

@@ -112,3 +112,123 @@ pub fn rtrace_luminance(
     assert_eq!(lum.len(), directions.len(), "rtrace answered every ray");
     lum
 }
+
+/// RADIANCE found, or `None` after printing SKIPPED; panics when `SKYLUX_REQUIRE_RADIANCE` is
+/// set (as CI sets it), so a missing RADIANCE can never pass there.
+pub fn radiance_or_skip() -> Option<(PathBuf, Option<PathBuf>)> {
+    let found = radiance();
+    if found.is_none() {
+        if std::env::var_os("SKYLUX_REQUIRE_RADIANCE").is_some() {
+            panic!("RADIANCE (rtrace, gensky, oconv) not found and SKYLUX_REQUIRE_RADIANCE is set; install it with `pip install pyradiance`");
+        }
+        println!("SKIPPED: RADIANCE not found (pip install pyradiance)");
+    }
+    found
+}
+
+/// Pure path tracing with rtrace (no ambient cache): the converged reference setting.
+pub const RTRACE_PATH_TRACING: &[&str] = &[
+    "-h", "-I", "-u+", "-ab", "8", "-aa", "0", "-ad", "4096", "-as", "0", "-lw", "1e-5", "-lr",
+    "-16",
+];
+
+/// Illuminance (lux, RADIANCE's 179 lm/W and RGB weights) of an `rtrace -I` output line.
+pub fn lux_of_line(line: &str) -> f64 {
+    let v: Vec<f64> = line
+        .split_whitespace()
+        .map(|x| x.parse().expect("rtrace prints numbers"))
+        .collect();
+    179.0 * (0.265 * v[0] + 0.670 * v[1] + 0.065 * v[2])
+}
+
+/// Mean and standard error of rtrace's illuminance per sensor over `runs` seeds, each run
+/// with `args`, in `dir` (so relative file names in the scene resolve).
+///
+/// rtrace `-u+` seeds its generator with the wall clock in whole seconds
+/// (`srandom((long)time(0))` in RADIANCE's rtmain.c), so runs started within the same second
+/// are the same run: each run here starts in a new second, and identical runs fail the test
+/// rather than pass with a spread of zero.
+pub fn rtrace_lux_runs(
+    bin: &Path,
+    lib: &Option<PathBuf>,
+    dir: &Path,
+    octree: &Path,
+    points: &[u8],
+    args: &[&str],
+    runs: usize,
+) -> Vec<(f64, f64)> {
+    let second = || {
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map(|d| d.as_secs())
+            .unwrap_or(0)
+    };
+    let mut last_start = 0;
+    let results: Vec<Vec<f64>> = (0..runs)
+        .map(|_| {
+            while second() == last_start {
+                std::thread::sleep(std::time::Duration::from_millis(20));
+            }
+            last_start = second();
+            let mut c = tool(bin, lib, "rtrace");
+            c.current_dir(dir).args(args).arg(octree);
+            let text = String::from_utf8(check_output(c, Some(points))).unwrap();
+            text.lines()
+                .filter(|l| !l.trim().is_empty())
+                .map(lux_of_line)
+                .collect()
+        })
+        .collect();
+    assert!(
+        results.windows(2).any(|w| w[0] != w[1]),
+        "every rtrace run gave the same result: the seeds did not differ"
+    );
+    (0..results[0].len())
+        .map(|s| {
+            let xs: Vec<f64> = results.iter().map(|r| r[s]).collect();
+            let n = xs.len() as f64;
+            let mean = xs.iter().sum::<f64>() / n;
+            let var = xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0);
+            (mean, (var / n).sqrt())
+        })
+        .collect()
+}
+
+/// Compares our illuminance with rtrace's per sensor: |ours − rtrace| must be within
+/// max(2 % of rtrace, `k_sigma` × the combined standard error). Prints every sensor and
+/// returns the failures.
+pub fn agreement_failures(
+    label: &str,
+    ours: &[skylux_hps::engine::SensorIlluminance],
+    reference: &[(f64, f64)],
+    k_sigma: f64,
+) -> Vec<String> {
+    assert_eq!(
+        ours.len(),
+        reference.len(),
+        "{label}: one result per sensor"
+    );
+    let mut failures = Vec::new();
+    for (o, (r, r_se)) in ours.iter().zip(reference) {
+        let diff = o.illuminance_lux - r;
+        let combined = (o.stderr_lux.powi(2) + r_se.powi(2)).sqrt();
+        let allowed = (0.02 * r).max(k_sigma * combined);
+        println!(
+            "  {label} {}: ours {:.1} ± {:.1} lux, rtrace {:.1} ± {:.1} lux, diff {:+.2} % ({:+.2} σ)",
+            o.name,
+            o.illuminance_lux,
+            o.stderr_lux,
+            r,
+            r_se,
+            100.0 * diff / r,
+            diff / combined
+        );
+        if diff.abs() > allowed {
+            failures.push(format!(
+                "{}: {:.1} vs {:.1} (allowed ±{allowed:.1})",
+                o.name, o.illuminance_lux, r
+            ));
+        }
+    }
+    failures
+}
