@@ -62,6 +62,13 @@ pub struct WorldEffects {
     pub ground_reflectance: f64,
     /// The camera's true axis azimuth minus the declared one, degrees.
     pub orientation_azimuth_deg: f64,
+    /// The lux-meter logger's clock minus the device's, seconds: a reading of the light at
+    /// true time t carries the timestamp t + offset in `luxmeters.csv`.
+    pub clock_offset_s: f64,
+    /// The shutter's overhead, µs: a frame declared as t integrates for t + overhead (the
+    /// MT9P031's electronic shutter adds a fixed fraction of a row time; datasheet
+    /// "Exposure" section). Biases the shortest exposures, which measure the sun.
+    pub shutter_overhead_us: f64,
 }
 
 impl Default for WorldEffects {
@@ -71,6 +78,8 @@ impl Default for WorldEffects {
             light_leak: 0.0,
             ground_reflectance: 0.2,
             orientation_azimuth_deg: 0.0,
+            clock_offset_s: 0.0,
+            shutter_overhead_us: 0.0,
         }
     }
 }
@@ -112,16 +121,99 @@ impl WorldEffects {
                 check(v.abs() <= 10.0, "within ±10 degrees")?;
                 self.orientation_azimuth_deg = v;
             }
+            "clock_offset" | "clock_offset_s" => {
+                check(v.abs() <= 300.0, "within ±300 seconds")?;
+                self.clock_offset_s = v;
+            }
+            "shutter_overhead" | "shutter_overhead_us" => {
+                check((0.0..=100.0).contains(&v), "in [0, 100] µs")?;
+                self.shutter_overhead_us = v;
+            }
             other => {
                 return Err(format!(
-                    "unknown effect `{other}`: expected glazing_transmittance, light_leak, \
-                     ground_reflectance or orientation_error"
+                    "unknown effect `{other}`: expected {}",
+                    EFFECT_NAMES.join(", ")
                 ))
             }
         }
         Ok(())
     }
 }
+
+/// The names `--effect NAME=VALUE` accepts.
+pub const EFFECT_NAMES: [&str; 6] = [
+    "glazing_transmittance",
+    "light_leak",
+    "ground_reflectance",
+    "orientation_error",
+    "clock_offset",
+    "shutter_overhead",
+];
+
+/// When the lux-meter logger records: every `cadence_s` seconds within `half_window_s` of
+/// each capture (a logger runs continuously; only the readings near captures matter to the
+/// loop, and each one costs nothing once the room's sky and sun parts are traced).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LoggerSchedule {
+    pub cadence_s: f64,
+    pub half_window_s: f64,
+}
+
+impl Default for LoggerSchedule {
+    /// A reading every 30 s within ±10 min of each capture: enough for the loop to scan clock
+    /// offsets of up to ±5 min.
+    fn default() -> Self {
+        Self {
+            cadence_s: 30.0,
+            half_window_s: 600.0,
+        }
+    }
+}
+
+/// The sun's transmission through passing clouds around one capture on a partly cloudy day,
+/// as a function of time from the capture: a square wave of period `period_s` with soft
+/// edges (a cloud edge takes about a tenth of the period to cross the disk), so the
+/// direct-normal illuminance switches between full and nothing within minutes.
+#[derive(Clone, Copy, Debug)]
+struct SunSchedule {
+    /// `None`: the sun's transmission is 1 throughout (clear, overcast, or a fixed state).
+    passing: Option<(f64, f64)>,
+}
+
+impl SunSchedule {
+    fn steady() -> Self {
+        Self { passing: None }
+    }
+    /// The capture itself falls inside a sunny or a shaded spell, never on an edge (the
+    /// camera's exposures take a fraction of a second; a sun half behind a cloud edge at that
+    /// instant is a case left to other tests), anywhere from just before an edge to the
+    /// middle of the spell.
+    fn passing_clouds(seed: u64) -> Self {
+        let period_s = 240.0 + 240.0 * hash01(seed, 77);
+        let sunny = hash01(seed, 79) < 0.5;
+        // The transmission is 1 for a phase fraction in [0.054, 0.446] (sin > 1/3) and 0 in
+        // [0.554, 0.946].
+        let spell = 0.06 + 0.38 * hash01(seed, 78);
+        let phase_s = period_s * (spell + if sunny { 0.0 } else { 0.5 });
+        Self {
+            passing: Some((period_s, phase_s)),
+        }
+    }
+    /// Transmission in [0, 1] at `dt_s` seconds from the capture.
+    fn at(&self, dt_s: f64) -> f64 {
+        match self.passing {
+            None => 1.0,
+            Some((period_s, phase_s)) => {
+                let u = (std::f64::consts::TAU * (dt_s + phase_s) / period_s).sin();
+                (0.5 + 1.5 * u).clamp(0.0, 1.0)
+            }
+        }
+    }
+}
+
+/// Per sensor, the room's light from the sky (and its ground) and from the sun between
+/// clouds (and its ground), lux.
+type SkySunParts = (Vec<f64>, Vec<f64>);
 
 /// A campaign to simulate.
 #[derive(Clone, Debug)]
@@ -141,6 +233,10 @@ pub struct CampaignSpec {
     /// The room: a folder with `scene.rad` and `sensors.pts`.
     pub room_dir: PathBuf,
     pub effects: WorldEffects,
+    /// When the lux-meters log. `None`: one reading per capture time, except on partly
+    /// cloudy days or with a clock offset, which log by [`LoggerSchedule::default`] (the
+    /// light changes within minutes, and the loop needs the readings around each capture).
+    pub logger: Option<LoggerSchedule>,
     /// Relative standard deviation of a lux-meter reading.
     pub luxmeter_noise: f64,
     /// Paths per sensor of the engine run that gives the true illuminance.
@@ -177,6 +273,7 @@ impl CampaignSpec {
             exposures_us: vec![1.0, 26.59, 707.1, 18_803.0, 500_000.0],
             room_dir,
             effects: WorldEffects::default(),
+            logger: None,
             luxmeter_noise: 0.01,
             truth_samples: 4096,
             seed: 2017,
@@ -336,18 +433,29 @@ pub fn simulate_campaign(
             let seed = spec.seed ^ (k << 20);
             let (dni_clear, dhi_clear) = clear_sky_w_m2(altitude);
             let ghi_clear = dni_clear * altitude.sin() + dhi_clear;
-            // Sun visible at this time? Partly cloudy days hide it one time in three.
-            let (dni, dhi) = match kind {
-                DaySky::Clear => (dni_clear, dhi_clear),
-                DaySky::Overcast => (0.0, 0.35 * ghi_clear),
+            // Sun visible at this time? Partly cloudy days hide it one time in three; the other
+            // times, clouds pass over it within minutes (`dni` is then the beam between clouds).
+            let (dni, dhi, schedule) = match kind {
+                DaySky::Clear => (dni_clear, dhi_clear, SunSchedule::steady()),
+                DaySky::Overcast => (0.0, 0.35 * ghi_clear, SunSchedule::steady()),
                 DaySky::Partly => {
                     if hash01(seed, 99) < 0.35 {
-                        (0.0, 0.55 * ghi_clear)
+                        (0.0, 0.55 * ghi_clear, SunSchedule::steady())
                     } else {
-                        (0.85 * dni_clear, 0.25 * ghi_clear)
+                        (
+                            0.85 * dni_clear,
+                            0.25 * ghi_clear,
+                            SunSchedule::passing_clouds(seed),
+                        )
                     }
                 }
             };
+            // The sun's transmission at the capture itself.
+            let s0 = schedule.at(0.0);
+            let logger = spec.logger.or_else(|| {
+                (kind == DaySky::Partly || spec.effects.clock_offset_s != 0.0)
+                    .then(LoggerSchedule::default)
+            });
             let perez = PerezSky::new(
                 PerezInput::DirectNormalDiffuse {
                     direct_normal_w_m2: dni,
@@ -374,15 +482,17 @@ pub fn simulate_campaign(
                     sky(c) * c.z * patches.solid_angle_sr(p)
                 })
                 .sum();
-            let sun_lux = if dni > 0.0 {
+            // The beam on the horizontal between clouds, and at the capture.
+            let beam_lux = if dni > 0.0 {
                 perez.direct_normal_illuminance_lux() * altitude.sin()
             } else {
                 0.0
             };
+            let sun_lux = beam_lux * s0;
             let ghi_lux = diffuse_lux + sun_lux;
             let ground_cd_m2 = spec.effects.ground_reflectance * ghi_lux / std::f64::consts::PI;
             let sun_cd_m2 = if dni > 0.0 {
-                perez.sun_luminance_cd_m2()
+                perez.sun_luminance_cd_m2() * s0
             } else {
                 0.0
             };
@@ -403,7 +513,7 @@ pub fn simulate_campaign(
             // Frames, through the true camera.
             let stamp = time.format("%Y-%m-%dT%H%M").to_string();
             let capture_dir = out.join("captures").join(&stamp);
-            simulate_capture(
+            simulate_capture_with_overhead(
                 &capture_dir,
                 &true_camera,
                 &field,
@@ -421,47 +531,108 @@ pub fn simulate_campaign(
                     seed,
                     footprint: crate::sensor::Footprint::Integrated,
                 },
+                spec.effects.shutter_overhead_us,
             )?;
             // The room, by direct path tracing of the continuous sky and a light sun.
-            world.set_environment(Some(Arc::new({
-                let sky = sky.clone();
-                move |d: DVec3| {
-                    let l = if d.z < 0.0 { ground_cd_m2 } else { sky(d) };
-                    DVec3::splat(l / engine::WHITE_EFFICACY_LM_PER_W)
-                }
-            })));
-            if sun_cd_m2 > 0.0 {
-                world.add_distant(DistantEmitter::sun(
-                    sun_dir,
-                    perez.sun_solid_angle_sr(),
-                    sun_cd_m2 / engine::WHITE_EFFICACY_LM_PER_W,
-                ));
-            }
             let settings = Settings {
                 ambient_bounces: 5,
                 samples_per_sensor: spec.truth_samples,
                 seed,
                 ..Default::default()
             };
-            let lux = engine::illuminance(&world, &sensors, &settings, &|_, _| {})?;
-            world.clear_distant();
-            world.set_environment(None);
-            let room_lux: Vec<f64> = lux.iter().map(|s| s.illuminance_lux).collect();
-            for (s, &e) in room_lux.iter().enumerate() {
+            let rho = spec.effects.ground_reflectance;
+            let mut trace = |above: Option<Arc<dyn Fn(DVec3) -> f64 + Send + Sync>>,
+                             ground: f64,
+                             sun: f64|
+             -> Result<Vec<f64>, SimCampaignError> {
+                world.set_environment(Some(Arc::new(move |d: DVec3| {
+                    let l = if d.z < 0.0 {
+                        ground
+                    } else {
+                        above.as_ref().map_or(0.0, |f| f(d))
+                    };
+                    DVec3::splat(l / engine::WHITE_EFFICACY_LM_PER_W)
+                })));
+                if sun > 0.0 {
+                    world.add_distant(DistantEmitter::sun(
+                        sun_dir,
+                        perez.sun_solid_angle_sr(),
+                        sun / engine::WHITE_EFFICACY_LM_PER_W,
+                    ));
+                }
+                let lux = engine::illuminance(&world, &sensors, &settings, &|_, _| {})?;
+                world.clear_distant();
+                world.set_environment(None);
+                Ok(lux.iter().map(|s| s.illuminance_lux).collect())
+            };
+            let sky_fn: Arc<dyn Fn(DVec3) -> f64 + Send + Sync> = Arc::new(sky.clone());
+            // Per sensor, the light at `dt` seconds from the capture and the outdoor horizontal
+            // illuminance then: with a logger, sky (and its ground) and sun (and its ground)
+            // are traced apart, so the passing clouds scale the sun's part alone.
+            let (room_lux, parts): (Vec<f64>, Option<SkySunParts>) = match logger {
+                None => (trace(Some(sky_fn), ground_cd_m2, sun_cd_m2)?, None),
+                Some(_) => {
+                    let sky_part =
+                        trace(Some(sky_fn), rho * diffuse_lux / std::f64::consts::PI, 0.0)?;
+                    let sun_part = if dni > 0.0 {
+                        trace(
+                            None,
+                            rho * beam_lux / std::f64::consts::PI,
+                            perez.sun_luminance_cd_m2(),
+                        )?
+                    } else {
+                        vec![0.0; sensors.len()]
+                    };
+                    let now = sky_part
+                        .iter()
+                        .zip(&sun_part)
+                        .map(|(a, b)| a + s0 * b)
+                        .collect();
+                    (now, Some((sky_part, sun_part)))
+                }
+            };
+            let gaussian = |key: u64| {
                 // Box-Muller from the hash: a reproducible Gaussian per reading.
-                let (u1, u2) = (
-                    hash01(seed, 1000 + 2 * s as u64).max(1e-12),
-                    hash01(seed, 1001 + 2 * s as u64),
-                );
-                let g = (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos();
-                let measured = (e * spec.effects.glazing_transmittance
-                    + spec.effects.light_leak * ghi_lux)
-                    * (1.0 + spec.luxmeter_noise * g);
-                readings.push(LuxmeterReading {
-                    time,
-                    sensor: sensors[s].name.clone(),
-                    illuminance_lux: measured.max(0.0),
-                });
+                let (u1, u2) = (hash01(seed, key).max(1e-12), hash01(seed, key + 1));
+                (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+            };
+            let logger_clock = |dt_s: f64| {
+                let ms = ((dt_s + spec.effects.clock_offset_s) * 1000.0).round() as i64;
+                time + Duration::milliseconds(ms)
+            };
+            match (logger, parts) {
+                (Some(log), Some((sky_part, sun_part))) => {
+                    let n = (log.half_window_s / log.cadence_s).floor() as i64;
+                    for j in -n..=n {
+                        let dt = j as f64 * log.cadence_s;
+                        let st = schedule.at(dt);
+                        let ghi_then = diffuse_lux + st * beam_lux;
+                        for s in 0..sensors.len() {
+                            let e = sky_part[s] + st * sun_part[s];
+                            let key = 5000 + 2 * ((j + n) as u64 * sensors.len() as u64 + s as u64);
+                            let measured = (e * spec.effects.glazing_transmittance
+                                + spec.effects.light_leak * ghi_then)
+                                * (1.0 + spec.luxmeter_noise * gaussian(key));
+                            readings.push(LuxmeterReading {
+                                time: logger_clock(dt),
+                                sensor: sensors[s].name.clone(),
+                                illuminance_lux: measured.max(0.0),
+                            });
+                        }
+                    }
+                }
+                _ => {
+                    for (s, &e) in room_lux.iter().enumerate() {
+                        let measured = (e * spec.effects.glazing_transmittance
+                            + spec.effects.light_leak * ghi_lux)
+                            * (1.0 + spec.luxmeter_noise * gaussian(1000 + 2 * s as u64));
+                        readings.push(LuxmeterReading {
+                            time: logger_clock(0.0),
+                            sensor: sensors[s].name.clone(),
+                            illuminance_lux: measured.max(0.0),
+                        });
+                    }
+                }
             }
             // The pyranometer measures the sky as it is (clouds and all), not the Perez sky
             // its irradiance was drawn from.
@@ -472,9 +643,9 @@ pub fn simulate_campaign(
             };
             pyranometer.push(PyranometerRow {
                 time,
-                ghi_wm2: Some(dni * altitude.sin() + dhi_measured),
+                ghi_wm2: Some(s0 * dni * altitude.sin() + dhi_measured),
                 dhi_wm2: Some(dhi_measured),
-                dni_wm2: Some(dni),
+                dni_wm2: Some(s0 * dni),
             });
             truth.push(TruthRecord {
                 time,
@@ -492,4 +663,30 @@ pub fn simulate_campaign(
     write_pyranometer_csv(&mut text, &pyranometer).map_err(io(&out.join("pyranometer.csv")))?;
     std::fs::write(out.join("pyranometer.csv"), text).map_err(io(&out.join("pyranometer.csv")))?;
     Ok(truth)
+}
+
+/// [`simulate_capture`] with a shutter that integrates each frame for its declared time plus
+/// `overhead_us` while `capture.toml` declares the time alone: the undeclared overhead.
+/// Without an overhead, exactly [`simulate_capture`].
+fn simulate_capture_with_overhead(
+    dir: &Path,
+    camera: &CameraModel,
+    field: &(dyn Fn(DVec3) -> f64 + Sync),
+    spec: &CaptureSpec,
+    overhead_us: f64,
+) -> Result<(), crate::capture::WriteCaptureError> {
+    if overhead_us == 0.0 {
+        return simulate_capture(dir, camera, field, spec).map(|_| ());
+    }
+    // Render with the true integration times, then declare the nominal ones.
+    let actual = CaptureSpec {
+        exposures_us: spec.exposures_us.iter().map(|t| t + overhead_us).collect(),
+        ..spec.clone()
+    };
+    let mut written = simulate_capture(dir, camera, field, &actual)?;
+    for (entry, &t) in written.exposure.iter_mut().zip(&spec.exposures_us) {
+        entry.exposure_us = t;
+    }
+    written.write(&dir.join("capture.toml"))?;
+    Ok(())
 }

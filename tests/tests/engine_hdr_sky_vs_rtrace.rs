@@ -40,7 +40,7 @@ const OUR_SAMPLES: u32 = if cfg!(target_arch = "arm") {
 
 /// A bright, strongly anisotropic clear-ish sky: a circumsolar peak south-south-east at 40°
 /// altitude over a gradation, 2e3 to about 1e5 cd/m² (no solar disc: a disc would be handed
-/// to both programs as a `light`, which engine_vs_rtrace already covers).
+/// to both programs as a `light`, which hps/core/tests/engine_vs_rtrace.rs covers).
 fn true_sky(d: DVec3) -> f64 {
     let sun = DVec3::new(0.25, -0.7, 0.64).normalize();
     let gamma = d.dot(sun).clamp(-1.0, 1.0).acos();

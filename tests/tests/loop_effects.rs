@@ -5,81 +5,12 @@
 //!
 //! Campaigns: the reference room in Lausanne, a clear and an overcast day, captures every two
 //! hours from 8:00 to 18:00 at a quarter of the full resolution (skip 4), lux-meters with
-//! 1 % noise. Each takes about half a minute to simulate.
+//! 1 % noise (tests/common/loop_harness.rs). Each takes about half a minute to simulate.
 
-use skylux_hps::campaign::Campaign;
-use skylux_hps::validation::illuminance_loop::{run_loop, LoopOptions, LoopOutcome};
+mod common;
+
+use common::loop_harness::{assert_improved, clean, effect, run, simulate};
 use skylux_hps::validation::report::Report;
-use skylux_sim::campaign::{simulate_campaign, CampaignSpec};
-use std::path::{Path, PathBuf};
-use std::sync::OnceLock;
-
-const ROOM: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/../../shared/scenes/test-module"
-);
-
-fn spec(effects: &[&str], seed: u64) -> CampaignSpec {
-    let mut spec = CampaignSpec::lausanne(PathBuf::from(ROOM));
-    spec.hours = vec![8.0, 10.0, 12.0, 14.0, 16.0, 18.0];
-    spec.truth_samples = 16_384;
-    spec.seed = seed;
-    for e in effects {
-        spec.effects.set(e).unwrap();
-    }
-    spec
-}
-
-fn simulate(dir: &Path, effects: &[&str], seed: u64) -> Campaign {
-    simulate_campaign(dir, &spec(effects, seed), &|_, _| {}).expect("simulated campaign");
-    Campaign::open(dir).expect("campaign reads back")
-}
-
-fn run(campaign: &Campaign, sun_in_map: bool) -> LoopOutcome {
-    let mut options = LoopOptions::default();
-    options.base.concentrated_sun = !sun_in_map;
-    options.settings.samples_per_sensor = 30_000;
-    run_loop(campaign, &options, &|_, _, _| {}).expect("loop")
-}
-
-fn effect<'a>(r: &'a Report, name: &str) -> &'a skylux_hps::validation::report::EffectReport {
-    r.effects
-        .iter()
-        .find(|e| e.name == name)
-        .unwrap_or_else(|| panic!("{name} not found; report: {r:#?}"))
-}
-
-/// The campaign without effects, shared: its hold-out error is the noise floor.
-fn clean() -> &'static (tempfile::TempDir, Campaign) {
-    static CLEAN: OnceLock<(tempfile::TempDir, Campaign)> = OnceLock::new();
-    CLEAN.get_or_init(|| {
-        let dir = tempfile::tempdir().unwrap();
-        let c = simulate(dir.path(), &[], 11);
-        (dir, c)
-    })
-}
-
-fn noise_floor() -> f64 {
-    static FLOOR: OnceLock<f64> = OnceLock::new();
-    *FLOOR.get_or_init(|| run(&clean().1, false).report.after.all)
-}
-
-/// Hold-out after at most a third of before, or within 1.25x the clean campaign's error.
-fn assert_improved(r: &Report) {
-    let floor = 1.25 * noise_floor();
-    println!(
-        "hold-out: before {:.2} %, after {:.2} %, floor {:.2} %",
-        100.0 * r.before.all,
-        100.0 * r.after.all,
-        100.0 * floor
-    );
-    assert!(
-        r.after.all <= r.before.all / 3.0 || r.after.all <= floor,
-        "after {} vs before {} (floor {floor})",
-        r.after.all,
-        r.before.all
-    );
-}
 
 #[test]
 fn no_effect_adds_nothing_and_says_so() {

@@ -23,6 +23,9 @@ enum BenchWhat {
     /// The ray-box unit: tests per cycle in cycle-accurate simulation with memory stalls,
     /// Cyclone V resources, projected tests/s next to the software slab test, false misses.
     Raybox(crate::bench_raybox::RayboxBenchArgs),
+    /// The illuminance engine against rtrace at equal error (1 % RMS against a converged
+    /// rtrace reference) on the reference room: times, errors and the ratio.
+    Illuminance(crate::bench_illuminance::IlluminanceBenchArgs),
     /// One daylight-coefficient update for 400 sensors (Reinhart MF4), one core and all.
     Dc {
         #[arg(long)]
@@ -48,6 +51,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         BenchWhat::Capture(args) => crate::bench_capture::run(args),
         BenchWhat::Raybox(args) => crate::bench_raybox::run(args),
         BenchWhat::Dc { json, repeat } => crate::dc::bench(*json, (*repeat).max(1)),
+        BenchWhat::Illuminance(args) => crate::bench_illuminance::run(args),
     }
 }
 
@@ -135,7 +139,7 @@ fn bench_hdr(json: bool, repeat: usize) -> anyhow::Result<()> {
         let truth = case.truth_cd_m2(geometry.direction[i].as_dvec3());
         let l = map.luminance_cd_m2[i] as f64;
         let rate = truth / geometry.inverse_vignetting[i] as f64 / device.response.cg;
-        let Some(b) = skylux_sim::analysis::hdr_relative_sigma_bound(&device, &EXPOSURES_S, rate)
+        let Some(b) = skylux_sim::analysis::hdr_relative_sigma_bound(device, &EXPOSURES_S, rate)
         else {
             continue;
         };

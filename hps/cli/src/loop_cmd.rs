@@ -12,7 +12,8 @@ use std::path::{Path, PathBuf};
 pub struct LoopArgs {
     /// The campaign folder (shared/spec/campaign.md).
     pub campaign: PathBuf,
-    /// Where report.json, report.md and illuminance.csv go.
+    /// Where report.json, report.md (with the residual table), residuals.csv,
+    /// illuminance.csv and the figures go.
     #[arg(long)]
     pub out: PathBuf,
     /// Leave the sun in the map's patches in the base model (as the published device first
@@ -66,7 +67,19 @@ pub fn write_outcome(out: &Path, campaign: &Campaign, outcome: &LoopOutcome) -> 
     let mut report = outcome.report.clone();
     report.figures = skylux_hps::validation::loop_figures::write_loop_figures(out, outcome)?;
     report.write_json(&out.join("report.json"))?;
-    let md = report.markdown(&format!("Skylux loop: {}", campaign.config.name));
+    let mut md = report.markdown(&format!("Skylux loop: {}", campaign.config.name));
+    md.push_str(&skylux_hps::validation::report::residual_markdown(
+        &outcome.residuals,
+    ));
+    let mut table =
+        String::from("variable,group,readings,before_r,before_slope,after_r,after_slope\n");
+    for r in &outcome.residuals {
+        table.push_str(&format!(
+            "\"{}\",{},{},{},{},{},{}\n",
+            r.variable, r.group, r.n, r.before_r, r.before_slope, r.after_r, r.after_slope
+        ));
+    }
+    write_atomic(&out.join("residuals.csv"), table.as_bytes())?;
     write_atomic(&out.join("report.md"), md.as_bytes())?;
     let mut csv = String::from("time,sensor,lux_model,lux_measured,model\n");
     for r in &outcome.rows {

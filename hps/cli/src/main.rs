@@ -2,6 +2,7 @@
 
 mod bench;
 mod bench_capture;
+mod bench_illuminance;
 mod bench_raybox;
 mod calibrate;
 mod closure;
@@ -11,6 +12,7 @@ mod hdr;
 mod illuminance;
 mod loop_cmd;
 mod regs;
+mod render;
 mod sim_cmd;
 mod solpos;
 mod sun_cmd;
@@ -56,6 +58,8 @@ enum Command {
     Loop(loop_cmd::LoopArgs),
     /// The simulated world: `skylux sim campaign --out DIR [--effect NAME=VALUE]`.
     Sim(sim_cmd::SimArgs),
+    /// Renders an image of a RADIANCE scene from a view: PREFIX.exr, PREFIX.hdr, PREFIX.png.
+    Render(render::RenderArgs),
     /// Reads every register and prints it decoded, field by field.
     Regs(regs::RegsArgs),
     /// Prints the sun's zenith and azimuth (NREL SPA) for one time and place, as CSV.
@@ -77,6 +81,7 @@ fn main() -> anyhow::Result<()> {
         Command::Loop(args) => loop_cmd::run(&args),
         Command::Sim(args) => sim_cmd::run(&args),
         Command::Regs(args) => regs::run(&args),
+        Command::Render(args) => render::run(&args),
         Command::Solpos(args) => solpos::run(&args),
         Command::Sun(args) => sun_cmd::run(&args),
     }

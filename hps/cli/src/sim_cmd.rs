@@ -23,11 +23,17 @@ pub enum SimCommand {
 pub struct SimCampaignArgs {
     #[arg(long)]
     pub out: PathBuf,
-    /// An undeclared effect, NAME=VALUE (glazing_transmittance, light_leak,
-    /// ground_reflectance, orientation_error); repeatable.
+    /// An undeclared effect, NAME=VALUE; repeatable. glazing_transmittance (relative, 0.1 to
+    /// 1.5), light_leak (lux per outdoor lux, 0 to 0.2), ground_reflectance (0 to 1),
+    /// orientation_error (axis azimuth, degrees, ±10), clock_offset (lux-meter logger minus
+    /// device clock, seconds, ±300; visible only when the light changes within minutes: use
+    /// --sky partly), shutter_overhead (µs added to every declared exposure, 0 to 100).
     #[arg(long = "effect")]
     pub effects: Vec<String>,
-    /// The sky of every day (default: one clear and one overcast day).
+    /// The sky of every day (default: one clear and one overcast day). `partly`: broken
+    /// clouds; at two captures in three they pass over the sun within minutes (the direct
+    /// beam switches on and off every 2 to 4 min, each edge taking some 30 s), and the
+    /// lux-meters then log every 30 s within ±10 min of each capture.
     #[arg(long)]
     pub sky: Option<DaySky>,
     /// The room folder (scene.rad, sensors.pts); default: the reference test module.

@@ -73,6 +73,8 @@ pub struct Config {
     pub hardware: HardwareConfig,
     #[serde(default)]
     pub sim: SimConfig,
+    #[serde(default)]
+    pub fabric: FabricConfig,
     /// The file this was read from (set by [`Config::parse`]).
     #[serde(skip)]
     pub path: PathBuf,
@@ -295,9 +297,85 @@ pub struct SimConfig {
     pub sky: SimSky,
     #[serde(default = "one_u64")]
     pub seed: u64,
-    /// Fault injection schedule.
+    /// Fault injection schedule (the `sim` source only).
     #[serde(default, rename = "fault")]
     pub faults: Vec<FaultRule>,
+    /// What `--sim` captures with: `sim` (the rendered sky through the noise model, fast) or
+    /// `fabric` (the cycle-accurate fabric core with its MT9P031 and SDRAM models, driven
+    /// by the same `FabricSource` as the board, at the `[fabric]` window; slow: keep the
+    /// window small and the exposures short).
+    #[serde(default)]
+    pub source: SimSourceKind,
+}
+
+/// `[sim] source`.
+#[derive(Copy, Clone, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum SimSourceKind {
+    #[default]
+    Sim,
+    Fabric,
+}
+
+/// `[fabric]`: the sensor window the fabric source reads, in the sensor's register units
+/// (array pixels: the active array starts at column 16, row 54), and the shield.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FabricConfig {
+    #[serde(default = "default_fabric_row_start")]
+    pub row_start: u32,
+    #[serde(default = "default_fabric_col_start")]
+    pub col_start: u32,
+    /// Array columns and rows of the window (even); the output is `2 ceil(size / 2 skip)`.
+    #[serde(default = "default_fabric_width")]
+    pub width: u32,
+    #[serde(default = "default_fabric_height")]
+    pub height: u32,
+    /// Row and column skip, 1 to 8 (hardware-facts.md §1.4).
+    #[serde(default = "one_u32")]
+    pub skip: u32,
+    /// Stepper steps from closed to open.
+    #[serde(default = "default_shield_steps")]
+    pub shield_steps: u32,
+    /// Wait for an opening's frames beyond twice its light time, seconds.
+    #[serde(default = "default_frame_timeout_s")]
+    pub frame_timeout_s: f64,
+}
+
+fn default_fabric_row_start() -> u32 {
+    54
+}
+fn default_fabric_col_start() -> u32 {
+    16
+}
+fn default_fabric_width() -> u32 {
+    2592
+}
+fn default_fabric_height() -> u32 {
+    1944
+}
+fn one_u32() -> u32 {
+    1
+}
+fn default_shield_steps() -> u32 {
+    3
+}
+fn default_frame_timeout_s() -> f64 {
+    2.0
+}
+
+impl Default for FabricConfig {
+    fn default() -> Self {
+        Self {
+            row_start: default_fabric_row_start(),
+            col_start: default_fabric_col_start(),
+            width: default_fabric_width(),
+            height: default_fabric_height(),
+            skip: 1,
+            shield_steps: default_shield_steps(),
+            frame_timeout_s: default_frame_timeout_s(),
+        }
+    }
 }
 
 fn default_skip() -> u32 {
@@ -311,6 +389,7 @@ impl Default for SimConfig {
             sky: SimSky::Clear,
             seed: 1,
             faults: Vec::new(),
+            source: SimSourceKind::Sim,
         }
     }
 }
@@ -584,6 +663,50 @@ impl Config {
                 "sim",
                 "skip",
                 format!("{} is outside 1..=64", self.sim.skip),
+            ));
+        }
+        let fw = &self.fabric;
+        let window = skylux_hps::fpga::sensor::SensorConfig {
+            row_start: fw.row_start,
+            col_start: fw.col_start,
+            width: fw.width,
+            height: fw.height,
+            skip: fw.skip,
+            ..Default::default()
+        };
+        if let Err(skylux_hps::fpga::sensor::SensorError::OutOfRange {
+            field,
+            value,
+            allowed,
+        }) = window.validate()
+        {
+            let key = match field {
+                "row_start" => "row_start",
+                "col_start" => "col_start",
+                "height" => "height",
+                "width" => "width",
+                _ => "skip",
+            };
+            return Err(bad(
+                "fabric",
+                key,
+                format!("{value} is out of range ({allowed})"),
+            ));
+        }
+        if !(fw.frame_timeout_s.is_finite() && (0.0..=600.0).contains(&fw.frame_timeout_s)) {
+            return Err(bad(
+                "fabric",
+                "frame_timeout_s",
+                format!("{} is outside 0 to 600 s", fw.frame_timeout_s),
+            ));
+        }
+        if self.sim.source == SimSourceKind::Fabric && !self.sim.faults.is_empty() {
+            return Err(bad(
+                "sim",
+                "source",
+                "injected faults ([[sim.fault]]) belong to the `sim` source; the fabric \
+                 source's faults are the simulated hardware's"
+                    .into(),
             ));
         }
         for f in &self.sim.faults {

@@ -27,8 +27,28 @@ use skylux_hps::validation::device_model::{
     capture_terms, predict, CaptureData, CaptureTerms, ModelState, Room,
 };
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex};
 use std::time::Instant;
+
+/// Held while a daylight-coefficient matrix is written to the cache and renamed into place.
+static DC_WRITE: Mutex<()> = Mutex::new(());
+
+/// Abandons a daylight-coefficient computation in progress (SIGTERM during the first start):
+/// waits for a cache write in progress to finish (it is then whole), makes sure none starts
+/// afterwards, and removes any temporary file an earlier crash left. After this the cache
+/// holds complete matrices or nothing.
+pub fn abandon_dc(cancel: &AtomicBool, config: &Config) {
+    let _guard = DC_WRITE.lock().unwrap_or_else(|p| p.into_inner());
+    cancel.store(true, Ordering::SeqCst);
+    if let Ok(entries) = std::fs::read_dir(config.cache_dir()) {
+        for e in entries.flatten() {
+            if e.file_name().to_string_lossy().ends_with(".dc.tmp") {
+                let _ = std::fs::remove_file(e.path());
+            }
+        }
+    }
+}
 
 /// Version of the cache key: bump when the matrix's meaning changes.
 const DC_CACHE_VERSION: &str = "skyluxd-dc-v1";
@@ -234,6 +254,16 @@ impl Pipeline {
     /// Loads the camera and the room, and reads (or computes and caches) the daylight
     /// coefficients. `progress(done, total)` reports the computation.
     pub fn new(config: &Config, progress: &(dyn Fn(u64, u64) + Sync)) -> Result<Self, SetupError> {
+        Self::new_cancellable(config, progress, &AtomicBool::new(false))
+    }
+
+    /// As [`Pipeline::new`]; once `cancel` is set (by [`abandon_dc`]) a computed matrix is
+    /// not written to the cache.
+    pub fn new_cancellable(
+        config: &Config,
+        progress: &(dyn Fn(u64, u64) + Sync),
+        cancel: &AtomicBool,
+    ) -> Result<Self, SetupError> {
         let (device, warnings) = DeviceConfig::read(&config.camera.device)?;
         for w in warnings {
             tracing::warn!(file = %config.camera.device.display(), "{w}");
@@ -256,6 +286,11 @@ impl Pipeline {
                     }
                 }
                 let started = Instant::now();
+                tracing::info!(
+                    path = %dc_path.display(),
+                    sensors = sensors.len(),
+                    "computing the daylight coefficients (not cached yet)"
+                );
                 let dc = engine::daylight_coefficients(
                     &world,
                     &sensors,
@@ -268,13 +303,26 @@ impl Pipeline {
                     source,
                 })?;
                 let tmp = dc_path.with_extension("dc.tmp");
-                dc.write(&tmp)
-                    .and_then(|_| crate::output::fsync_file(&tmp))
-                    .and_then(|_| std::fs::rename(&tmp, &dc_path))
-                    .map_err(|source| SetupError::Io {
-                        path: dc_path.clone(),
-                        source,
-                    })?;
+                {
+                    // Whole or not at all: abandon_dc waits for a write in progress.
+                    let _guard = DC_WRITE.lock().unwrap_or_else(|p| p.into_inner());
+                    if cancel.load(Ordering::SeqCst) {
+                        return Err(SetupError::Cache {
+                            path: dc_path.clone(),
+                            message: "abandoned (stop requested): not cached".into(),
+                        });
+                    }
+                    dc.write(&tmp)
+                        .and_then(|_| crate::output::fsync_file(&tmp))
+                        .and_then(|_| std::fs::rename(&tmp, &dc_path))
+                        .map_err(|source| {
+                            let _ = std::fs::remove_file(&tmp);
+                            SetupError::Io {
+                                path: dc_path.clone(),
+                                source,
+                            }
+                        })?;
+                }
                 tracing::info!(
                     path = %dc_path.display(),
                     sensors = sensors.len(),

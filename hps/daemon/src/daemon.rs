@@ -7,15 +7,21 @@
 //! end the process, with a non-zero status systemd can act on.
 //!
 //! On SIGTERM or SIGINT the loop stops at the next stage boundary: a capture in progress is
-//! discarded if it has not been processed yet (nothing of it is written), and a cycle already
-//! writing finishes its (atomic) writes. Then the daemon exits 0.
+//! discarded if it has not been processed yet (nothing of it is written; the fabric source
+//! ends its wait for frames at once and releases every ring slot), and a cycle already
+//! writing finishes its (atomic) writes. During the first daylight-coefficient computation
+//! (minutes) the computation is abandoned and nothing is cached. Then the daemon exits 0.
+//!
+//! On SIGHUP the configuration file is read and validated again and applied from the next
+//! cycle; a bad file is logged with its file, line and field and the running configuration
+//! kept (see `reload_config` for what a reload can change).
 
 use crate::api::{ApiServer, ApiState, ErrorReport, SharedState};
-use crate::config::{Config, FaultKind, Overrides};
+use crate::config::{Config, FaultKind, Overrides, SimSourceKind};
 use crate::cycle::{CycleError, Pipeline};
 use crate::notify::Notifier;
 use crate::output::{FaultHook, Output, API_ADDRESS_FILE, SPOOL_DIR};
-use crate::source::{CaptureSource, SimSource};
+use crate::source::{CaptureSource, SimSource, SourceError};
 use chrono::{DateTime, FixedOffset, Timelike, Utc};
 use std::panic::AssertUnwindSafe;
 use std::path::PathBuf;
@@ -120,7 +126,7 @@ impl FaultHook for SimOutputFaults<'_> {
 
 /// Runs the daemon; returns the process exit status.
 pub fn run(options: &Options) -> i32 {
-    let config = match Config::load(&options.config, &options.overrides) {
+    let mut config = match Config::load(&options.config, &options.overrides) {
         Ok(c) => c,
         Err(e) => {
             tracing::error!(kind = "config", "refusing to start: {e}");
@@ -155,13 +161,6 @@ pub fn run(options: &Options) -> i32 {
         env!("CARGO_PKG_VERSION")
     );
 
-    // The hardware: map the two windows, then give up root. In --sim nothing is mapped.
-    if options.sim {
-        tracing::info!("sim: no hardware window mapped; dropping root skipped in --sim");
-    } else {
-        return run_hardware(&config);
-    }
-
     let stop = Arc::new(AtomicBool::new(false));
     for signal in [signal_hook::consts::SIGTERM, signal_hook::consts::SIGINT] {
         if let Err(e) = signal_hook::flag::register(signal, stop.clone()) {
@@ -169,25 +168,97 @@ pub fn run(options: &Options) -> i32 {
             return EXIT_SOFTWARE;
         }
     }
+    let reload = Arc::new(AtomicBool::new(false));
+    if let Err(e) = signal_hook::flag::register(signal_hook::consts::SIGHUP, reload.clone()) {
+        tracing::error!(error = %e, "cannot install the SIGHUP handler");
+        return EXIT_SOFTWARE;
+    }
+
+    // The hardware: map the two windows, then give up root, then bring the fabric up (before
+    // the long first daylight-coefficient computation, so a dead fabric is reported at once).
+    // In --sim nothing is mapped.
+    let mut kind = if options.sim {
+        tracing::info!(
+            source = ?config.sim.source,
+            "sim: no hardware window mapped; dropping root skipped in --sim"
+        );
+        match config.sim.source {
+            SimSourceKind::Sim => SourceKind::Sim,
+            SimSourceKind::Fabric => SourceKind::FabricSim,
+        }
+    } else {
+        match map_hardware(&config) {
+            Ok(windows) => SourceKind::Board(Some(windows)),
+            Err(code) => return code,
+        }
+    };
+    let mut source = match make_source(&mut kind, &config, stop.clone()) {
+        Ok(s) => s,
+        Err(e) => {
+            tracing::error!(kind = e.kind(), "cannot set up the capture source: {e}");
+            return if options.sim {
+                EXIT_CONFIG
+            } else {
+                EXIT_UNAVAILABLE
+            };
+        }
+    };
     let notifier = Notifier::from_env();
     let mut last_ping = Instant::now();
 
-    // The room and its daylight coefficients (minutes the first time, then cached).
+    // The room and its daylight coefficients (minutes the first time, then cached), on a
+    // thread of its own so that SIGTERM ends the wait at once: the computation is abandoned
+    // and the cache is never left partly written (cycle.rs writes it whole, then renames it,
+    // and not at all once abandoned).
     notifier.status("computing daylight coefficients");
-    let last_report = std::sync::Mutex::new((0u64, Instant::now()));
-    let pipeline = Pipeline::new(&config, &|done, total| {
-        let pct = 100 * done / total.max(1);
-        let mut last = last_report.lock().unwrap_or_else(|p| p.into_inner());
-        if pct >= last.0 + 10 {
-            last.0 = pct;
-            tracing::info!(percent = pct, "daylight coefficients");
+    let cancel = Arc::new(AtomicBool::new(false));
+    let worker = {
+        let config = config.clone();
+        let cancel = cancel.clone();
+        std::thread::spawn(move || {
+            let notifier = Notifier::from_env();
+            let last_report = std::sync::Mutex::new((0u64, Instant::now()));
+            Pipeline::new_cancellable(
+                &config,
+                &|done, total| {
+                    let pct = 100 * done / total.max(1);
+                    let mut last = last_report.lock().unwrap_or_else(|p| p.into_inner());
+                    if pct >= last.0 + 10 {
+                        last.0 = pct;
+                        tracing::info!(percent = pct, "daylight coefficients");
+                    }
+                    // Keep the watchdog fed through a long first computation.
+                    if last.1.elapsed() >= Duration::from_secs(1) {
+                        last.1 = Instant::now();
+                        notifier.watchdog();
+                    }
+                },
+                &cancel,
+            )
+        })
+    };
+    while !worker.is_finished() {
+        if stop.load(Ordering::Relaxed) {
+            crate::cycle::abandon_dc(&cancel, &config);
+            tracing::info!(
+                "stop requested during the daylight-coefficient computation: abandoned, \
+                 nothing cached; exiting"
+            );
+            notifier.stopping();
+            return 0;
         }
-        // Keep the watchdog fed through a long first computation.
-        if last.1.elapsed() >= Duration::from_secs(1) {
-            last.1 = Instant::now();
-            notifier.watchdog();
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let pipeline = match worker.join() {
+        Ok(p) => p,
+        Err(_) => {
+            tracing::error!(
+                kind = "room",
+                "the daylight-coefficient computation panicked"
+            );
+            return EXIT_SOFTWARE;
         }
-    });
+    };
     let mut pipeline = match pipeline {
         Ok(p) => p,
         Err(e) => {
@@ -208,20 +279,6 @@ pub fn run(options: &Options) -> i32 {
         }
     };
     tracing::info!(address = %api.address, "API listening (GET /v1/latest, /v1/health, /v1/metrics)");
-
-    let spool = config.output.dir.join(SPOOL_DIR);
-    let mut source: Box<dyn CaptureSource> = Box::new(SimSource::new(
-        pipeline.device.clone(),
-        skylux_hps::sun::Site {
-            latitude_deg: config.site.latitude_deg,
-            longitude_deg: config.site.longitude_deg,
-            elevation_m: config.site.elevation_m,
-        },
-        config.sim.clone(),
-        config.camera.exposures_us.clone(),
-        config.camera.gain,
-        &spool,
-    ));
 
     let offset = config.utc_offset();
     let mut clock = match (options.time_start, options.time_step_s) {
@@ -244,6 +301,11 @@ pub fn run(options: &Options) -> i32 {
         if stop.load(Ordering::Relaxed) {
             tracing::info!("stop requested: exiting");
             break;
+        }
+        if reload.swap(false, Ordering::Relaxed) {
+            if let Some(s) = reload_config(options, &mut config, &mut kind, &stop, ok + 1) {
+                source = s;
+            }
         }
         if options.cycles.is_some_and(|n| ok >= n) {
             if options.serve_after {
@@ -464,11 +526,14 @@ fn run_cycle(
     stop: &AtomicBool,
 ) -> Result<Option<(crate::cycle::CycleRecord, f64)>, CycleError> {
     let t = Instant::now();
-    let set = source.capture(at)?;
-    let capture_ms = t.elapsed().as_secs_f64() * 1e3;
+    let set = source.capture(at);
+    // Stopped during the capture: whatever it gave (frames, or an error from the abandoned
+    // wait) is discarded, and nothing is written.
     if stop.load(Ordering::Relaxed) {
         return Ok(None);
     }
+    let set = set?;
+    let capture_ms = t.elapsed().as_secs_f64() * 1e3;
     let products = pipeline.process(&set, capture_ms, source.name())?;
     let mut record = products.record;
     record.sequence = sequence;
@@ -495,10 +560,158 @@ fn run_cycle(
     Ok(Some((record, t.elapsed().as_secs_f64() * 1e3)))
 }
 
-/// On the board: map the register window and the DMA buffer, drop root, bring the fabric
-/// up. The fabric capture source arrives with the whole core (issue 10); until then the
-/// daemon says so and exits.
-fn run_hardware(config: &Config) -> i32 {
+/// Where captures come from.
+enum SourceKind {
+    /// `--sim` with `[sim] source = "sim"`.
+    Sim,
+    /// `--sim` with `[sim] source = "fabric"`: the cycle-accurate core.
+    FabricSim,
+    /// The board; the windows are taken by the first source built.
+    Board(Option<crate::hardware::Windows>),
+}
+
+/// Builds the capture source of `kind` for `config`.
+fn make_source(
+    kind: &mut SourceKind,
+    config: &Config,
+    stop: Arc<AtomicBool>,
+) -> Result<Box<dyn CaptureSource>, SourceError> {
+    let device = || {
+        skylux_hps::camera::DeviceConfig::read(&config.camera.device)
+            .map(|(d, _)| d)
+            .map_err(|e| SourceError::Other(e.to_string()))
+    };
+    Ok(match kind {
+        SourceKind::Sim => Box::new(SimSource::new(
+            device()?,
+            skylux_hps::sun::Site {
+                latitude_deg: config.site.latitude_deg,
+                longitude_deg: config.site.longitude_deg,
+                elevation_m: config.site.elevation_m,
+            },
+            config.sim.clone(),
+            config.camera.exposures_us.clone(),
+            config.camera.gain,
+            &config.output.dir.join(SPOOL_DIR),
+        )),
+        SourceKind::FabricSim => Box::new(crate::fabric_source::sim_fabric_source(
+            config,
+            &device()?,
+            stop,
+        )?),
+        SourceKind::Board(windows) => {
+            let Some(w) = windows.take() else {
+                return Err(SourceError::Other(
+                    "the hardware windows are in use: restart skyluxd to apply a new \
+                     [camera] or [fabric] section"
+                        .into(),
+                ));
+            };
+            let wait = crate::fabric_source::board_wait(config.hardware.uio_device.as_deref())
+                .map_err(|e| SourceError::Other(format!("interrupt: {e}")))?;
+            // The fabric's own clock is read back at bring-up; the register map's constant
+            // is the design's, used for the settings until then.
+            let settings =
+                crate::fabric_source::fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, false);
+            Box::new(crate::fabric_source::FabricSource::new(
+                w.registers,
+                w.dma,
+                wait,
+                settings,
+                stop,
+            )?)
+        }
+    })
+}
+
+/// SIGHUP: re-reads and validates the configuration. A bad file is logged and the running
+/// configuration kept. A good one is applied from the next cycle: the schedule, retry,
+/// output retention, camera exposures and gain, `[sim]` and `[fabric]`; what is bound at
+/// start (site, room and its daylight coefficients, API address, output directory, hardware
+/// windows) keeps its running value, with a warning naming it. Returns the rebuilt source.
+fn reload_config(
+    options: &Options,
+    config: &mut Config,
+    kind: &mut SourceKind,
+    stop: &Arc<AtomicBool>,
+    next_sequence: u64,
+) -> Option<Box<dyn CaptureSource>> {
+    let mut new = match Config::load(&options.config, &options.overrides) {
+        Ok(c) => c,
+        Err(e) => {
+            tracing::error!(
+                kind = "config",
+                "SIGHUP: reload refused, the running configuration is kept: {e}"
+            );
+            return None;
+        }
+    };
+    let mut kept = Vec::new();
+    let d = |a: &dyn std::fmt::Debug, b: &dyn std::fmt::Debug| format!("{a:?}") != format!("{b:?}");
+    if d(&new.site, &config.site) {
+        kept.push("site");
+        new.site = config.site.clone();
+    }
+    if d(&new.room, &config.room) {
+        kept.push("room");
+        new.room = config.room.clone();
+    }
+    if d(&new.camera.device, &config.camera.device) {
+        kept.push("camera.device");
+        new.camera.device = config.camera.device.clone();
+    }
+    if d(&new.api, &config.api) {
+        kept.push("api");
+        new.api = config.api.clone();
+    }
+    if new.output.dir != config.output.dir {
+        kept.push("output.dir");
+        new.output.dir = config.output.dir.clone();
+    }
+    if d(&new.hardware, &config.hardware) {
+        kept.push("hardware");
+        new.hardware = config.hardware.clone();
+    }
+    if options.sim && new.sim.source != config.sim.source {
+        kept.push("sim.source");
+        new.sim.source = config.sim.source;
+    }
+    if !kept.is_empty() {
+        tracing::warn!(
+            kept = ?kept,
+            "SIGHUP: these settings are bound at start and keep their running values until a restart"
+        );
+    }
+    let source_changed = d(&new.camera, &config.camera)
+        || d(&new.sim, &config.sim)
+        || d(&new.fabric, &config.fabric);
+    let mut rebuilt = None;
+    if source_changed {
+        match make_source(kind, &new, stop.clone()) {
+            Ok(s) => rebuilt = Some(s),
+            Err(e) => {
+                tracing::error!(
+                    kind = "config",
+                    "SIGHUP: reload refused, the capture source cannot take it ({e}); the \
+                     running configuration is kept"
+                );
+                return None;
+            }
+        }
+    }
+    *config = new;
+    tracing::info!(
+        next_sequence,
+        period_s = config.capture.period_s,
+        source_rebuilt = rebuilt.is_some(),
+        "SIGHUP: configuration reloaded, applied from the next cycle"
+    );
+    rebuilt
+}
+
+/// On the board: map the register window and the DMA buffer, then drop root. The fabric is
+/// brought up by the source (`FabricSource::new`). Returns the exit status on failure.
+fn map_hardware(config: &Config) -> Result<crate::hardware::Windows, i32> {
     // The physical addresses are the Cyclone V HPS's: mapping them on another machine would
     // touch whatever that machine has there.
     if !cfg!(all(target_arch = "arm", target_os = "linux")) {
@@ -506,35 +719,23 @@ fn run_hardware(config: &Config) -> i32 {
             kind = "hardware",
             "the hardware mode runs on the DE1-SoC's ARM Linux only: use --sim here"
         );
-        return EXIT_UNAVAILABLE;
+        return Err(EXIT_UNAVAILABLE);
     }
     let windows = match crate::hardware::map(&config.hardware) {
         Ok(w) => w,
         Err(e) => {
             tracing::error!(kind = "hardware", "{e}");
-            return EXIT_CANTCREAT;
+            return Err(EXIT_CANTCREAT);
         }
     };
     match crate::privilege::drop_root(&config.hardware.user, config.hardware.group.as_deref()) {
         Ok(d) => tracing::info!(?d, "privileges"),
         Err(e) => {
             tracing::error!(kind = "privilege", "{e}");
-            return EXIT_SOFTWARE;
+            return Err(EXIT_SOFTWARE);
         }
     }
-    match skylux_hps::fpga::Fabric::bring_up(windows.registers) {
-        Ok(f) => tracing::info!(info = ?f.info(), "fabric up"),
-        Err(e) => {
-            tracing::error!(kind = "bring_up", "{e}");
-            return EXIT_UNAVAILABLE;
-        }
-    }
-    tracing::error!(
-        kind = "source",
-        "this build has no fabric capture source yet (FabricSource lands with the whole \
-         core, issue 10): run with --sim"
-    );
-    EXIT_UNAVAILABLE
+    Ok(windows)
 }
 
 #[cfg(test)]

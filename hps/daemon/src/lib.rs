@@ -7,6 +7,9 @@
 //! |---|---|
 //! | [`config`] | `skyluxd.toml`, validated (including which physical memory may be mapped) |
 //! | [`source`] | the capture source trait and the simulated source |
+//! | [`fabric_source`] | the fabric source (board and cycle-accurate simulation), raw frames |
+//! | [`wait`] | waiting for frames: UIO interrupt or polling, with a timeout |
+//! | [`budget`] | `--bench-cycle`: the cycle budget by stage |
 //! | [`cycle`] | capture → HDR → sun → illuminance → record |
 //! | [`output`] | crash-safe results, maps and captures, with retention |
 //! | [`api`] | `/v1/latest`, `/v1/health`, `/v1/metrics` |
@@ -16,13 +19,16 @@
 //! | [`drivers`] | embedded-hal drivers: the shield stepper, the MT9P031 on HPS I2C |
 
 pub mod api;
+pub mod budget;
 pub mod config;
 pub mod cycle;
 pub mod daemon;
 pub mod drivers;
+pub mod fabric_source;
 pub mod hardware;
 pub mod notify;
 pub mod output;
 pub mod privilege;
 pub mod source;
 pub mod spawn;
+pub mod wait;

@@ -1,4 +1,5 @@
 //! `skyluxd --config FILE [--sim] [--cycles N] [--time-start RFC3339 --time-step-s S]`
+//! `skyluxd --bench-cycle [--json] [--repeat N]`: the cycle budget (BENCHMARKS.md).
 
 use clap::Parser;
 use skyluxd::config::Overrides;
@@ -10,8 +11,17 @@ use std::path::PathBuf;
 #[command(name = "skyluxd", version, about)]
 struct Args {
     /// The configuration (see hps/skyluxd.toml).
+    #[arg(long, required_unless_present = "bench_cycle")]
+    config: Option<PathBuf>,
+    /// Measure the cycle budget by stage at full resolution and exit (src/budget.rs).
     #[arg(long)]
-    config: PathBuf,
+    bench_cycle: bool,
+    /// With --bench-cycle: print only the JSON line.
+    #[arg(long)]
+    json: bool,
+    /// With --bench-cycle: repeats per measured stage (median reported).
+    #[arg(long, default_value_t = 5)]
+    repeat: usize,
     /// Run against the simulated camera and sky instead of the fabric.
     #[arg(long)]
     sim: bool,
@@ -51,8 +61,17 @@ fn main() {
         .with_max_level(args.log_level)
         .with_target(false)
         .init();
+    if args.bench_cycle {
+        match skyluxd::budget::run(args.json, args.repeat) {
+            Ok(()) => std::process::exit(0),
+            Err(e) => {
+                tracing::error!("bench-cycle: {e:#}");
+                std::process::exit(skyluxd::daemon::EXIT_SOFTWARE);
+            }
+        }
+    }
     let code = run(&Options {
-        config: args.config,
+        config: args.config.unwrap_or_default(),
         sim: args.sim,
         cycles: args.cycles,
         time_start: args.time_start,

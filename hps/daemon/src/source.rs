@@ -141,13 +141,25 @@ impl SimSource {
 
     /// The luminance of the simulated world in every direction at `at`, cd/m².
     fn world(&self, at: DateTime<FixedOffset>) -> Result<impl Fn(DVec3) -> f64 + Sync, String> {
-        let sun =
-            solar_position(at.with_timezone(&Utc), &self.site, None).map_err(|e| e.to_string())?;
+        sim_world(&self.site, self.sim.sky, at)
+    }
+}
+
+/// The luminance of the simulated world (SPA sun, ASHRAE clear-day or overcast Perez sky, a
+/// grey ground) in every direction at `at`, cd/m²: what [`SimSource`] renders, and what the
+/// simulated MT9P031 of the fabric source images.
+pub fn sim_world(
+    site: &Site,
+    sky_kind: SimSky,
+    at: DateTime<FixedOffset>,
+) -> Result<impl Fn(DVec3) -> f64 + Sync + Send + 'static, String> {
+    {
+        let sun = solar_position(at.with_timezone(&Utc), site, None).map_err(|e| e.to_string())?;
         let sun_dir = sun.direction();
         let altitude = sun.altitude_deg();
         let sky = if altitude >= MIN_SUN_ALTITUDE_DEG {
             let (dni_clear, dhi_clear) = ashrae_clear_day_w_m2(altitude.to_radians());
-            let (dni, dhi) = match self.sim.sky {
+            let (dni, dhi) = match sky_kind {
                 SimSky::Clear => (dni_clear, dhi_clear),
                 // Overcast as in the campaign simulator: no beam, 35 % of the clear global.
                 SimSky::Overcast => (

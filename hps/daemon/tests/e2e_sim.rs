@@ -18,26 +18,12 @@ fn three_cycles_serve_http_and_match_the_offline_pipeline() {
     let out = tmp.path().join("out");
     let log = tmp.path().join("stderr.log");
     let config = example_config();
-    let mut child = start(
-        &[
-            "--sim",
-            "--cycles",
-            "3",
-            "--config",
-            config.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--api",
-            "127.0.0.1:0",
-            // Three hours of a clear May day in Lausanne, an hour apart.
-            "--time-start",
-            "2017-05-08T10:00:00+02:00",
-            "--time-step-s",
-            "3600",
-            "--serve-after",
-        ],
-        &log,
-    );
+    // Three hours of a clear May day in Lausanne, an hour apart.
+    let mut child = SimRun::new(&config, &out)
+        .cycles(3)
+        .clock("2017-05-08T10:00:00+02:00", 3600)
+        .serve_after()
+        .start(&log);
     let results = out.join("results.jsonl");
     until(Duration::from_secs(50), &log, || {
         (complete_lines(&results).len() >= 3).then_some(())
@@ -216,24 +202,10 @@ fn quarter_resolution_extracts_the_sun_matches_offline_and_monte_carlo() {
         ],
         "",
     );
-    let mut child = start(
-        &[
-            "--sim",
-            "--cycles",
-            "1",
-            "--config",
-            config.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--api",
-            "127.0.0.1:0",
-            "--time-start",
-            "2017-05-08T12:00:00+02:00",
-            "--time-step-s",
-            "3600",
-        ],
-        &log,
-    );
+    let mut child = SimRun::new(&config, &out)
+        .cycles(1)
+        .clock("2017-05-08T12:00:00+02:00", 3600)
+        .start(&log);
     let status = wait(&mut child, Duration::from_secs(55));
     assert_eq!(
         status.code(),

@@ -32,24 +32,10 @@ fn injected_faults_are_logged_retried_with_backoff_and_survived() {
         .map(|(a, k)| format!("[[sim.fault]]\nattempt = {a}\nkind = \"{k}\"\n"))
         .collect();
     let config = config_with(tmp.path(), &[SMALL], &extra);
-    let mut child = start(
-        &[
-            "--sim",
-            "--cycles",
-            "3",
-            "--config",
-            config.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--api",
-            "127.0.0.1:0",
-            "--time-start",
-            T0,
-            "--time-step-s",
-            "3600",
-        ],
-        &log,
-    );
+    let mut child = SimRun::new(&config, &out)
+        .cycles(3)
+        .clock(T0, 3600)
+        .start(&log);
     let status = wait(&mut child, Duration::from_secs(55));
     let text = std::fs::read_to_string(&log).unwrap();
     assert_eq!(status.code(), Some(0), "{text}");
@@ -191,29 +177,14 @@ fn read_only_output_is_retried_and_earlier_results_survive() {
     let out = tmp.path().join("out");
     let log = tmp.path().join("stderr.log");
     let config = config_with(tmp.path(), &[SMALL], "");
-    let args = |cycles: &'static str, start: &'static str| {
-        vec![
-            "--sim".to_string(),
-            "--cycles".into(),
-            cycles.into(),
-            "--config".into(),
-            config.to_str().unwrap().into(),
-            "--out".into(),
-            out.to_str().unwrap().into(),
-            "--api".into(),
-            "127.0.0.1:0".into(),
-            "--time-start".into(),
-            start.into(),
-            "--time-step-s".into(),
-            "3600".into(),
-        ]
-    };
-    let run = |a: &[String]| {
-        let refs: Vec<&str> = a.iter().map(String::as_str).collect();
-        start(&refs, &log)
+    let run = |cycles: u64, start: &str| {
+        SimRun::new(&config, &out)
+            .cycles(cycles)
+            .clock(start, 3600)
+            .start(&log)
     };
     // One good cycle.
-    let mut child = run(&args("1", T0));
+    let mut child = run(1, T0);
     assert_eq!(wait(&mut child, Duration::from_secs(40)).code(), Some(0));
     let before = std::fs::read(out.join("results.jsonl")).unwrap();
     let csv_before = std::fs::read(out.join("illuminance.csv")).unwrap();
@@ -241,7 +212,7 @@ fn read_only_output_is_retried_and_earlier_results_survive() {
         );
         return;
     }
-    let mut child = run(&args("1", "2017-05-08T14:00:00+02:00"));
+    let mut child = run(1, "2017-05-08T14:00:00+02:00");
     // The daemon fails, logs, backs off and keeps running.
     until(Duration::from_secs(40), &log, || {
         let t = std::fs::read_to_string(&log).unwrap_or_default();
@@ -284,22 +255,9 @@ fn sigkill_in_a_loop_never_corrupts_earlier_results() {
     for round in 0..5u64 {
         let log = tmp.path().join(format!("stderr-{round}.log"));
         let start_time = format!("2017-05-{:02}T10:00:00+02:00", 8 + round);
-        let mut child = start(
-            &[
-                "--sim",
-                "--config",
-                config.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-                "--api",
-                "127.0.0.1:0",
-                "--time-start",
-                &start_time,
-                "--time-step-s",
-                "600",
-            ],
-            &log,
-        );
+        let mut child = SimRun::new(&config, &out)
+            .clock(&start_time, 600)
+            .start(&log);
         // Let it complete at least one new cycle, then kill it at a varying moment of the
         // next one (the writes are a few ms of a cycle; some rounds land in them).
         let n = complete_lines(&results).len();
@@ -346,24 +304,10 @@ fn sigkill_in_a_loop_never_corrupts_earlier_results() {
     }
     // A last, clean run repairs any partial line and appends after the earlier results.
     let log = tmp.path().join("stderr-final.log");
-    let mut child = start(
-        &[
-            "--sim",
-            "--cycles",
-            "1",
-            "--config",
-            config.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--api",
-            "127.0.0.1:0",
-            "--time-start",
-            "2017-05-20T10:00:00+02:00",
-            "--time-step-s",
-            "600",
-        ],
-        &log,
-    );
+    let mut child = SimRun::new(&config, &out)
+        .cycles(1)
+        .clock("2017-05-20T10:00:00+02:00", 600)
+        .start(&log);
     assert_eq!(wait(&mut child, Duration::from_secs(40)).code(), Some(0));
     let text = std::fs::read_to_string(&results).unwrap();
     assert!(text.as_bytes().starts_with(&earlier));

@@ -7,18 +7,48 @@
 //! `badcomponent`), since next-event estimation already counts it. `-ab` bounds the number
 //! of diffuse (ambient) bounces including the one from the sensor; specular events (glass,
 //! mirror, smooth or Gaussian highlights) do not count against it, as in RADIANCE, and are
-//! bounded by [`Settings::max_specular_events`] (rtrace's `-lr`). No Russian roulette: every
-//! path runs to its bounce limit or until it leaves the scene or is absorbed, so the
-//! estimate is unbiased for the given limits.
+//! bounded by [`Settings::max_specular_events`] (rtrace's `-lr`). With Russian roulette
+//! (paths from sensors and cameras, [`Settings::russian_roulette`]), a path past its third diffuse bounce continues with
+//! probability min(1, throughput) and is reweighted by its inverse (Russian roulette, Arvo &
+//! Kirk 1990): unbiased for the given limits, and paths whose remaining contribution is small
+//! stop early. The daylight-coefficient paths ([`escape_sample`]) run to their limits.
+//!
+//! Sky light is found three ways at every vertex that may scatter diffusely (the sensor
+//! itself and each diffuse vertex within `-ab`): by the sampled continuation leaving the
+//! scene, by a direction towards a random point on a window ([`super::portal`]), and by a
+//! direction drawn from the sky's own brightness ([`super::sky_sampling`]). The three are
+//! combined by multiple importance sampling with the balance heuristic (Veach & Guibas,
+//! "Optimally combining sampling techniques for Monte Carlo rendering", SIGGRAPH 1995): a
+//! sample from any of them counts f L T / (p_bsdf + p_portal + p_sky), so every light path is
+//! counted once in expectation whichever strategies can produce it, and paths only the
+//! continuation can produce (sky seen after a mirror, a reflection in the glass, a diffuse
+//! vertex past `-ab`) still count in full.
+//!
+//! The sun's patch (where the sun shines in through a window) is found the same way: at the
+//! sensor and at the first diffuse vertex, a point on a portal is followed along the sun's
+//! direction into the room to the first opaque surface, connected to the vertex, and the
+//! sun's next-event estimate there is carried back; the vertex's own diffuse sample that
+//! reaches the same point weights its sun estimate there by the balance heuristic in area
+//! measure ([`Settings::sun_portal_sampling`]).
 
 use super::error::EngineError;
-use super::material::{basis, cosine_direction, glass_fractions, Material, Scatter};
+use super::material::{basis, cosine_direction, glass_fractions, DiffuseLobe, Material, Scatter};
+use super::portal::Portals;
 use super::ray::Ray;
 use super::rng::Rng;
 use super::sky::{DistantEmitter, DistantKind};
+use super::sky_sampling::SkyDistribution;
 use super::world::World;
 use glam::DVec3;
 use std::f64::consts::PI;
+
+/// Diffuse bounces a path always makes before Russian roulette may end it.
+const RUSSIAN_ROULETTE_AFTER: u32 = 3;
+
+/// The sun-patch strategy runs at the sensor and at diffuse vertices with fewer than this many
+/// diffuse bounces behind them (the sensor's sample counts as one): the first surfaces seen
+/// carry most of the patch's light, and deeper vertices would only add cost.
+const SUN_PATCH_BOUNCES: u32 = 2;
 
 /// Controls, named after rtrace's.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -31,6 +61,20 @@ pub struct Settings {
     pub seed: u64,
     /// Like `-lr`: most specular events (glass, mirror, highlights) per path.
     pub max_specular_events: u32,
+    /// Next-event estimation of the sky through the world's portals (windows), combined with
+    /// the sampled continuation by multiple importance sampling. Unbiased either way; on, it
+    /// cuts the variance of a room lit through windows many times.
+    pub portal_sampling: bool,
+    /// Next-event estimation of the sky by its brightness (the circumsolar region), combined
+    /// likewise.
+    pub sky_sampling: bool,
+    /// Russian roulette past the third diffuse bounce (unbiased; most paths of a room with
+    /// reflectances near 0.5 then stop after three or four bounces instead of `-ab`).
+    pub russian_roulette: bool,
+    /// Next-event estimation of the sun's patch: points where the sun shines in through a
+    /// portal, sampled by projecting portal points along the sun's direction and connected to
+    /// each diffuse vertex, combined with the continuation by multiple importance sampling.
+    pub sun_portal_sampling: bool,
 }
 
 impl Default for Settings {
@@ -40,6 +84,10 @@ impl Default for Settings {
             samples_per_sensor: 1024,
             seed: 1,
             max_specular_events: 16,
+            portal_sampling: true,
+            sky_sampling: true,
+            russian_roulette: true,
+            sun_portal_sampling: true,
         }
     }
 }
@@ -90,11 +138,25 @@ pub fn irradiance_sample(
                 * world.shadow_transmission(position_m, None, l);
         }
     }
+    // The sun via plane mirrors (virtual sources).
+    e += super::virtual_sources::mirrored_lights(world, position_m, None, rng, &mut |l, sr| {
+        DVec3::splat(sr * l.dot(normal).max(0.0))
+    });
     if settings.ambient_bounces == 0 {
         return e;
     }
+    let nee = SkyNee::new(world, settings);
+    let lobe = DiffuseLobe::sensor(normal);
+    if let Some(nee) = &nee {
+        e += nee.estimate(world, position_m, None, &lobe, rng);
+        e += nee.sun_estimate(world, position_m, None, &lobe, 1.0, 1.0, rng);
+    }
     // Indirect: cosine-weighted direction, so E = π L(ω) per sample.
     let d = cosine_direction(normal, rng);
+    let last = LastDiffuse {
+        position_m,
+        pdf_sr: lobe.eval(d).1,
+    };
     e + PI
         * trace(
             world,
@@ -104,7 +166,271 @@ pub fn irradiance_sample(
             settings,
             rng,
             &mut |t, dir| t * world.escape_radiance(dir),
+            nee.as_ref(),
+            Some(last),
+            settings.russian_roulette,
         )
+}
+
+/// Where the path's last diffuse scattering happened and the density (per steradian) with
+/// which it chose the current direction: what the weight of an escape found by the
+/// continuation needs.
+#[derive(Clone, Copy, Debug)]
+struct LastDiffuse {
+    position_m: DVec3,
+    pdf_sr: f64,
+}
+
+/// Next-event estimation of the light beyond the scene (sky and ground `glow`s, environment)
+/// through portals and by the sky's brightness.
+struct SkyNee<'a> {
+    portals: Option<&'a Portals>,
+    sky: Option<&'a SkyDistribution>,
+    /// Portals through which sunlit points are sampled (see [`SkyNee::sun_estimate`]).
+    sun_portals: Option<&'a Portals>,
+}
+
+impl<'a> SkyNee<'a> {
+    /// The strategies `settings` asks for that the world supports; None if none applies or
+    /// nothing beyond the scene is bright.
+    fn new(world: &'a World, settings: &Settings) -> Option<Self> {
+        let bright = world.has_escape_radiance();
+        let portals = (bright && settings.portal_sampling && !world.portals().is_empty())
+            .then(|| world.portals());
+        let sky = if bright && settings.sky_sampling {
+            world.sky_distribution()
+        } else {
+            None
+        };
+        let has_light = world
+            .distant_sources()
+            .iter()
+            .any(|s| s.kind == DistantKind::Light);
+        let sun_portals =
+            (has_light && settings.sun_portal_sampling && !world.portals().is_empty())
+                .then(|| world.portals());
+        (portals.is_some() || sky.is_some() || sun_portals.is_some()).then_some(Self {
+            portals,
+            sky,
+            sun_portals,
+        })
+    }
+
+    /// Distance from `y` along unit `dir` to the first surface that is neither glass nor
+    /// invisible (infinite if none).
+    fn opaque_distance(world: &World, y: DVec3, from: Option<u32>, dir: DVec3) -> f64 {
+        let mut ray = Ray::new(y, dir);
+        let mut from = from;
+        let mut travelled = 0.0;
+        for _ in 0..64 {
+            let Some(hit) = world.intersect(&ray, from) else {
+                return f64::INFINITY;
+            };
+            travelled += hit.t_m;
+            match world.material(hit.primitive) {
+                Material::Glass(_) | Material::Invisible => {}
+                _ => return travelled,
+            }
+            ray = Ray::new(ray.at(hit.t_m), dir);
+            from = Some(hit.primitive);
+        }
+        travelled
+    }
+
+    /// Area density at the point `y` (primitive `primitive`, geometric normal `n_y`) of the
+    /// sun-patch strategy for the sun in unit direction `s`.
+    fn sun_patch_pdf(&self, world: &World, y: DVec3, n_y: DVec3, primitive: u32, s: DVec3) -> f64 {
+        let Some(portals) = self.sun_portals else {
+            return 0.0;
+        };
+        let t_max = Self::opaque_distance(world, y, Some(primitive), s);
+        portals.projected_area_pdf(y, n_y, s, t_max)
+    }
+
+    /// The sun reflected once more, by way of its patch: for each distant `light`, a point
+    /// on a portal is followed along the sun's direction into the room to the first opaque
+    /// surface y (where the sun may shine through the window), y is connected to the vertex
+    /// `x`, and the sun's next-event estimate at y is carried back. Combined by the balance
+    /// heuristic with the path that reaches y by the vertex's own diffuse sampling (density
+    /// `q` p(ω) |cos θ_y| / d², `q_front`/`q_back` the Russian-roulette survival of that
+    /// continuation), whose sun estimate at y [`trace`] weights to match.
+    #[allow(clippy::too_many_arguments)]
+    fn sun_estimate(
+        &self,
+        world: &World,
+        x: DVec3,
+        from: Option<u32>,
+        lobe: &DiffuseLobe,
+        q_front: f64,
+        q_back: f64,
+        rng: &mut Rng,
+    ) -> DVec3 {
+        let Some(portals) = self.sun_portals else {
+            return DVec3::ZERO;
+        };
+        let mut sum = DVec3::ZERO;
+        for source in world.distant_sources() {
+            if source.kind != DistantKind::Light {
+                continue;
+            }
+            let s = source.direction;
+            let Some((p, _)) = portals.sample_point(rng) else {
+                continue;
+            };
+            // Into the room from the portal point, through glass and invisible surfaces.
+            let mut ray = Ray::new(p - s * 1e-7, -s);
+            let mut hit_from = None;
+            let mut found = None;
+            for _ in 0..64 {
+                let Some(hit) = world.intersect(&ray, hit_from) else {
+                    break;
+                };
+                match world.material(hit.primitive) {
+                    Material::Glass(_) | Material::Invisible => {
+                        ray = Ray::new(ray.at(hit.t_m), -s);
+                        hit_from = Some(hit.primitive);
+                    }
+                    Material::Normal(m) => {
+                        found = Some((ray.at(hit.t_m), hit.normal, hit.primitive, m));
+                        break;
+                    }
+                    _ => break,
+                }
+            }
+            // The sun-cone sample is drawn whatever happens, so the stream stays aligned.
+            let l = sample_cone(source, rng);
+            let Some((y, n_y, prim_y, m)) = found else {
+                continue;
+            };
+            let to = y - x;
+            let d2 = to.length_squared();
+            if (d2).partial_cmp(&1e-12) != Some(std::cmp::Ordering::Greater) {
+                continue;
+            }
+            let dist = d2.sqrt();
+            let w = to / dist;
+            let (f, pdf_lobe) = lobe.eval(w);
+            if f == DVec3::ZERO {
+                continue;
+            }
+            let cos_y = n_y.dot(w).abs();
+            if (cos_y).partial_cmp(&1e-9) != Some(std::cmp::Ordering::Greater) {
+                continue;
+            }
+            let shading = m.shade(w, n_y, world.is_flat(prim_y));
+            let c = shading.source_coefficient(l, source.solid_angle_sr);
+            if c == DVec3::ZERO {
+                continue;
+            }
+            // x must see y directly.
+            match world.intersect(&Ray::new(x, w), from) {
+                Some(h)
+                    if h.primitive == prim_y && (h.t_m - dist).abs() <= 1e-6 * dist.max(1.0) => {}
+                _ => continue,
+            }
+            let t = world.shadow_transmission(y, Some(prim_y), l);
+            if t == DVec3::ZERO {
+                continue;
+            }
+            let q = if lobe.normal.dot(w) > 0.0 {
+                q_front
+            } else {
+                q_back
+            };
+            let p_a = q * pdf_lobe * cos_y / d2;
+            let p_b = self.sun_patch_pdf(world, y, n_y, prim_y, s);
+            if (p_a + p_b).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+                continue;
+            }
+            sum += f * (cos_y / d2) * c * source.radiance(l) * t / (p_a + p_b);
+        }
+        sum
+    }
+
+    /// Density of the next-event strategies for unit `d` from `x`. With portals, the sky
+    /// strategy keeps only directions through a portal (a sample that misses them is
+    /// dropped before any ray is traced), so its density is the sky's where a portal is
+    /// crossed and 0 elsewhere; directions outside the portals are then left entirely to the
+    /// continuation, which keeps the estimate unbiased when light also enters elsewhere.
+    fn pdf_sr(&self, x: DVec3, d: DVec3) -> f64 {
+        match (self.portals, self.sky) {
+            (Some(p), Some(s)) => {
+                let pp = p.pdf(x, d);
+                if pp > 0.0 {
+                    pp + s.pdf(d)
+                } else {
+                    0.0
+                }
+            }
+            (Some(p), None) => p.pdf(x, d),
+            (None, Some(s)) => s.pdf(d),
+            (None, None) => 0.0,
+        }
+    }
+
+    /// Balance-heuristic weight of an escape in unit direction `d` found by the continuation
+    /// sampled at `last`.
+    fn continuation_weight(&self, last: &LastDiffuse, d: DVec3) -> f64 {
+        let other = self.pdf_sr(last.position_m, d);
+        if other > 0.0 {
+            last.pdf_sr / (last.pdf_sr + other)
+        } else {
+            1.0
+        }
+    }
+
+    /// One sample from each strategy at `x` (leaving surface `from`), for the diffuse `lobe`:
+    /// Σ f |cos| L T / (p_lobe + p_portal + p_sky), the reflected radiance (or irradiance for
+    /// a sensor) they estimate.
+    fn estimate(
+        &self,
+        world: &World,
+        x: DVec3,
+        from: Option<u32>,
+        lobe: &DiffuseLobe,
+        rng: &mut Rng,
+    ) -> DVec3 {
+        let mut sum = DVec3::ZERO;
+        if let Some(portals) = self.portals {
+            if let Some((d, _)) = portals.sample(x, rng) {
+                sum += self.one(world, x, from, lobe, d);
+            }
+        }
+        if let Some(sky) = self.sky {
+            let (d, _) = sky.sample(rng);
+            if self.portals.is_none_or(|p| p.pdf(x, d) > 0.0) {
+                sum += self.one(world, x, from, lobe, d);
+            }
+        }
+        sum
+    }
+
+    fn one(
+        &self,
+        world: &World,
+        x: DVec3,
+        from: Option<u32>,
+        lobe: &DiffuseLobe,
+        d: DVec3,
+    ) -> DVec3 {
+        let (f, pdf_lobe) = lobe.eval(d);
+        if f == DVec3::ZERO {
+            return DVec3::ZERO;
+        }
+        let l = world.escape_radiance(d);
+        if l == DVec3::ZERO {
+            return DVec3::ZERO;
+        }
+        let denominator = pdf_lobe + self.pdf_sr(x, d);
+        if (denominator).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            return DVec3::ZERO;
+        }
+        let t = world.shadow_transmission(x, from, d);
+        if t == DVec3::ZERO {
+            return DVec3::ZERO;
+        }
+        f * l * t / denominator
+    }
 }
 
 /// One path from a sensor, as [`irradiance_sample`] traces it, with no distant `light` and
@@ -134,13 +460,42 @@ pub fn escape_sample(
             escape(PI * t, dir);
             DVec3::ZERO
         },
+        None,
+        None,
+        false,
     );
 }
 
+/// Radiance back along `ray` (leaving the flat surface `from`, if any) for a path with no
+/// diffuse bounce yet: how [`super::radiance::ray_radiance`] continues a camera ray.
+pub(crate) fn trace_radiance(
+    world: &World,
+    ray: Ray,
+    from: Option<u32>,
+    settings: &Settings,
+    rng: &mut Rng,
+) -> DVec3 {
+    let nee = SkyNee::new(world, settings);
+    trace(
+        world,
+        ray,
+        from,
+        0,
+        settings,
+        rng,
+        &mut |t, dir| t * world.escape_radiance(dir),
+        nee.as_ref(),
+        None,
+        settings.russian_roulette,
+    )
+}
+
 /// Radiance arriving back along `ray`, for a path that has already made `ambient_used`
-/// diffuse bounces.
-/// Radiance arriving back along `ray`; a ray that leaves the scene with path throughput `t`
-/// in direction `d` adds `escape(t, d)`.
+/// diffuse bounces; a ray that leaves the scene with path throughput `t` in direction `d`
+/// adds `escape(t, d)`. With `nee`, every vertex that may scatter diffusely also estimates
+/// the sky by next-event estimation, and an escape straight from the diffuse vertex `last`
+/// (through glass and invisible surfaces only) is weighted by multiple importance sampling.
+#[allow(clippy::too_many_arguments)]
 fn trace(
     world: &World,
     mut ray: Ray,
@@ -149,7 +504,14 @@ fn trace(
     settings: &Settings,
     rng: &mut Rng,
     escape: &mut dyn FnMut(DVec3, DVec3) -> DVec3,
+    nee: Option<&SkyNee>,
+    mut last: Option<LastDiffuse>,
+    roulette: bool,
 ) -> DVec3 {
+    // Density × Russian-roulette survival with which the last diffuse vertex chose this
+    // segment, while the path has gone straight from it with no crossing: what the sun-patch
+    // strategy's weight at the next vertex needs.
+    let mut direct: Option<f64> = last.map(|l| l.pdf_sr);
     let mut throughput = DVec3::ONE;
     let mut radiance = DVec3::ZERO;
     let mut specular_events = 0u32;
@@ -157,7 +519,11 @@ fn trace(
     let mut crossings = 0u32;
     loop {
         let Some(hit) = world.intersect(&ray, from) else {
-            return radiance + escape(throughput, ray.direction);
+            let weight = match (nee, &last) {
+                (Some(nee), Some(last)) => nee.continuation_weight(last, ray.direction),
+                _ => 1.0,
+            };
+            return radiance + escape(throughput * weight, ray.direction);
         };
         let p = ray.at(hit.t_m);
         from = Some(hit.primitive);
@@ -206,6 +572,14 @@ fn trace(
             }
             Material::Normal(m) => {
                 let shading = m.shade(d, hit.normal, world.is_flat(hit.primitive));
+                // Reached straight from a diffuse vertex: the sun-patch strategy there could
+                // have produced this vertex too (balance heuristic, area densities).
+                let p_direct = match (nee, direct) {
+                    (Some(nee), Some(pdf)) if nee.sun_portals.is_some() => {
+                        Some(pdf * hit.normal.dot(d).abs() / (hit.t_m * hit.t_m))
+                    }
+                    _ => None,
+                };
                 for source in world.distant_sources() {
                     if source.kind != DistantKind::Light {
                         continue;
@@ -213,19 +587,83 @@ fn trace(
                     let l = sample_cone(source, rng);
                     let c = shading.source_coefficient(l, source.solid_angle_sr);
                     if c != DVec3::ZERO {
-                        radiance += throughput
-                            * c
-                            * source.radiance(l)
-                            * world.shadow_transmission(p, from, l);
+                        let t = world.shadow_transmission(p, from, l);
+                        if t == DVec3::ZERO {
+                            continue;
+                        }
+                        let w = match (nee, p_direct) {
+                            (Some(nee), Some(p_a)) if p_a > 0.0 => {
+                                let p_b = nee.sun_patch_pdf(
+                                    world,
+                                    p,
+                                    hit.normal,
+                                    hit.primitive,
+                                    source.direction,
+                                );
+                                p_a / (p_a + p_b)
+                            }
+                            _ => 1.0,
+                        };
+                        radiance += throughput * c * source.radiance(l) * t * w;
                     }
                 }
+                radiance += throughput
+                    * super::virtual_sources::mirrored_lights(world, p, from, rng, &mut |l, sr| {
+                        shading.source_coefficient(l, sr)
+                    });
                 let allow_diffuse = ambient_used < settings.ambient_bounces;
+                let lobe = match nee {
+                    Some(nee) => shading.diffuse_lobe(allow_diffuse).inspect(|lobe| {
+                        radiance += throughput * nee.estimate(world, p, from, lobe, rng);
+                        if nee.sun_portals.is_some() && ambient_used < SUN_PATCH_BOUNCES {
+                            // The continuation's Russian-roulette survival, per side.
+                            let q = |f: DVec3, prob: f64| {
+                                if roulette
+                                    && ambient_used + 1 > RUSSIAN_ROULETTE_AFTER
+                                    && prob > 0.0
+                                {
+                                    (throughput * f * (PI / prob)).max_element().min(1.0)
+                                } else {
+                                    1.0
+                                }
+                            };
+                            let q_front = q(lobe.front_rgb, lobe.front_probability);
+                            let q_back = q(lobe.back_rgb, lobe.back_probability);
+                            radiance += throughput
+                                * nee.sun_estimate(world, p, from, lobe, q_front, q_back, rng);
+                        }
+                    }),
+                    None => None,
+                };
                 match shading.sample(allow_diffuse, rng) {
                     Scatter::Absorbed => return radiance,
                     Scatter::Diffuse { direction, weight } => {
                         ambient_used += 1;
                         throughput *= weight;
-                        direction
+                        last = lobe.map(|lobe| LastDiffuse {
+                            position_m: p,
+                            pdf_sr: lobe.eval(direction).1,
+                        });
+                        let mut survival = 1.0;
+                        if roulette && ambient_used > RUSSIAN_ROULETTE_AFTER {
+                            let q = throughput.max_element().min(1.0);
+                            if (q).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater)
+                                || rng.uniform() >= q
+                            {
+                                return radiance;
+                            }
+                            throughput /= q;
+                            survival = q;
+                        }
+                        // Only vertices that sampled the sun patch weight the next one's sun.
+                        direct = last
+                            .filter(|_| ambient_used <= SUN_PATCH_BOUNCES)
+                            .map(|l| l.pdf_sr * survival);
+                        if throughput.max_element() <= 0.0 {
+                            return radiance;
+                        }
+                        ray = Ray::new(p, direction);
+                        continue;
                     }
                     Scatter::Specular { direction, weight } => {
                         specular_events += 1;
@@ -241,6 +679,12 @@ fn trace(
         if throughput.max_element() <= 0.0 {
             return radiance;
         }
+        if next != d {
+            // Turned by a specular event: no next-event strategy produces this path.
+            last = None;
+        }
+        // Any crossing or specular event: the next vertex is not reached directly.
+        direct = None;
         ray = Ray::new(p, next);
     }
 }

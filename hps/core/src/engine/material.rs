@@ -127,6 +127,42 @@ pub enum Scatter {
     Specular { direction: DVec3, weight: DVec3 },
 }
 
+/// The diffuse (Lambertian) scattering at a vertex: for a direction ω on the `normal` side
+/// the integrand is `front_rgb` |cos θ| L(ω), and the vertex's own sampling produces ω with
+/// density `front_probability` |cos θ| / π; likewise behind with the `back_` values. A
+/// sensor is the lobe with front 1 and probability 1 (E = ∫ L cos θ dω).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DiffuseLobe {
+    pub normal: DVec3,
+    pub front_rgb: DVec3,
+    pub back_rgb: DVec3,
+    pub front_probability: f64,
+    pub back_probability: f64,
+}
+
+impl DiffuseLobe {
+    /// The lobe of a sensor facing unit `normal`.
+    pub fn sensor(normal: DVec3) -> Self {
+        Self {
+            normal,
+            front_rgb: DVec3::ONE,
+            back_rgb: DVec3::ZERO,
+            front_probability: 1.0,
+            back_probability: 0.0,
+        }
+    }
+
+    /// (value × |cos θ|, density of the vertex's own sampling) for unit direction `d`.
+    pub fn eval(&self, d: DVec3) -> (DVec3, f64) {
+        let c = self.normal.dot(d);
+        if c > 0.0 {
+            (self.front_rgb * c, self.front_probability * c / PI)
+        } else {
+            (self.back_rgb * -c, self.back_probability * -c / PI)
+        }
+    }
+}
+
 /// The state of m_normal's `NORMDAT` at one hit.
 #[derive(Clone, Debug)]
 pub struct NormalShading {
@@ -205,6 +241,49 @@ impl NormalMaterial {
 }
 
 impl NormalShading {
+    /// The Lambertian parts of this shading as [`NormalShading::sample`] samples them: the
+    /// BRDF (front, the side of the ray) and BTDF (back) values ρ/π per RGB channel and the
+    /// probability that `sample` picks each, so next-event estimation at this vertex can be
+    /// combined with the sampled continuation by multiple importance sampling. None when no
+    /// diffuse component would be sampled (`allow_diffuse` false or no diffuse colour).
+    pub fn diffuse_lobe(&self, allow_diffuse: bool) -> Option<DiffuseLobe> {
+        if !allow_diffuse {
+            return None;
+        }
+        let spec_r = if self.rspec > FTINY {
+            bright(self.scolor).max(0.0)
+        } else {
+            0.0
+        };
+        let spec_t = if self.tspec > FTINY {
+            bright(self.mcolor * self.tspec).max(0.0)
+        } else {
+            0.0
+        };
+        let diff_r = if self.rdiff > FTINY {
+            self.mcolor * self.rdiff
+        } else {
+            DVec3::ZERO
+        };
+        let diff_t = if self.tdiff > FTINY {
+            self.mcolor * self.tdiff
+        } else {
+            DVec3::ZERO
+        };
+        let (br, bt) = (bright(diff_r).max(0.0), bright(diff_t).max(0.0));
+        let total = spec_r + spec_t + br + bt;
+        if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) || br + bt <= 0.0 {
+            return None;
+        }
+        Some(DiffuseLobe {
+            normal: self.pnorm,
+            front_rgb: if br > 0.0 { diff_r / PI } else { DVec3::ZERO },
+            back_rgb: if bt > 0.0 { diff_t / PI } else { DVec3::ZERO },
+            front_probability: br / total,
+            back_probability: bt / total,
+        })
+    }
+
     /// What a shadow ray keeps going through this surface: only smooth `trans` lets source
     /// light through, straight and scaled by colour × tspec (normal.c, the SHADOW branch).
     pub fn shadow_transmission(&self) -> DVec3 {

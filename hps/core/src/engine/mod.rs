@@ -24,11 +24,16 @@ mod error;
 pub mod illuminance;
 pub mod integrator;
 pub mod material;
+pub mod portal;
+pub mod radiance;
 pub mod ray;
+pub mod render;
 pub mod rng;
 pub mod shapes;
 pub mod sky;
+pub mod sky_sampling;
 pub mod slab;
+pub mod virtual_sources;
 pub mod world;
 
 pub use daylight_coefficients::{daylight_coefficients, sun_coefficients, DaylightCoefficients};

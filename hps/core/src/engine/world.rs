@@ -3,9 +3,11 @@
 use super::bvh::Bvh;
 use super::error::EngineError;
 use super::material::{glass_fractions, Emitter, Material, NormalMaterial};
+use super::portal::Portals;
 use super::ray::Ray;
 use super::shapes::{PreparedCone, PreparedPolygon, Primitive, ShapeHit};
 use super::sky::{source_seen, DistantEmitter, DistantKind, SkyFunction};
+use super::sky_sampling::SkyDistribution;
 use super::slab::{BoxTest, SlabTest};
 use crate::scene::{Modifier, ModifierKind, ModifierRef, Scene, Shape, Surface};
 use glam::DVec3;
@@ -35,6 +37,14 @@ pub struct World {
     box_test: Box<dyn BoxTest + Send>,
     distant: Vec<DistantEmitter>,
     environment: Option<Environment>,
+    /// Surface names, per primitive (for naming portals).
+    names: Vec<String>,
+    /// Polygons that may serve as portals (glass or invisible), with their vertices.
+    portal_candidates: Vec<(u32, Vec<DVec3>)>,
+    portals: Portals,
+    /// The radiance-proportional distribution of escape directions, built on first use and
+    /// dropped whenever the sources or the environment change.
+    sky_distribution: std::sync::OnceLock<Option<SkyDistribution>>,
 }
 
 /// Radiance per direction of everything beyond the scene that no distant source covers.
@@ -66,6 +76,8 @@ impl World {
         let mut materials = Vec::new();
         let mut material_index = std::collections::HashMap::new();
         let mut distant = Vec::new();
+        let mut names = Vec::new();
+        let mut polygon_vertices = Vec::new();
         for surface in scene.surfaces() {
             let (material, patterns) = resolve(scene, surface)?;
             if let Shape::Source(s) = &surface.shape {
@@ -117,6 +129,10 @@ impl World {
                     i
                 }
             };
+            if let Shape::Polygon(p) = &surface.shape {
+                polygon_vertices.push((primitives.len() as u32, p.vertices_m.clone()));
+            }
+            names.push(surface.name.clone());
             primitives.push(match &surface.shape {
                 Shape::Polygon(p) => Primitive::Polygon(PreparedPolygon::new(p)),
                 Shape::Sphere(s) => Primitive::Sphere(s.clone()),
@@ -128,7 +144,7 @@ impl World {
             material_of.push(index);
         }
         let bounds: Vec<_> = primitives.iter().map(|p| p.bounds()).collect();
-        Ok(World {
+        let mut world = World {
             bvh: Bvh::build(&bounds),
             primitives,
             material_of,
@@ -136,7 +152,110 @@ impl World {
             box_test,
             distant,
             environment: None,
-        })
+            names,
+            portal_candidates: Vec::new(),
+            portals: Portals::default(),
+            sky_distribution: std::sync::OnceLock::new(),
+        };
+        world.portal_candidates = polygon_vertices
+            .into_iter()
+            .filter(|(p, _)| matches!(world.material(*p), Material::Glass(_) | Material::Invisible))
+            .collect();
+        let found: Vec<(u32, Vec<DVec3>)> = world
+            .portal_candidates
+            .iter()
+            .filter(|(p, v)| world.opens_to_outside(*p, v))
+            .cloned()
+            .collect();
+        world.portals = Portals::new(&found);
+        Ok(world)
+    }
+
+    /// Whether a glass or invisible polygon is an opening to the outside: from its centre,
+    /// on one side or the other, some of nine rays (the normal and eight at 60° from it)
+    /// leave the scene without meeting anything opaque.
+    fn opens_to_outside(&self, primitive: u32, vertices: &[DVec3]) -> bool {
+        let Some(Primitive::Polygon(poly)) = self.primitives.get(primitive as usize) else {
+            return false;
+        };
+        let centre = vertices.iter().copied().sum::<DVec3>() / vertices.len() as f64;
+        let (u, v) = super::material::basis(poly.normal);
+        for side in [1.0, -1.0] {
+            let n = poly.normal * side;
+            let mut dirs = vec![n];
+            for k in 0..8 {
+                let phi = k as f64 * std::f64::consts::FRAC_PI_4;
+                dirs.push(
+                    (n * 0.5 + (u * phi.cos() + v * phi.sin()) * 0.75_f64.sqrt()).normalize(),
+                );
+            }
+            for d in dirs {
+                if self.shadow_transmission(centre, Some(primitive), d) != DVec3::ZERO {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
+    /// The portals next-event estimation samples the sky through (found automatically: glass
+    /// and invisible polygons with a side open to the outside).
+    pub fn portals(&self) -> &Portals {
+        &self.portals
+    }
+
+    /// Names of the polygons used as portals.
+    pub fn portal_names(&self) -> Vec<&str> {
+        self.portals
+            .primitives()
+            .iter()
+            .map(|&p| self.names[p as usize].as_str())
+            .collect()
+    }
+
+    /// Uses the named glass or invisible polygons as the portals instead of those found
+    /// automatically (an empty list turns portal sampling off). A name that matches no such
+    /// polygon is an error.
+    pub fn set_portals(&mut self, names: &[&str]) -> Result<(), EngineError> {
+        let mut chosen = Vec::new();
+        for name in names {
+            let matching: Vec<_> = self
+                .portal_candidates
+                .iter()
+                .filter(|(p, _)| self.names[*p as usize] == *name)
+                .cloned()
+                .collect();
+            if matching.is_empty() {
+                return Err(EngineError::Setting {
+                    name: "portal",
+                    value: (*name).to_string(),
+                    expected: "the name of a glass or invisible polygon in the scene",
+                });
+            }
+            chosen.extend(matching);
+        }
+        self.portals = Portals::new(&chosen);
+        Ok(())
+    }
+
+    /// Whether anything beyond the scene is bright: a `glow` distant source or an
+    /// environment (the sun, a `light`, is reached by its own next-event estimation).
+    pub fn has_escape_radiance(&self) -> bool {
+        self.environment.is_some() || self.distant.iter().any(|s| s.kind == DistantKind::Glow)
+    }
+
+    /// The radiance-proportional distribution of escape directions (None if nothing beyond
+    /// the scene is bright).
+    pub fn sky_distribution(&self) -> Option<&SkyDistribution> {
+        self.sky_distribution
+            .get_or_init(|| {
+                if self.has_escape_radiance() {
+                    SkyDistribution::new(|d| self.escape_radiance(d))
+                } else {
+                    None
+                }
+            })
+            .as_ref()
     }
 
     pub fn distant_sources(&self) -> &[DistantEmitter] {
@@ -145,11 +264,13 @@ impl World {
 
     /// Adds a distant source (e.g. the sun extracted from a sky map, as a `light`).
     pub fn add_distant(&mut self, source: DistantEmitter) {
+        self.sky_distribution = std::sync::OnceLock::new();
         self.distant.push(source);
     }
 
     /// Removes every distant source.
     pub fn clear_distant(&mut self) {
+        self.sky_distribution = std::sync::OnceLock::new();
         self.distant.clear();
     }
 
@@ -161,6 +282,7 @@ impl World {
     /// distant source covers: a measured sky map, for instance. Distant sources take
     /// precedence, as a scene's `source`s are found first.
     pub fn set_environment(&mut self, environment: Option<Environment>) {
+        self.sky_distribution = std::sync::OnceLock::new();
         self.environment = environment;
     }
 
@@ -181,6 +303,11 @@ impl World {
 
     pub fn material(&self, primitive: u32) -> &Material {
         &self.materials[self.material_of[primitive as usize] as usize]
+    }
+
+    /// The geometry of a primitive (virtual sources need the mirrors' planes).
+    pub fn primitive(&self, primitive: u32) -> &Primitive {
+        &self.primitives[primitive as usize]
     }
 
     pub fn is_flat(&self, primitive: u32) -> bool {

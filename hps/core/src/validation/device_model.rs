@@ -111,6 +111,66 @@ pub fn load_captures(
     device: &DeviceConfig,
     progress: &dyn Fn(usize, usize),
 ) -> Result<Vec<CaptureData>, ModelError> {
+    load_captures_with_overhead(campaign, device, 0.0, progress)
+}
+
+/// Merges one capture folder taking each frame's integration time as declared plus
+/// `shutter_overhead_us` (the shutter-overhead effect); without an overhead, exactly
+/// [`map_capture`].
+pub fn map_capture_with_overhead(
+    dir: &std::path::Path,
+    device: &DeviceConfig,
+    shutter_overhead_us: f64,
+) -> Result<crate::hdr::CaptureMap, ModelError> {
+    if shutter_overhead_us == 0.0 {
+        return Ok(map_capture(dir, device)?);
+    }
+    use crate::campaign::{CaptureConfig, RawFrame};
+    use crate::hdr::CaptureMapError;
+    let toml_path = dir.join("capture.toml");
+    let capture = CaptureConfig::read(&toml_path).map_err(CaptureMapError::from)?;
+    let mut frames = Vec::with_capacity(capture.exposure.len());
+    for entry in &capture.exposure {
+        frames.push(RawFrame::read(&dir.join(&entry.file)).map_err(CaptureMapError::from)?);
+    }
+    let Some(first) = frames.first() else {
+        return Err(ModelError::Sun(format!(
+            "{}: no exposure entries",
+            toml_path.display()
+        )));
+    };
+    let camera = CameraModel::new(device.clone());
+    let geometry = GroupGeometry::new(&camera, &capture.readout, first.width, first.height);
+    let exposures: Vec<crate::hdr::Exposure> = frames
+        .iter()
+        .zip(&capture.exposure)
+        .map(|(f, e)| crate::hdr::Exposure {
+            frame: f,
+            exposure_s: (e.exposure_us + shutter_overhead_us) * 1e-6,
+            gain: e.gain,
+        })
+        .collect();
+    let map =
+        crate::hdr::merge(&exposures, device, capture.bayer, &geometry).map_err(|source| {
+            CaptureMapError::Merge {
+                capture: toml_path,
+                source,
+            }
+        })?;
+    Ok(crate::hdr::CaptureMap {
+        capture,
+        map,
+        geometry,
+    })
+}
+
+/// [`load_captures`] with a shutter overhead added to every declared integration time.
+pub fn load_captures_with_overhead(
+    campaign: &Campaign,
+    device: &DeviceConfig,
+    shutter_overhead_us: f64,
+    progress: &dyn Fn(usize, usize),
+) -> Result<Vec<CaptureData>, ModelError> {
     let site = crate::sun::Site {
         latitude_deg: campaign.config.site.latitude_deg,
         longitude_deg: campaign.config.site.longitude_deg,
@@ -119,7 +179,7 @@ pub fn load_captures(
     let mut out = Vec::new();
     for (i, c) in campaign.captures.iter().enumerate() {
         progress(i, campaign.captures.len());
-        let merged = map_capture(&c.dir, device)?;
+        let merged = map_capture_with_overhead(&c.dir, device, shutter_overhead_us)?;
         let spa = solar_position(c.time.with_timezone(&Utc), &site, None)
             .map_err(|e| ModelError::Sun(format!("{}: {e}", c.dir.display())))?;
         out.push(CaptureData {
@@ -341,6 +401,9 @@ pub struct ModelState {
     pub light_leak: f64,
     /// Reflectance of the ground where the lens does not see it.
     pub ground_reflectance: f64,
+    /// The lux-meter logger's clock minus the device's, seconds: readings are matched to a
+    /// capture at this offset on the logger's clock.
+    pub clock_offset_s: f64,
 }
 
 impl Default for ModelState {
@@ -350,6 +413,7 @@ impl Default for ModelState {
             glazing_transmittance: 1.0,
             light_leak: 0.0,
             ground_reflectance: 0.2,
+            clock_offset_s: 0.0,
         }
     }
 }

@@ -15,6 +15,67 @@ pub struct Sample {
     pub time_utc: chrono::DateTime<chrono::Utc>,
     /// Per sensor (in the room's order); `None` where no reading matched.
     pub measured_lux: Vec<Option<f64>>,
+    /// Per sensor, the logger's readings near the capture: (logger timestamp − capture time,
+    /// seconds; lux), in time order. What the clock-offset effect re-matches.
+    pub series: Vec<Vec<(f64, f64)>>,
+}
+
+/// Longest gap between two logger readings across which a reading is interpolated, s.
+pub const MAX_INTERPOLATION_GAP_S: f64 = 150.0;
+
+/// The logger's reading at `at_s` (seconds from the capture, logger clock), linearly
+/// interpolated between the two readings around it; `None` outside the series or across a
+/// gap longer than [`MAX_INTERPOLATION_GAP_S`].
+pub fn interpolate(series: &[(f64, f64)], at_s: f64) -> Option<f64> {
+    let i = series.partition_point(|(t, _)| *t < at_s);
+    if i < series.len() && series[i].0 == at_s {
+        return Some(series[i].1);
+    }
+    if i == 0 || i == series.len() {
+        return None;
+    }
+    let ((t0, v0), (t1, v1)) = (series[i - 1], series[i]);
+    if t1 - t0 > MAX_INTERPOLATION_GAP_S || t1 <= t0 {
+        return None;
+    }
+    Some(v0 + (v1 - v0) * (at_s - t0) / (t1 - t0))
+}
+
+/// Relative rate of change of a logger series at `at_s`, per minute: the slope of the
+/// readings within ±60 s (least squares) over their mean. NaN with fewer than 2 readings.
+pub fn relative_rate_per_min(series: &[(f64, f64)], at_s: f64) -> f64 {
+    let near: Vec<(f64, f64)> = series
+        .iter()
+        .copied()
+        .filter(|(t, _)| (t - at_s).abs() <= 60.0 + 1e-9)
+        .collect();
+    if near.len() < 2 {
+        return f64::NAN;
+    }
+    let n = near.len() as f64;
+    let (mt, mv) = (
+        near.iter().map(|p| p.0).sum::<f64>() / n,
+        near.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let (sxy, sxx) = near.iter().fold((0.0, 0.0), |(a, b), (t, v)| {
+        (a + (t - mt) * (v - mv), b + (t - mt).powi(2))
+    });
+    if sxx <= 0.0 || mv <= 0.0 {
+        return f64::NAN;
+    }
+    60.0 * sxy / sxx / mv
+}
+
+impl Sample {
+    /// Sensor `k`'s reading of the light at the capture time for a logger clock running
+    /// `clock_offset_s` ahead of the device's: the matched reading without an offset, else
+    /// the series interpolated at the offset.
+    pub fn measured(&self, k: usize, clock_offset_s: f64) -> Option<f64> {
+        if clock_offset_s == 0.0 {
+            return self.measured_lux.get(k).copied().flatten();
+        }
+        interpolate(self.series.get(k)?, clock_offset_s)
+    }
 }
 
 impl super::split::Timed for Sample {
@@ -36,15 +97,21 @@ pub enum Effect {
     GroundReflectance,
     /// The camera's orientation differs from `device.toml`.
     OrientationError,
+    /// The lux-meter logger's clock is offset from the device's.
+    ClockOffset,
+    /// The shutter integrates longer than declared by a fixed overhead.
+    ShutterOverhead,
 }
 
 impl Effect {
-    pub const ALL: [Effect; 5] = [
+    pub const ALL: [Effect; 7] = [
         Effect::SunUndersampling,
         Effect::GlazingTransmittance,
         Effect::LightLeak,
         Effect::GroundReflectance,
         Effect::OrientationError,
+        Effect::ClockOffset,
+        Effect::ShutterOverhead,
     ];
 
     /// The name in reports and in `skylux sim campaign --effect NAME=VALUE`.
@@ -55,6 +122,8 @@ impl Effect {
             Effect::LightLeak => "light_leak",
             Effect::GroundReflectance => "ground_reflectance",
             Effect::OrientationError => "orientation_error",
+            Effect::ClockOffset => "clock_offset",
+            Effect::ShutterOverhead => "shutter_overhead",
         }
     }
 }
@@ -64,10 +133,10 @@ pub fn pairs(state: &ModelState, terms: &[CaptureTerms], fit: &FitSet<Sample>) -
     let mut out = Vec::new();
     for s in fit.samples() {
         let p = predict(state, &terms[s.capture]);
-        for (pi, m) in p.iter().zip(&s.measured_lux) {
-            if let Some(m) = m {
-                if *m > 0.0 && pi.is_finite() {
-                    out.push((*pi, *m));
+        for (k, pi) in p.iter().enumerate() {
+            if let Some(m) = s.measured(k, state.clock_offset_s) {
+                if m > 0.0 && pi.is_finite() {
+                    out.push((*pi, m));
                 }
             }
         }
@@ -145,7 +214,7 @@ pub fn fit_linear(
     for s in fit.samples() {
         let t = &terms[s.capture];
         for (k, (room, ground, outdoor)) in parts(state, t).into_iter().enumerate() {
-            let Some(m) = s.measured_lux[k].filter(|m| *m > 0.0) else {
+            let Some(m) = s.measured(k, state.clock_offset_s).filter(|m| *m > 0.0) else {
                 continue;
             };
             let (tau, rho, leak) = (
@@ -243,17 +312,91 @@ pub struct Candidate {
     pub evidence: String,
 }
 
-/// Readings of the fit set with their capture's terms.
+/// Readings of the fit set with their capture's terms (re-matched for `state`'s clock
+/// offset).
 fn readings<'a>(
+    state: &ModelState,
     terms: &'a [CaptureTerms],
     fit: &'a FitSet<Sample>,
 ) -> impl Iterator<Item = (&'a CaptureTerms, usize, f64)> + 'a {
+    let offset = state.clock_offset_s;
     fit.samples().iter().flat_map(move |s| {
-        s.measured_lux
-            .iter()
-            .enumerate()
-            .filter_map(move |(k, m)| m.filter(|m| *m > 0.0).map(|m| (&terms[s.capture], k, m)))
+        (0..s.measured_lux.len()).filter_map(move |k| {
+            s.measured(k, offset)
+                .filter(|m| *m > 0.0)
+                .map(|m| (&terms[s.capture], k, m))
+        })
     })
+}
+
+/// Widest clock offset the loop scans, seconds.
+pub const CLOCK_SCAN_S: f64 = 300.0;
+
+/// Fits the logger's clock offset: a scan of the fit-set error over ±[`CLOCK_SCAN_S`] in 10 s
+/// steps, then 1 s steps around the best. `None` without logger series around the captures
+/// (one reading per capture cannot show an offset) or if the best offset is the current one.
+fn fit_clock_offset(
+    state: &ModelState,
+    terms: &[CaptureTerms],
+    fit: &FitSet<Sample>,
+) -> Option<(ModelState, String)> {
+    let dense = fit
+        .samples()
+        .iter()
+        .any(|s| s.series.iter().any(|v| v.len() >= 5));
+    if !dense {
+        return None;
+    }
+    let at = |dt: f64| {
+        let st = ModelState {
+            clock_offset_s: dt,
+            ..state.clone()
+        };
+        let e = fit_error(&st, terms, fit);
+        (if e.is_finite() { e } else { f64::INFINITY }, st)
+    };
+    let mut best = (f64::INFINITY, 0.0);
+    let steps = (CLOCK_SCAN_S / 10.0) as i32;
+    for k in -steps..=steps {
+        let dt = 10.0 * k as f64;
+        let (e, _) = at(dt);
+        if e < best.0 {
+            best = (e, dt);
+        }
+    }
+    let coarse = best.1;
+    for k in -10..=10 {
+        let dt = coarse + k as f64;
+        let (e, _) = at(dt);
+        if e < best.0 {
+            best = (e, dt);
+        }
+    }
+    if !best.0.is_finite() || (best.1 - state.clock_offset_s).abs() < 1.0 {
+        return None;
+    }
+    // Signature: the residual follows the measured rate of change of the illuminance.
+    let xy: Vec<(f64, f64)> = fit
+        .samples()
+        .iter()
+        .flat_map(|s| {
+            let p = predict(state, &terms[s.capture]);
+            (0..s.series.len())
+                .filter_map(|k| {
+                    let m = s.measured(k, state.clock_offset_s)?;
+                    let rate = relative_rate_per_min(&s.series[k], state.clock_offset_s);
+                    (m > 0.0 && rate.is_finite()).then(|| (rate, p[k] / m - 1.0))
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    let r = correlation(&xy);
+    let evidence = format!(
+        "the relative residual follows the rate of change of the measured illuminance          (r = {r:.2} over {} readings): the readings are matched at the wrong time;          re-matched {:+.0} s later on the logger's clock",
+        xy.len(),
+        best.1 - state.clock_offset_s
+    );
+    Some((at(best.1).1, evidence))
 }
 
 /// Fits one of the output-level effects (all but the orientation, which changes the camera
@@ -282,7 +425,7 @@ pub fn fit_effect(
             next.concentrated_sun = true;
             // Signature: the error sits where the direct sun reaches the sensor.
             let (mut lit, mut shade) = (vec![], vec![]);
-            for (t, k, m) in readings(terms, fit) {
+            for (t, k, m) in readings(state, terms, fit) {
                 let e = (predict(state, t)[k] / m - 1.0).abs();
                 if t.sun_lux_per_dn_lux[k] * t.sun_dn_lux > 0.05 * m {
                     lit.push(e);
@@ -315,7 +458,7 @@ pub fn fit_effect(
                 glazing_transmittance: 1.0,
                 ..state.clone()
             };
-            let rows: Vec<(f64, f64, f64)> = readings(terms, fit)
+            let rows: Vec<(f64, f64, f64)> = readings(state, terms, fit)
                 .map(|(t, k, m)| {
                     (
                         predict(&room_only, t)[k],
@@ -338,7 +481,7 @@ pub fn fit_effect(
             );
         }
         Effect::LightLeak => {
-            let rows: Vec<(f64, f64, f64)> = readings(terms, fit)
+            let rows: Vec<(f64, f64, f64)> = readings(state, terms, fit)
                 .map(|(t, k, m)| {
                     let p = predict(state, t)[k] - state.light_leak * t.outdoor_horizontal_lux;
                     (t.outdoor_horizontal_lux, p, m)
@@ -366,7 +509,7 @@ pub fn fit_effect(
                 ground_reflectance: 0.0,
                 ..state.clone()
             };
-            let rows: Vec<(f64, f64, f64)> = readings(terms, fit)
+            let rows: Vec<(f64, f64, f64)> = readings(state, terms, fit)
                 .map(|(t, k, m)| {
                     let per_rho = state.glazing_transmittance
                         * t.unseen_ground_lux_per_cd_m2[k]
@@ -392,7 +535,14 @@ pub fn fit_effect(
                  ground the lens does not see (r = {r:.2})"
             );
         }
-        Effect::OrientationError => return None,
+        // Device-level effects: fitted by the loop, which re-merges or re-projects.
+        Effect::OrientationError | Effect::ShutterOverhead => return None,
+        Effect::ClockOffset => {
+            let (st, ev) = fit_clock_offset(state, terms, fit)?;
+            next = st;
+            parameters.insert("logger_minus_device_s".into(), next.clock_offset_s);
+            evidence = ev;
+        }
     }
     Some(Candidate {
         effect,
@@ -400,4 +550,35 @@ pub fn fit_effect(
         parameters,
         evidence,
     })
+}
+
+/// The shutter overhead's signature in the fit set under `state`: the mean signed relative
+/// residual of the readings where the modelled direct sun exceeds 5 % of the measured light
+/// (the sunlit readings of `sun_undersampling`'s signature),
+/// the mean |relative residual| of the others, and the count of each. An overhead
+/// over-estimates what the short exposures measure, the sun first: a positive bias where
+/// the sun lights the sensor.
+pub fn sunlit_bias(
+    state: &ModelState,
+    terms: &[CaptureTerms],
+    fit: &FitSet<Sample>,
+) -> (f64, f64, usize, usize) {
+    let (mut lit, mut shade) = (Vec::new(), Vec::new());
+    for (t, k, m) in readings(state, terms, fit) {
+        let p = predict(state, t)[k];
+        let direct = state.glazing_transmittance * t.sun_lux_per_dn_lux[k] * t.sun_dn_lux;
+        if p > 0.0 && direct > 0.05 * m {
+            lit.push(p / m - 1.0);
+        } else {
+            shade.push((p / m - 1.0).abs());
+        }
+    }
+    let mean = |v: &[f64]| {
+        if v.is_empty() {
+            f64::NAN
+        } else {
+            v.iter().sum::<f64>() / v.len() as f64
+        }
+    };
+    (mean(&lit), mean(&shade), lit.len(), shade.len())
 }

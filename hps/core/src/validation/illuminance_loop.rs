@@ -10,16 +10,20 @@
 //!    pyranometer.
 
 use super::device_model::{
-    capture_terms, load_captures, predict, CaptureData, CaptureTerms, ModelError, ModelState, Room,
+    capture_terms, load_captures, load_captures_with_overhead, predict, CaptureData, CaptureTerms,
+    ModelError, ModelState, Room,
 };
-use super::effects::{fit_effect, fit_error, Candidate, Effect, Sample};
-use super::report::{EffectReport, ErrorSummary, Report};
+use super::effects::{
+    fit_effect, fit_error, interpolate, relative_rate_per_min, sunlit_bias, Candidate, Effect,
+    Sample, CLOCK_SCAN_S,
+};
+use super::report::{correlation_and_slope, EffectReport, ErrorSummary, Report, ResidualRow};
 use super::split::{compare, split, Figure, FitSet, HoldoutSet, Score, SplitPlan};
 use crate::camera::{DeviceConfig, ImagePoint};
 use crate::campaign::Campaign;
 use crate::engine::Settings;
 use crate::sky::perez::{PerezConditions, PerezInput, PerezSky};
-use chrono::{Datelike, TimeDelta, Utc};
+use chrono::{Datelike, TimeDelta, Timelike, Utc};
 use std::collections::BTreeMap;
 
 /// How the loop runs.
@@ -89,7 +93,10 @@ pub struct Diagnostic {
     pub time: chrono::DateTime<chrono::FixedOffset>,
     pub sensor: String,
     pub holdout: bool,
+    /// The reading matched to the capture under the final model (its clock offset).
     pub measured_lux: f64,
+    /// The reading matched under the model before effects.
+    pub measured_before_lux: f64,
     pub before_lux: f64,
     pub after_lux: f64,
     /// Outdoor horizontal illuminance (pyranometer if present, else the map), lux.
@@ -100,6 +107,81 @@ pub struct Diagnostic {
     pub unseen_ground_share: f64,
     /// Extracted sun's angle from SPA under the declared camera, degrees (NaN: no sun).
     pub sun_offset_deg: f64,
+    /// Relative rate of change of the logged illuminance at the capture, per minute (NaN
+    /// without a logger series).
+    pub rate_of_change_per_min: f64,
+    /// Whether the map showed a sun (1) or not (0).
+    pub sun_visible: f64,
+    /// SPA sun altitude and azimuth (from north, clockwise), degrees.
+    pub sun_altitude_deg: f64,
+    pub sun_azimuth_deg: f64,
+    /// Fraction of the sky's daylight-coefficient weight on patches the lens did not see.
+    pub unseen_sky_fraction: f64,
+    /// Fraction of the map's valid groups over-range.
+    pub saturated_fraction: f64,
+    /// Local clock time of the capture, hours.
+    pub local_hour: f64,
+}
+
+/// How an explanatory variable is read from a diagnostic.
+pub type Variable = fn(&Diagnostic) -> f64;
+
+/// The explanatory variables of the residual table, with how each is read.
+pub const RESIDUAL_VARIABLES: [(&str, Variable); 12] = [
+    ("sun visible (0/1)", |d| d.sun_visible),
+    ("sun altitude (deg)", |d| d.sun_altitude_deg),
+    ("sun azimuth (deg)", |d| d.sun_azimuth_deg),
+    ("share of direct sun", |d| d.direct_sun_share),
+    ("share from unseen ground", |d| d.unseen_ground_share),
+    ("unseen sky fraction", |d| d.unseen_sky_fraction),
+    ("saturated fraction", |d| d.saturated_fraction),
+    ("time of day (h)", |d| d.local_hour),
+    ("outdoor horizontal illuminance (klx)", |d| {
+        d.outdoor_lux / 1000.0
+    }),
+    ("measured illuminance (klx)", |d| {
+        d.measured_before_lux / 1000.0
+    }),
+    ("rate of change (rel./min)", |d| d.rate_of_change_per_min),
+    ("sun offset from SPA (deg)", |d| d.sun_offset_deg),
+];
+
+/// The residual table: per variable, over all readings and per sensor, the relative
+/// residual's correlation and slope before and after the effects.
+pub fn residual_rows(diagnostics: &[Diagnostic]) -> Vec<ResidualRow> {
+    let mut groups: Vec<String> = vec!["all".into()];
+    for d in diagnostics {
+        if !groups.contains(&d.sensor) {
+            groups.push(d.sensor.clone());
+        }
+    }
+    let mut rows = Vec::new();
+    for (variable, value) in RESIDUAL_VARIABLES {
+        for g in &groups {
+            let of = |residual: &dyn Fn(&Diagnostic) -> f64| -> Vec<(f64, f64)> {
+                diagnostics
+                    .iter()
+                    .filter(|d| g == "all" || &d.sensor == g)
+                    .map(|d| (value(d), residual(d)))
+                    .filter(|(x, y)| x.is_finite() && y.is_finite())
+                    .collect()
+            };
+            let before = of(&|d| d.before_lux / d.measured_before_lux - 1.0);
+            let after = of(&|d| d.after_lux / d.measured_lux - 1.0);
+            let (before_r, before_slope) = correlation_and_slope(&before);
+            let (after_r, after_slope) = correlation_and_slope(&after);
+            rows.push(ResidualRow {
+                variable: variable.into(),
+                group: g.clone(),
+                n: before.len(),
+                before_r,
+                before_slope,
+                after_r,
+                after_slope,
+            });
+        }
+    }
+    rows
 }
 
 /// Everything the loop found.
@@ -107,6 +189,8 @@ pub struct LoopOutcome {
     pub report: Report,
     pub rows: Vec<IlluminanceRow>,
     pub diagnostics: Vec<Diagnostic>,
+    /// The residual table ([`residual_rows`]).
+    pub residuals: Vec<ResidualRow>,
     /// The final model and camera.
     pub state: ModelState,
     pub device: DeviceConfig,
@@ -117,13 +201,14 @@ fn score(
     holdout: &HoldoutSet<Sample>,
     predict_capture: &dyn Fn(usize) -> Vec<f64>,
     sensors: &[String],
+    clock_offset_s: f64,
 ) -> (Score, BTreeMap<String, Score>) {
     // `evaluate_grouped` takes one error per sample, so score each sensor and merge.
     let mut per_sensor = BTreeMap::new();
     let mut all_errors: Vec<Score> = Vec::new();
     for (k, name) in sensors.iter().enumerate() {
         let (s, _) = holdout.evaluate_grouped(|smp: &Sample| {
-            let m = smp.measured_lux.get(k).copied().flatten()?;
+            let m = smp.measured(k, clock_offset_s)?;
             if m <= 0.0 {
                 return None;
             }
@@ -256,6 +341,101 @@ fn fit_orientation_candidate(
     Some((next, params, evidence))
 }
 
+/// Widest shutter overhead the loop considers, µs.
+const MAX_SHUTTER_OVERHEAD_US: f64 = 100.0;
+
+/// Fits a shutter overhead t0 (every frame integrates its declared time plus t0) when the fit
+/// set shows its signature: readings lit by the sun over-predicted by more than 3 % on
+/// average and by more than the others' mean |error|. The fit re-merges every capture
+/// per trial t0 and minimises the fit-set error: a scan over 0.5 to 64 µs in octaves, then a
+/// golden-section search between the best's neighbours. Returns the candidate, its fit-set
+/// error and the re-merged captures and their terms.
+#[allow(clippy::type_complexity, clippy::too_many_arguments)]
+fn fit_shutter_candidate(
+    campaign: &Campaign,
+    room: &mut Room,
+    device: &DeviceConfig,
+    state: &ModelState,
+    terms: &[CaptureTerms],
+    fit: &FitSet<Sample>,
+    reference_outdoor: &[Option<f64>],
+) -> Result<Option<(Candidate, f64, Vec<CaptureData>, Vec<CaptureTerms>)>, LoopError> {
+    if !state.concentrated_sun {
+        return Ok(None);
+    }
+    let (lit_bias, shade_error, lit_n, shade_n) = sunlit_bias(state, terms, fit);
+    if std::env::var_os("SKYLUX_DEBUG_LOOP").is_some() {
+        eprintln!("shutter signature: lit {lit_bias} ({lit_n}), shade {shade_error} ({shade_n})");
+    }
+    if lit_n < 2 || !lit_bias.is_finite() || lit_bias < 0.03 || lit_bias < shade_error {
+        return Ok(None);
+    }
+    let mut evaluate = |t0: f64| -> Result<(f64, Vec<CaptureData>, Vec<CaptureTerms>), LoopError> {
+        let caps = load_captures_with_overhead(campaign, device, t0, &|_, _| {})?;
+        let mut t = capture_terms(room, &caps, device, &|_, _| {})?;
+        use_reference_outdoor(&mut t, reference_outdoor);
+        let e = fit_error(state, &t, fit);
+        Ok((if e.is_finite() { e } else { f64::INFINITY }, caps, t))
+    };
+    let grid: Vec<f64> = (0..8).map(|k| 0.5 * 2f64.powi(k)).collect();
+    let mut errors = Vec::new();
+    let mut best: Option<(f64, f64, Vec<CaptureData>, Vec<CaptureTerms>)> = None;
+    for &t0 in &grid {
+        let (e, caps, t) = evaluate(t0)?;
+        errors.push(e);
+        if best.as_ref().is_none_or(|b| e < b.1) {
+            best = Some((t0, e, caps, t));
+        }
+    }
+    let Some(mut best) = best else {
+        return Ok(None);
+    };
+    let i = grid.iter().position(|g| *g == best.0).unwrap_or(0);
+    let (mut a, mut b) = (
+        if i == 0 { 0.0 } else { grid[i - 1] },
+        grid.get(i + 1).copied().unwrap_or(MAX_SHUTTER_OVERHEAD_US),
+    );
+    // Golden-section search (the fit-set error is unimodal in t0 near its minimum).
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    for _ in 0..6 {
+        let (x1, x2) = (b - g * (b - a), a + g * (b - a));
+        let (e1, c1, t1) = evaluate(x1)?;
+        let (e2, c2, t2) = evaluate(x2)?;
+        if e1 < e2 {
+            b = x2;
+            if e1 < best.1 {
+                best = (x1, e1, c1, t1);
+            }
+        } else {
+            a = x1;
+            if e2 < best.1 {
+                best = (x2, e2, c2, t2);
+            }
+        }
+    }
+    let (t0, err, caps, t) = best;
+    let mut parameters = BTreeMap::new();
+    parameters.insert("overhead_us".into(), t0);
+    let evidence = format!(
+        "readings lit by the sun are over-predicted by {:+.1} % on average ({lit_n} readings) \
+         against a mean error of {:.1} % elsewhere ({shade_n}): the short exposures that \
+         measure the sun integrate longer than declared",
+        100.0 * lit_bias,
+        100.0 * shade_error
+    );
+    Ok(Some((
+        Candidate {
+            effect: Effect::ShutterOverhead,
+            state: state.clone(),
+            parameters,
+            evidence,
+        },
+        err,
+        caps,
+        t,
+    )))
+}
+
 /// The Perez baseline per capture: the pyranometer's irradiance through gendaylit's model,
 /// the same daylight coefficients, the sun as a concentrated source, a ground of 0.2.
 /// Also returns the outdoor horizontal illuminance the pyranometer implies (Perez 1990
@@ -354,7 +534,7 @@ pub fn run_loop(
 ) -> Result<LoopOutcome, LoopError> {
     let device_path = campaign.path(&campaign.config.files.device);
     let (declared, device_warnings) = DeviceConfig::read(&device_path).map_err(ModelError::from)?;
-    let captures = load_captures(campaign, &declared, &|i, n| {
+    let mut captures = load_captures(campaign, &declared, &|i, n| {
         progress("merging captures", i as u64, n as u64)
     })?;
     let mut room = Room::load(campaign, options.mf, options.settings, &|i, n| {
@@ -370,7 +550,18 @@ pub fn run_loop(
     use_reference_outdoor(&mut terms, &reference_outdoor);
     let base_terms = terms.clone();
 
-    // Samples: each capture with the readings at its time.
+    // Samples: each capture with the readings at its time, and the logger's series around
+    // it (what a clock offset re-matches).
+    let logger = LoggerSeries::new(campaign);
+    let series_of: Vec<Vec<Vec<(f64, f64)>>> = captures
+        .iter()
+        .map(|c| {
+            sensor_names
+                .iter()
+                .map(|name| logger.around(name, c.time, CLOCK_SCAN_S + 2.0 * 60.0))
+                .collect()
+        })
+        .collect();
     let mut samples = Vec::new();
     for (i, c) in captures.iter().enumerate() {
         let measured: Vec<Option<f64>> = sensor_names
@@ -382,6 +573,7 @@ pub fn run_loop(
                 capture: i,
                 time_utc: c.time.with_timezone(&Utc),
                 measured_lux: measured,
+                series: series_of[i].clone(),
             });
         }
     }
@@ -404,7 +596,12 @@ pub fn run_loop(
     let mut state = options.base.clone();
     let mut device = declared.clone();
     let base_predictions: Vec<Vec<f64>> = terms.iter().map(|t| predict(&state, t)).collect();
-    let (before_all, before_per) = score(&holdout, &|c| base_predictions[c].clone(), &sensor_names);
+    let (before_all, before_per) = score(
+        &holdout,
+        &|c| base_predictions[c].clone(),
+        &sensor_names,
+        state.clock_offset_s,
+    );
     let mut current_holdout = before_all.clone();
     let mut effects = Vec::new();
     let mut rejected = Vec::new();
@@ -437,8 +634,12 @@ pub fn run_loop(
             } else {
                 0.0
             };
-            let (after_all, _) =
-                score(&holdout, &|c| predict(&state, &new_terms[c]), &sensor_names);
+            let (after_all, _) = score(
+                &holdout,
+                &|c| predict(&state, &new_terms[c]),
+                &sensor_names,
+                state.clock_offset_s,
+            );
             let illum = compare(&current_holdout, &after_all, Figure::MeanAbs);
             let illum_noise = if illum.noise.is_finite() {
                 illum.noise
@@ -500,10 +701,32 @@ pub fn run_loop(
                 candidates.push((c, err));
             }
         }
+        // The shutter overhead re-merges every capture per trial value: tried only when its
+        // signature (a positive bias where the sun lights the sensors) is in the residual.
+        let mut shutter: Option<(Vec<CaptureData>, Vec<CaptureTerms>)> = None;
+        if !accepted.contains(&Effect::ShutterOverhead) {
+            if let Some((c, err, caps, t)) = fit_shutter_candidate(
+                campaign,
+                &mut room,
+                &device,
+                &state,
+                &terms,
+                &fit,
+                &reference_outdoor,
+            )? {
+                candidates.push((c, err));
+                shutter = Some((caps, t));
+            }
+        }
         candidates.sort_by(|a, b| a.1.total_cmp(&b.1));
         let Some((best, best_fit)) = candidates.into_iter().next() else {
             break;
         };
+        let (best_terms, best_captures) = match (&best.effect, shutter) {
+            (Effect::ShutterOverhead, Some((caps, t))) => (Some(t), Some(caps)),
+            _ => (None, None),
+        };
+        let candidate_terms = best_terms.as_deref().unwrap_or(&terms);
         if best_fit.is_nan() || best_fit >= base_fit - 0.002 {
             notes.push(format!(
                 "no remaining effect lowers the fit-set error by more than 0.2 % (best: {} from \
@@ -516,8 +739,9 @@ pub fn run_loop(
         }
         let (after_all, _) = score(
             &holdout,
-            &|c| predict(&best.state, &terms[c]),
+            &|c| predict(&best.state, &candidate_terms[c]),
             &sensor_names,
+            best.state.clock_offset_s,
         );
         let cmp = compare(&current_holdout, &after_all, Figure::MeanAbs);
         let noise = if cmp.noise.is_finite() {
@@ -546,6 +770,10 @@ pub fn run_loop(
             fit_error_after: Some(best_fit),
         });
         state = best.state;
+        if let (Some(t), Some(c)) = (best_terms, best_captures) {
+            terms = t;
+            captures = c;
+        }
         for e in effects.iter_mut() {
             match e.name.as_str() {
                 "glazing_transmittance" => {
@@ -560,10 +788,20 @@ pub fn run_loop(
                     e.parameters
                         .insert("reflectance".into(), state.ground_reflectance);
                 }
+                "clock_offset" => {
+                    e.parameters
+                        .insert("logger_minus_device_s".into(), state.clock_offset_s);
+                }
                 _ => {}
             }
         }
-        current_holdout = score(&holdout, &|c| predict(&state, &terms[c]), &sensor_names).0;
+        current_holdout = score(
+            &holdout,
+            &|c| predict(&state, &terms[c]),
+            &sensor_names,
+            state.clock_offset_s,
+        )
+        .0;
     }
     if effects.is_empty() {
         notes.push(
@@ -571,7 +809,12 @@ pub fn run_loop(
         );
     }
     let final_predictions: Vec<Vec<f64>> = terms.iter().map(|t| predict(&state, t)).collect();
-    let (after_all, after_per) = score(&holdout, &|c| final_predictions[c].clone(), &sensor_names);
+    let (after_all, after_per) = score(
+        &holdout,
+        &|c| final_predictions[c].clone(),
+        &sensor_names,
+        state.clock_offset_s,
+    );
 
     let baseline = if perez.iter().any(Option::is_some) {
         let (a, p) = score(
@@ -582,6 +825,7 @@ pub fn run_loop(
                     .unwrap_or_else(|| vec![f64::NAN; sensor_names.len()])
             },
             &sensor_names,
+            state.clock_offset_s,
         );
         Some((a, p))
     } else {
@@ -635,7 +879,15 @@ pub fn run_loop(
             s.direction.angle_between(c.spa_sun).to_degrees()
         });
         for (k, name) in sensor_names.iter().enumerate() {
-            let Some(m) = reading_at(campaign, name, c.time, options.match_window) else {
+            let Some(m0) = reading_at(campaign, name, c.time, options.match_window) else {
+                continue;
+            };
+            let m = if state.clock_offset_s == 0.0 {
+                Some(m0)
+            } else {
+                interpolate(&series_of[i][k], state.clock_offset_s)
+            };
+            let Some(m) = m else {
                 continue;
             };
             let direct = t.sun_lux_per_dn_lux[k] * t.sun_dn_lux * state.glazing_transmittance;
@@ -644,6 +896,7 @@ pub fn run_loop(
                 sensor: name.clone(),
                 holdout: holdout_set.contains(&c.time.with_timezone(&Utc).to_rfc3339()),
                 measured_lux: m,
+                measured_before_lux: m0,
                 before_lux: base_predictions[i][k],
                 after_lux: final_predictions[i][k],
                 outdoor_lux: t.outdoor_horizontal_lux,
@@ -658,6 +911,23 @@ pub fn run_loop(
                     0.0
                 },
                 sun_offset_deg,
+                rate_of_change_per_min: relative_rate_per_min(
+                    &series_of[i][k],
+                    options.base.clock_offset_s,
+                ),
+                sun_visible: if t.sun.is_some() { 1.0 } else { 0.0 },
+                sun_altitude_deg: c.spa_sun.z.clamp(-1.0, 1.0).asin().to_degrees(),
+                sun_azimuth_deg: c
+                    .spa_sun
+                    .x
+                    .atan2(c.spa_sun.y)
+                    .to_degrees()
+                    .rem_euclid(360.0),
+                unseen_sky_fraction: t.unseen_sky_fraction,
+                saturated_fraction: t.saturated_fraction,
+                local_hour: f64::from(c.time.hour())
+                    + f64::from(c.time.minute()) / 60.0
+                    + f64::from(c.time.second()) / 3600.0,
             });
         }
     }
@@ -668,7 +938,12 @@ pub fn run_loop(
         let time = c.time.to_rfc3339();
         for (k, name) in sensor_names.iter().enumerate() {
             let measured = reading_at(campaign, name, c.time, options.match_window);
-            let mut push = |model: &str, lux: f64| {
+            let shifted = if state.clock_offset_s == 0.0 {
+                measured
+            } else {
+                interpolate(&series_of[i][k], state.clock_offset_s)
+            };
+            let mut push = |model: &str, lux: f64, measured: Option<f64>| {
                 rows.push(IlluminanceRow {
                     time: time.clone(),
                     sensor: name.clone(),
@@ -677,16 +952,18 @@ pub fn run_loop(
                     model: model.into(),
                 })
             };
-            push("hdr-base", base_predictions[i][k]);
-            push("hdr", final_predictions[i][k]);
+            push("hdr-base", base_predictions[i][k], measured);
+            push("hdr", final_predictions[i][k], shifted);
             if let Some(p) = &perez[i] {
-                push("perez", p[k]);
+                push("perez", p[k], measured);
             }
         }
     }
+    let residuals = residual_rows(&diagnostics);
     Ok(LoopOutcome {
         report,
         rows,
+        residuals,
         diagnostics,
         state,
         device,
@@ -719,4 +996,45 @@ fn reading_at<Tz: chrono::TimeZone>(
         |r| r.time.signed_duration_since(time.clone()),
     )
     .map(|r| r.illuminance_lux)
+}
+
+/// The lux-meter readings per sensor in time order, for the series around each capture.
+struct LoggerSeries {
+    by_sensor: BTreeMap<String, Vec<(chrono::DateTime<Utc>, f64)>>,
+}
+
+impl LoggerSeries {
+    fn new(campaign: &Campaign) -> Self {
+        let mut by_sensor: BTreeMap<String, Vec<(chrono::DateTime<Utc>, f64)>> = BTreeMap::new();
+        for r in &campaign.luxmeters {
+            by_sensor
+                .entry(r.sensor.clone())
+                .or_default()
+                .push((r.time.with_timezone(&Utc), r.illuminance_lux));
+        }
+        for v in by_sensor.values_mut() {
+            v.sort_by_key(|p| p.0);
+        }
+        Self { by_sensor }
+    }
+
+    /// `sensor`'s readings within `half_window_s` of `time`: (seconds from `time`, lux).
+    fn around<Tz: chrono::TimeZone>(
+        &self,
+        sensor: &str,
+        time: chrono::DateTime<Tz>,
+        half_window_s: f64,
+    ) -> Vec<(f64, f64)> {
+        let Some(v) = self.by_sensor.get(sensor) else {
+            return Vec::new();
+        };
+        let t = time.with_timezone(&Utc);
+        let half = TimeDelta::milliseconds((half_window_s * 1000.0) as i64);
+        let start = v.partition_point(|p| p.0 < t - half);
+        v[start..]
+            .iter()
+            .take_while(|p| p.0 <= t + half)
+            .map(|p| ((p.0 - t).num_milliseconds() as f64 / 1000.0, p.1))
+            .collect()
+    }
 }

@@ -25,6 +25,13 @@ fn revealing_variable(effect: &str) -> Option<(&'static str, Reading)> {
         "orientation_error" => ("sun sighting offset from SPA, declared camera (deg)", |d| {
             d.sun_offset_deg
         }),
+        "shutter_overhead" => ("share of direct sun in the model's light", |d| {
+            d.direct_sun_share
+        }),
+        "clock_offset" => (
+            "rate of change of the logged illuminance (relative, per minute)",
+            |d| d.rate_of_change_per_min,
+        ),
         _ => return None,
     })
 }
@@ -71,12 +78,13 @@ pub fn write_loop_figures(dir: &Path, outcome: &LoopOutcome) -> Result<Vec<Strin
         let Some((variable, value)) = revealing_variable(&e.name) else {
             continue;
         };
-        let series = |label: &str, model: fn(&Diagnostic) -> f64| Series {
+        let series = |label: &str, residual: fn(&Diagnostic) -> f64| Series {
             label: label.into(),
             points: outcome
                 .diagnostics
                 .iter()
-                .map(|d| (value(d), 100.0 * (model(d) / d.measured_lux - 1.0)))
+                .map(|d| (value(d), 100.0 * residual(d)))
+                .filter(|p| p.0.is_finite() && p.1.is_finite())
                 .collect(),
         };
         let name = format!("residual_{}.png", e.name);
@@ -88,8 +96,8 @@ pub fn write_loop_figures(dir: &Path, outcome: &LoopOutcome) -> Result<Vec<Strin
                 "model / measured - 1 (%)",
             ),
             &[
-                series("before", |d| d.before_lux),
-                series("after", |d| d.after_lux),
+                series("before", |d| d.before_lux / d.measured_before_lux - 1.0),
+                series("after", |d| d.after_lux / d.measured_lux - 1.0),
             ],
         )?;
         names.push(name);

@@ -31,6 +31,54 @@ pub struct EffectReport {
     pub fit_error_after: Option<f64>,
 }
 
+/// One row of the residual table: the relative residual (model / measured − 1) against one
+/// explanatory variable, over one group of readings, before and after the effects.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ResidualRow {
+    pub variable: String,
+    /// `all` or a sensor name.
+    pub group: String,
+    pub n: usize,
+    pub before_r: f64,
+    /// Least-squares slope of the relative residual per unit of the variable.
+    pub before_slope: f64,
+    pub after_r: f64,
+    pub after_slope: f64,
+}
+
+/// Pearson correlation and least-squares slope of y on x (NaN for fewer than 3 points or no
+/// spread).
+pub fn correlation_and_slope(xy: &[(f64, f64)]) -> (f64, f64) {
+    let xy: Vec<(f64, f64)> = xy
+        .iter()
+        .copied()
+        .filter(|(x, y)| x.is_finite() && y.is_finite())
+        .collect();
+    if xy.len() < 3 {
+        return (f64::NAN, f64::NAN);
+    }
+    let n = xy.len() as f64;
+    let (mx, my) = (
+        xy.iter().map(|p| p.0).sum::<f64>() / n,
+        xy.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let (mut sxy, mut sxx, mut syy) = (0.0, 0.0, 0.0);
+    for &(x, y) in &xy {
+        sxy += (x - mx) * (y - my);
+        sxx += (x - mx).powi(2);
+        syy += (y - my).powi(2);
+    }
+    if sxx <= 0.0 {
+        return (f64::NAN, f64::NAN);
+    }
+    let r = if syy > 0.0 {
+        sxy / (sxx * syy).sqrt()
+    } else {
+        0.0
+    };
+    (r, sxy / sxx)
+}
+
 /// `report.json`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Report {
@@ -161,6 +209,82 @@ impl Report {
         }
         md
     }
+}
+
+/// The residual table of `report.md` (appended by `skylux loop`): the relative residual's
+/// correlation and slope against each explanatory variable, over all readings and per sensor,
+/// before and after the effects. Empty without rows.
+pub fn residual_markdown(rows: &[ResidualRow]) -> String {
+    use std::fmt::Write;
+    let mut md = String::new();
+    if rows.is_empty() {
+        return md;
+    }
+    let _ = writeln!(
+        md,
+        "\n## Residual against the explanatory variables\n\nRelative residual \
+         (model / measured − 1) of every reading (fit and hold-out): Pearson r and \
+         least-squares slope per unit of the variable, before and after the effects.\n"
+    );
+    let _ = writeln!(
+        md,
+        "| variable | readings | r before | slope before | r after | slope after |\n\
+         |---|---|---|---|---|---|"
+    );
+    let num = |v: f64, p: usize| {
+        if v.is_finite() {
+            format!("{v:.p$}")
+        } else {
+            "n/a".into()
+        }
+    };
+    for r in rows.iter().filter(|r| r.group == "all") {
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {} | {} |",
+            r.variable,
+            r.n,
+            num(r.before_r, 2),
+            num(r.before_slope, 4),
+            num(r.after_r, 2),
+            num(r.after_slope, 4)
+        );
+    }
+    let mut groups: Vec<&str> = rows
+        .iter()
+        .map(|r| r.group.as_str())
+        .filter(|g| *g != "all")
+        .collect();
+    groups.sort_by_key(|g| sensor_order(g));
+    groups.dedup();
+    if !groups.is_empty() {
+        let _ = writeln!(
+            md,
+            "\nPer sensor, r before → after:\n\n| variable | {} |\n|---|{}",
+            groups.join(" | "),
+            "---|".repeat(groups.len())
+        );
+        let mut variables: Vec<&str> = Vec::new();
+        for r in rows {
+            if !variables.contains(&r.variable.as_str()) {
+                variables.push(&r.variable);
+            }
+        }
+        for v in variables {
+            let cells: Vec<String> = groups
+                .iter()
+                .map(|g| {
+                    rows.iter()
+                        .find(|r| r.variable == v && r.group == *g)
+                        .map_or("n/a".into(), |r| {
+                            format!("{} → {}", num(r.before_r, 2), num(r.after_r, 2))
+                        })
+                })
+                .collect();
+            let _ = writeln!(md, "| {v} | {} |", cells.join(" | "));
+        }
+    }
+    md
 }
 
 /// `S2` before `S10`.

@@ -38,8 +38,74 @@ pub fn config_with(dir: &Path, replace: &[(&str, &str)], extra: &str) -> PathBuf
     path
 }
 
+/// The one `skyluxd --sim` command line of the tests: `--config`, `--out`, an ephemeral API
+/// port, and optionally `--cycles`, the simulated clock and `--serve-after`.
+pub struct SimRun {
+    config: String,
+    out: String,
+    cycles: Option<u64>,
+    clock: Option<(String, u64)>,
+    serve_after: bool,
+}
+
+impl SimRun {
+    pub fn new(config: &Path, out: &Path) -> Self {
+        Self {
+            config: config.to_str().unwrap().to_string(),
+            out: out.to_str().unwrap().to_string(),
+            cycles: None,
+            clock: None,
+            serve_after: false,
+        }
+    }
+    /// Stop after `n` successful cycles.
+    pub fn cycles(mut self, n: u64) -> Self {
+        self.cycles = Some(n);
+        self
+    }
+    /// The simulated clock: first capture at `start` (RFC 3339), `step_s` apart.
+    pub fn clock(mut self, start: &str, step_s: u64) -> Self {
+        self.clock = Some((start.to_string(), step_s));
+        self
+    }
+    pub fn serve_after(mut self) -> Self {
+        self.serve_after = true;
+        self
+    }
+    pub fn args(&self) -> Vec<String> {
+        let mut a: Vec<String> = vec!["--sim".into()];
+        if let Some(n) = self.cycles {
+            a.extend(["--cycles".into(), n.to_string()]);
+        }
+        a.extend([
+            "--config".into(),
+            self.config.clone(),
+            "--out".into(),
+            self.out.clone(),
+            "--api".into(),
+            "127.0.0.1:0".into(),
+        ]);
+        if let Some((t, s)) = &self.clock {
+            a.extend([
+                "--time-start".into(),
+                t.clone(),
+                "--time-step-s".into(),
+                s.to_string(),
+            ]);
+        }
+        if self.serve_after {
+            a.push("--serve-after".into());
+        }
+        a
+    }
+    /// Starts it, stderr into `log`.
+    pub fn start(&self, log: &Path) -> Child {
+        start(&self.args(), log)
+    }
+}
+
 /// Starts skyluxd with `args`, stderr captured into `dir/stderr.log`.
-pub fn start(args: &[&str], log: &Path) -> Child {
+pub fn start<S: AsRef<std::ffi::OsStr>>(args: &[S], log: &Path) -> Child {
     let exe = Path::new(env!("CARGO_BIN_EXE_skyluxd"));
     let mut cmd = skyluxd::spawn::command_for(exe);
     cmd.args(args)

@@ -1,0 +1,231 @@
+//! Portals: the openings (windows) through which the sky lights a room, sampled by area so
+//! that next-event estimation reaches the sky from deep inside a room (Bitterli et al.,
+//! "Portal-masked environment map sampling", 2015, use the same idea for environment maps).
+//!
+//! Portals are only a sampling distribution: any set of polygons gives an unbiased estimate
+//! as long as [`Portals::pdf`] is the density [`Portals::sample`] draws from. So the polygons
+//! are fan-triangulated (exact for the convex panes of windows; a concave outline only
+//! samples some points twice and some outside, which the density accounts for), and the
+//! density of a direction sums every triangle the line from the point crosses, whether or not
+//! something is in the way.
+
+use super::rng::Rng;
+use glam::DVec3;
+
+/// One triangle of a portal polygon.
+#[derive(Clone, Debug)]
+struct Triangle {
+    v0: DVec3,
+    e1: DVec3,
+    e2: DVec3,
+    /// Unit normal.
+    normal: DVec3,
+}
+
+impl Triangle {
+    /// Distance along unit `d` from `o` at which the triangle is crossed (Möller–Trumbore,
+    /// "Fast, minimum storage ray/triangle intersection", 1997), if ahead.
+    fn hit(&self, o: DVec3, d: DVec3) -> Option<f64> {
+        let p = d.cross(self.e2);
+        let det = self.e1.dot(p);
+        if det.abs() < 1e-15 {
+            return None;
+        }
+        let inv = 1.0 / det;
+        let s = o - self.v0;
+        let u = s.dot(p) * inv;
+        if !(0.0..=1.0).contains(&u) {
+            return None;
+        }
+        let q = s.cross(self.e1);
+        let v = d.dot(q) * inv;
+        if v < 0.0 || u + v > 1.0 {
+            return None;
+        }
+        let t = self.e2.dot(q) * inv;
+        (t > 1e-9).then_some(t)
+    }
+}
+
+/// The portals of a world: triangles sampled in proportion to their area.
+#[derive(Clone, Debug, Default)]
+pub struct Portals {
+    triangles: Vec<Triangle>,
+    /// Running sum of the areas (the last is the total).
+    cumulative_m2: Vec<f64>,
+    /// Primitive indices of the portal polygons, for reports.
+    primitives: Vec<u32>,
+}
+
+impl Portals {
+    /// Portals from polygons given as (primitive index, vertices).
+    pub fn new(polygons: &[(u32, Vec<DVec3>)]) -> Self {
+        let mut portals = Portals::default();
+        for (primitive, vertices) in polygons {
+            if vertices.len() < 3 {
+                continue;
+            }
+            let mut added = false;
+            for i in 1..vertices.len() - 1 {
+                let (v0, v1, v2) = (vertices[0], vertices[i], vertices[i + 1]);
+                let (e1, e2) = (v1 - v0, v2 - v0);
+                let c = e1.cross(e2);
+                let area_m2 = 0.5 * c.length();
+                if (area_m2).partial_cmp(&1e-12) != Some(std::cmp::Ordering::Greater)
+                    || !area_m2.is_finite()
+                {
+                    continue;
+                }
+                let total = portals.total_area_m2() + area_m2;
+                portals.triangles.push(Triangle {
+                    v0,
+                    e1,
+                    e2,
+                    normal: c.normalize(),
+                });
+                portals.cumulative_m2.push(total);
+                added = true;
+            }
+            if added {
+                portals.primitives.push(*primitive);
+            }
+        }
+        portals
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.triangles.is_empty()
+    }
+
+    pub fn total_area_m2(&self) -> f64 {
+        self.cumulative_m2.last().copied().unwrap_or(0.0)
+    }
+
+    /// Primitive indices of the polygons used as portals.
+    pub fn primitives(&self) -> &[u32] {
+        &self.primitives
+    }
+
+    /// A direction from `x` towards a point drawn uniformly over the portals' area, with its
+    /// density in solid angle (the sum over every portal triangle on that line, see
+    /// [`Portals::pdf`]). None if there are no portals or `x` lies in a portal's plane.
+    pub fn sample(&self, x: DVec3, rng: &mut Rng) -> Option<(DVec3, f64)> {
+        let total = self.total_area_m2();
+        if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            return None;
+        }
+        let target = rng.uniform() * total;
+        let i = self
+            .cumulative_m2
+            .partition_point(|&c| c <= target)
+            .min(self.triangles.len() - 1);
+        let t = &self.triangles[i];
+        // Uniform point on the triangle (square-root parametrisation).
+        let (r1, r2) = (rng.uniform().sqrt(), rng.uniform());
+        let y = t.v0 + t.e1 * (r1 * (1.0 - r2)) + t.e2 * (r1 * r2);
+        let to = y - x;
+        let dist2 = to.length_squared();
+        if (dist2).partial_cmp(&1e-18) != Some(std::cmp::Ordering::Greater) {
+            return None;
+        }
+        let d = to / dist2.sqrt();
+        let pdf = self.pdf(x, d);
+        (pdf > 0.0 && pdf.is_finite()).then_some((d, pdf))
+    }
+
+    /// A point drawn uniformly over the portals' area, with the unit normal of its triangle.
+    pub fn sample_point(&self, rng: &mut Rng) -> Option<(DVec3, DVec3)> {
+        let total = self.total_area_m2();
+        if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            return None;
+        }
+        let target = rng.uniform() * total;
+        let i = self
+            .cumulative_m2
+            .partition_point(|&c| c <= target)
+            .min(self.triangles.len() - 1);
+        let t = &self.triangles[i];
+        let (r1, r2) = (rng.uniform().sqrt(), rng.uniform());
+        Some((t.v0 + t.e1 * (r1 * (1.0 - r2)) + t.e2 * (r1 * r2), t.normal))
+    }
+
+    /// Density per unit area at a point `y` (unit normal `n_y`) of the points reached by
+    /// following unit direction −`s` from a point drawn by [`Portals::sample_point`]: Σ over
+    /// the portal triangles the half-line from `y` along `s` crosses nearer than `t_max_m`
+    /// of |n_y · s| / (A |n_p · s|) (a parallel projection scales areas by that ratio).
+    pub fn projected_area_pdf(&self, y: DVec3, n_y: DVec3, s: DVec3, t_max_m: f64) -> f64 {
+        let total = self.total_area_m2();
+        if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            return 0.0;
+        }
+        let cy = n_y.dot(s).abs();
+        let mut p = 0.0;
+        for t in &self.triangles {
+            if let Some(dist) = t.hit(y, s) {
+                let c = t.normal.dot(s).abs();
+                if dist < t_max_m && c > 1e-12 {
+                    p += cy / (total * c);
+                }
+            }
+        }
+        p
+    }
+
+    /// Density in solid angle with which [`Portals::sample`] from `x` produces unit `d`:
+    /// Σ t² / (A |n · d|) over the portal triangles the half-line crosses at distance t,
+    /// A the total portal area.
+    pub fn pdf(&self, x: DVec3, d: DVec3) -> f64 {
+        let total = self.total_area_m2();
+        if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            return 0.0;
+        }
+        let mut p = 0.0;
+        for t in &self.triangles {
+            if let Some(dist) = t.hit(x, d) {
+                let c = t.normal.dot(d).abs();
+                if c > 1e-12 {
+                    p += dist * dist / (total * c);
+                }
+            }
+        }
+        p
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The density integrates to the solid angle's share: for a point in front of a square
+    /// portal, sampling then averaging 1/pdf estimates the portal's solid angle, which for a
+    /// square of side 2a at distance h on axis is 4 asin(a² / (a² + h²)) (the solid angle of
+    /// a rectangle, Mathar 2015 / van Oosterom & Strackee 1983).
+    #[test]
+    fn inverse_density_averages_to_the_solid_angle() {
+        let (a, h) = (0.5_f64, 1.0_f64);
+        let portals = Portals::new(&[(
+            0,
+            vec![
+                DVec3::new(-a, -a, h),
+                DVec3::new(a, -a, h),
+                DVec3::new(a, a, h),
+                DVec3::new(-a, a, h),
+            ],
+        )]);
+        let mut rng = Rng::for_stream(3, 0);
+        let n = 200_000;
+        let mut sum = 0.0;
+        for _ in 0..n {
+            let (d, p) = portals.sample(DVec3::ZERO, &mut rng).unwrap();
+            assert!(d.z > 0.0);
+            sum += 1.0 / p;
+        }
+        let expect = 4.0 * (a * a / (a * a + h * h)).asin();
+        assert!(
+            (sum / n as f64 / expect - 1.0).abs() < 0.01,
+            "{sum} {expect}"
+        );
+        // Off the portal: zero density.
+        assert_eq!(portals.pdf(DVec3::ZERO, DVec3::new(1.0, 0.0, 0.0)), 0.0);
+    }
+}

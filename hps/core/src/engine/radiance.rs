@@ -1,0 +1,111 @@
+//! The radiance along one ray, as `rtrace` (without `-I`) computes it: what a camera pixel
+//! sees.
+//!
+//! The ray is followed through the surfaces RADIANCE traces as a primary ray without shading
+//! (invisible surfaces, `mirror`, `glass`); at the first other surface the path continues as
+//! the integrator's paths do ([`super::integrator`]: next-event estimation of the sun at every
+//! diffuse vertex, cosine-weighted continuation bounded by `-ab`, specular events by `-lr`).
+//!
+//! The one difference from a path leaving a sensor: until a diffuse or specular (normal.c)
+//! scattering, a ray that leaves the scene inside the cone of a distant `light` sees its
+//! radiance. RADIANCE source.c only blanks a `light` for rays descended from an ambient or
+//! specular ray (`badcomponent`: `crtype & (AMBIENT|SPECULAR)`); a primary ray, and its
+//! mirror-reflected or glass-transmitted children, see the sun's disc.
+//!
+//! A mirror seen from its back is black, as in RADIANCE (mirror.c `m_mirror`: `r->rod < 0`).
+
+use super::integrator::{trace_radiance, Settings};
+use super::material::{bright, glass_fractions, Material};
+use super::ray::Ray;
+use super::rng::Rng;
+use super::sky::{source_seen, DistantKind};
+use super::world::World;
+use glam::DVec3;
+
+/// Most invisible surfaces a ray passes before it is taken as lost (as the integrator).
+const MAX_CROSSINGS: u32 = 1000;
+
+/// What a ray leaving the scene along unit `d` sees when it descends from no ambient or
+/// specular (normal.c) ray: a distant `light` containing `d`, else what any path sees.
+pub fn seen_from_eye(world: &World, d: DVec3) -> DVec3 {
+    match source_seen(world.distant_sources(), d) {
+        Some(s) if s.kind == DistantKind::Light => s.radiance(d),
+        _ => world.escape_radiance(d),
+    }
+}
+
+/// One estimate of the radiance (W/sr/m² per RGB channel) arriving back along `ray`, with the
+/// meaning of rtrace's value for that ray (no `-I`). Unbiased for the given `-ab` and `-lr`:
+/// the mean of many estimates converges to rtrace's with `-aa 0` (pure path tracing).
+pub fn ray_radiance(world: &World, ray: Ray, settings: &Settings, rng: &mut Rng) -> DVec3 {
+    let mut ray = ray;
+    let mut from: Option<u32> = None;
+    let mut throughput = DVec3::ONE;
+    let mut specular_events = 0u32;
+    let mut crossings = 0u32;
+    loop {
+        let Some(hit) = world.intersect(&ray, from) else {
+            return throughput * seen_from_eye(world, ray.direction);
+        };
+        let d = ray.direction;
+        let p = ray.at(hit.t_m);
+        let next = match world.material(hit.primitive) {
+            Material::Invisible => {
+                crossings += 1;
+                if crossings > MAX_CROSSINGS {
+                    return DVec3::ZERO;
+                }
+                d
+            }
+            Material::Emitter(e) => {
+                // Light leaves the front only (source.c m_light); a primary ray sees even a
+                // glow that does not illuminate.
+                return if d.dot(hit.normal) < 0.0 {
+                    throughput * e.radiance(d)
+                } else {
+                    DVec3::ZERO
+                };
+            }
+            Material::Mirror { reflectance_rgb } => {
+                if d.dot(hit.normal) > 0.0 {
+                    return DVec3::ZERO; // back is black
+                }
+                specular_events += 1;
+                if specular_events > settings.max_specular_events {
+                    return DVec3::ZERO;
+                }
+                throughput *= *reflectance_rgb;
+                d - 2.0 * d.dot(hit.normal) * hit.normal
+            }
+            Material::Glass(g) => {
+                specular_events += 1;
+                if specular_events > settings.max_specular_events {
+                    return DVec3::ZERO;
+                }
+                let (t, r) = glass_fractions(g, d.dot(hit.normal).abs());
+                let (bt, br) = (bright(t), bright(r));
+                if bt + br <= 0.0 || (bt + br).is_nan() {
+                    return DVec3::ZERO;
+                }
+                // Transmission or reflection in proportion to brightness, as the integrator.
+                if rng.uniform() * (bt + br) < bt {
+                    throughput *= t * ((bt + br) / bt);
+                    d
+                } else {
+                    throughput *= r * ((bt + br) / br);
+                    d - 2.0 * d.dot(hit.normal) * hit.normal
+                }
+            }
+            Material::Normal(_) => {
+                // The integrator shades this surface: trace again from where the ray started
+                // (one repeated intersection, which keeps the shading code in one place).
+                return throughput * trace_radiance(world, ray, from, settings, rng);
+            }
+        };
+        if throughput.max_element() <= 0.0 {
+            return DVec3::ZERO;
+        }
+        from = Some(hit.primitive);
+        ray = Ray::new(p, next);
+    }
+}

@@ -1,0 +1,144 @@
+//! The sun reflected by plane mirrors as a second source: RADIANCE's virtual source method
+//! (src/rt/virtuals.c, m_mirror.c; Ward, "The RADIANCE lighting simulation and rendering
+//! system", SIGGRAPH 1994, §3.2) for one reflection.
+//!
+//! A `mirror` polygon facing a distant `light` makes a virtual distant source: the same disc
+//! of sky mirrored in the polygon's plane. At a shaded point the virtual source is sampled
+//! like the real one: a direction l in the sun's cone, its mirror image l' = l − 2 (l·n) n,
+//! and the shadow ray along l' must reach the mirror's front inside the polygon (through
+//! glass, invisible and smooth `trans` surfaces, as any shadow ray), then continue along l
+//! from the mirror to the sky unobstructed. Its contribution is the shading coefficient for
+//! l' times the mirror's reflectance times the sun's radiance along l.
+//!
+//! Nothing is counted twice: a path that reaches a distant `light` after a mirror bounce
+//! collects nothing (integrator.rs; RADIANCE's `badcomponent`), as in RADIANCE, where light
+//! from the sun via a mirror reaches diffuse surfaces through the virtual source only. One
+//! reflection is followed (RADIANCE's default `-dr 2` also follows mirror-to-mirror).
+
+use super::material::{basis, glass_fractions, Material};
+use super::ray::Ray;
+use super::rng::Rng;
+use super::shapes::Primitive;
+use super::sky::{DistantEmitter, DistantKind};
+use super::world::World;
+use glam::DVec3;
+use std::f64::consts::PI;
+
+/// Most surfaces a shadow ray passes through on its way to the mirror.
+const MAX_CROSSINGS: usize = 64;
+
+/// A direction uniformly distributed in the cone of a distant source (pdf 1/Ω), as the
+/// integrator samples the sun.
+fn sample_cone(source: &DistantEmitter, rng: &mut Rng) -> DVec3 {
+    let cos_theta = 1.0 - rng.uniform() * (1.0 - source.cos_half_angle);
+    let sin_theta = (1.0 - cos_theta * cos_theta).max(0.0).sqrt();
+    let phi = 2.0 * PI * rng.uniform();
+    let (u, v) = basis(source.direction);
+    (u * (sin_theta * phi.cos()) + v * (sin_theta * phi.sin()) + source.direction * cos_theta)
+        .normalize()
+}
+
+/// The primitives that make virtual sources: polygons with a `mirror` material.
+pub fn mirror_polygons(world: &World) -> impl Iterator<Item = (u32, DVec3, DVec3)> + '_ {
+    (0..world.primitive_count() as u32).filter_map(move |i| {
+        let Material::Mirror { reflectance_rgb } = world.material(i) else {
+            return None;
+        };
+        match world.primitive(i) {
+            Primitive::Polygon(p) => Some((i, p.normal, *reflectance_rgb)),
+            _ => None,
+        }
+    })
+}
+
+/// What a shadow ray from `origin` (leaving surface `from`) along unit `dir` keeps on its way
+/// to the front of primitive `target`: the product of the transmissions crossed and the hit
+/// point on `target`; None if something opaque comes first, the ray misses `target` or meets
+/// its back.
+fn transmission_to(
+    world: &World,
+    origin: DVec3,
+    from: Option<u32>,
+    dir: DVec3,
+    target: u32,
+) -> Option<(DVec3, DVec3)> {
+    let mut ray = Ray::new(origin, dir);
+    let mut from = from;
+    let mut t = DVec3::ONE;
+    for _ in 0..MAX_CROSSINGS {
+        let hit = world.intersect(&ray, from)?;
+        let p = ray.at(hit.t_m);
+        if hit.primitive == target {
+            return (hit.normal.dot(dir) < 0.0).then_some((t, p));
+        }
+        match world.material(hit.primitive) {
+            Material::Invisible => {}
+            Material::Glass(g) => t *= glass_fractions(g, hit.normal.dot(dir).abs()).0,
+            Material::Normal(m) => {
+                t *= m
+                    .shade(dir, hit.normal, world.is_flat(hit.primitive))
+                    .shadow_transmission()
+            }
+            Material::Mirror { .. } | Material::Emitter(_) => return None,
+        }
+        if t == DVec3::ZERO {
+            return None;
+        }
+        ray = Ray::new(p, dir);
+        from = Some(hit.primitive);
+    }
+    None
+}
+
+/// One estimate of the light of every distant `light` reflected once by a mirror polygon
+/// towards `position_m` (on surface `from`, if any): Σ over mirrors and lights of
+/// `coefficient(l', Ω)` × mirror reflectance × radiance × transmissions, where
+/// `coefficient(direction, solid_angle_sr)` turns a source's radiance into the quantity
+/// wanted (irradiance: Ω cos θ; reflected radiance: normal.c `dirnorm`). Draws no random
+/// numbers when the scene has no mirror facing a light, so scenes without mirrors trace as
+/// before.
+pub fn mirrored_lights(
+    world: &World,
+    position_m: DVec3,
+    from: Option<u32>,
+    rng: &mut Rng,
+    coefficient: &mut dyn FnMut(DVec3, f64) -> DVec3,
+) -> DVec3 {
+    let mut total = DVec3::ZERO;
+    if !world
+        .distant_sources()
+        .iter()
+        .any(|s| s.kind == DistantKind::Light)
+    {
+        return total;
+    }
+    for (mirror, n, reflectance) in mirror_polygons(world) {
+        if Some(mirror) == from {
+            continue;
+        }
+        for source in world.distant_sources() {
+            // The mirror must face the source (virtuals.c: a virtual source only for a mirror
+            // whose front sees it).
+            if source.kind != DistantKind::Light || source.direction.dot(n) <= 0.0 {
+                continue;
+            }
+            let l = sample_cone(source, rng);
+            let ln = l.dot(n);
+            if ln <= 0.0 {
+                continue;
+            }
+            let virtual_dir = l - 2.0 * ln * n;
+            let c = coefficient(virtual_dir, source.solid_angle_sr);
+            if c == DVec3::ZERO {
+                continue;
+            }
+            let Some((t_in, q)) = transmission_to(world, position_m, from, virtual_dir, mirror)
+            else {
+                continue;
+            };
+            let t_out = world.shadow_transmission(q, Some(mirror), l);
+            total += c * reflectance * source.radiance(l) * t_in * t_out;
+        }
+    }
+    total
+}

@@ -1,0 +1,167 @@
+//! Mirror virtual sources (`engine::virtual_sources`): the sun reflected by a mirror on the
+//! floor lights a ceiling sensor that no direct sun reaches, as RADIANCE's virtual source
+//! method computes (rtrace uses it by default).
+//!
+//! The room: 4 × 4 × 3 m, a 2 × 1.3 m opening in the south wall, a 1 × 1 m mirror of
+//! reflectance 0.9 on the floor, the sun due south at 60° elevation. The sensor at
+//! (2, 3.2, 2.99) faces down: the sun is behind it, and its mirror image 30° from its normal
+//! lies inside the mirror as seen from it.
+
+use glam::DVec3;
+use skylux_hps::engine::{self, Settings, World};
+use skylux_hps::scene;
+mod common;
+use common::radiance::{check_output, radiance, tool};
+
+const SUN_RADIANCE: f64 = 1.0e6;
+const SUN_ANGLE_DEG: f64 = 0.533;
+const MIRROR_REFLECTANCE: f64 = 0.9;
+const SENSOR: &str = "2 3.2 2.99 0 0 -1\n";
+
+fn sun_direction() -> DVec3 {
+    let e = 60f64.to_radians();
+    DVec3::new(0.0, -e.cos(), e.sin())
+}
+
+fn scene_text() -> String {
+    let s = sun_direction();
+    format!(
+        "void plastic white 0 0 5 0.6 0.6 0.6 0 0\n\
+         void mirror silver 0 0 3 {r} {r} {r}\n\
+         void light solar 0 0 3 {ls} {ls} {ls}\n\
+         solar source sun 0 0 4 {sx} {sy} {sz} {a}\n\
+         white polygon floor 0 0 12 0 0 0 0 4 0 4 4 0 4 0 0\n\
+         white polygon ceiling 0 0 12 0 0 3 4 0 3 4 4 3 0 4 3\n\
+         white polygon west 0 0 12 0 0 0 0 0 3 0 4 3 0 4 0\n\
+         white polygon east 0 0 12 4 0 0 4 4 0 4 4 3 4 0 3\n\
+         white polygon north 0 0 12 0 4 0 0 4 3 4 4 3 4 4 0\n\
+         white polygon south_low 0 0 12 0 0 0 4 0 0 4 0 1.5 0 0 1.5\n\
+         white polygon south_high 0 0 12 0 0 2.8 4 0 2.8 4 0 3 0 0 3\n\
+         white polygon south_left 0 0 12 0 0 1.5 1 0 1.5 1 0 2.8 0 0 2.8\n\
+         white polygon south_right 0 0 12 3 0 1.5 4 0 1.5 4 0 2.8 3 0 2.8\n\
+         silver polygon mirror 0 0 12 1.5 1 0.001 2.5 1 0.001 2.5 2 0.001 1.5 2 0.001\n",
+        r = MIRROR_REFLECTANCE,
+        ls = SUN_RADIANCE,
+        sx = s.x,
+        sy = s.y,
+        sz = s.z,
+        a = SUN_ANGLE_DEG,
+    )
+}
+
+fn ours(ab: u32, samples: u32) -> (f64, f64) {
+    let dir = tempfile::tempdir().unwrap();
+    let rad = dir.path().join("room.rad");
+    std::fs::write(&rad, scene_text()).unwrap();
+    let pts = dir.path().join("s.pts");
+    std::fs::write(&pts, SENSOR).unwrap();
+    let world = World::new(&scene::load_files(&[&rad]).unwrap()).unwrap();
+    let sensors = scene::load_sensors(&pts).unwrap();
+    let settings = Settings {
+        ambient_bounces: ab,
+        samples_per_sensor: samples,
+        seed: 11,
+        ..Settings::default()
+    };
+    let r = engine::illuminance(&world, &sensors, &settings, &|_, _| {}).unwrap();
+    (r[0].illuminance_lux, r[0].stderr_lux)
+}
+
+/// Mean and standard error of rtrace -I over `runs` runs with different seeds (-u+ seeds from
+/// the clock in whole seconds, so each run starts in a new second).
+fn rtrace_lux(args: &[&str], runs: usize) -> Option<(f64, f64)> {
+    let Some((bin, lib)) = radiance() else {
+        if std::env::var_os("SKYLUX_REQUIRE_RADIANCE").is_some() {
+            panic!("RADIANCE not found and SKYLUX_REQUIRE_RADIANCE is set");
+        }
+        println!("SKIPPED: RADIANCE not found (pip install pyradiance)");
+        return None;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let rad = dir.path().join("room.rad");
+    std::fs::write(&rad, scene_text()).unwrap();
+    let mut oconv = tool(&bin, &lib, "oconv");
+    oconv.arg(&rad);
+    let oct = dir.path().join("room.oct");
+    std::fs::write(&oct, check_output(oconv, None)).unwrap();
+    let second = || {
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map(|d| d.as_secs())
+            .unwrap_or(0)
+    };
+    let mut last = 0;
+    let xs: Vec<f64> = (0..runs)
+        .map(|_| {
+            while runs > 1 && second() == last {
+                std::thread::sleep(std::time::Duration::from_millis(20));
+            }
+            last = second();
+            let mut c = tool(&bin, &lib, "rtrace");
+            c.args(["-h", "-I", "-u+"]).args(args).arg(&oct);
+            let out = String::from_utf8(check_output(c, Some(SENSOR.as_bytes()))).unwrap();
+            let v: Vec<f64> = out.split_whitespace().map(|t| t.parse().unwrap()).collect();
+            179.0 * (0.265 * v[0] + 0.670 * v[1] + 0.065 * v[2])
+        })
+        .collect();
+    let n = xs.len() as f64;
+    let mean = xs.iter().sum::<f64>() / n;
+    let se = if xs.len() > 1 {
+        (xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0) / n).sqrt()
+    } else {
+        0.0
+    };
+    Some((mean, se))
+}
+
+/// Direct light only (-ab 0): the sensor sees the sun only in the mirror. Closed form:
+/// E = Ls Ω × ρ_mirror × cos 30° (the mirror image of the sun is 30° off the sensor's
+/// normal), in lux 179 × that; rtrace -ab 0 (virtual sources on by default) within 2 %.
+#[test]
+fn sun_in_a_floor_mirror_lights_the_ceiling() {
+    let half = (SUN_ANGLE_DEG / 2.0).to_radians();
+    let omega = 2.0 * std::f64::consts::PI * (1.0 - half.cos());
+    let expect = 179.0 * SUN_RADIANCE * omega * MIRROR_REFLECTANCE * 30f64.to_radians().cos();
+    let (lux, se) = ours(0, 4096);
+    println!("ab 0: ours {lux:.1} ± {se:.2} lux, closed form {expect:.1} lux");
+    assert!(
+        (lux - expect).abs() < 2e-3 * expect,
+        "ours {lux} vs closed form {expect}"
+    );
+    if let Some((r, _)) = rtrace_lux(&["-ab", "0"], 1) {
+        println!("ab 0: rtrace {r:.1} lux ({:+.2} %)", 100.0 * (lux - r) / r);
+        assert!((lux - r).abs() < 0.02 * r, "ours {lux} vs rtrace {r}");
+    }
+}
+
+/// With interreflection (-ab 2), against rtrace's pure path tracing: the mirrored sun now
+/// also lights the room's walls and floor through the virtual source at every diffuse vertex.
+/// An ambient path that reaches the sun after a mirror bounce collects nothing (RADIANCE's
+/// `badcomponent`); counting it too would add, in expectation, the whole virtual-source share
+/// again (here it is found by too few paths for this test to see reliably; the agreement
+/// shows the rest of the accounting). Acceptance: within max(2 %, 4 × the combined standard
+/// error).
+#[test]
+fn mirror_light_is_counted_once_with_interreflection() {
+    let (lux, se) = ours(2, 16_384);
+    let Some((r, r_se)) = rtrace_lux(
+        &[
+            "-ab", "2", "-aa", "0", "-ad", "2048", "-as", "0", "-lw", "1e-5",
+        ],
+        4,
+    ) else {
+        return;
+    };
+    let combined = (se * se + r_se * r_se).sqrt();
+    println!(
+        "ab 2: ours {lux:.1} ± {se:.1} lux, rtrace {r:.1} ± {r_se:.1} lux, diff {:+.2} % ({:+.2} σ)",
+        100.0 * (lux - r) / r,
+        (lux - r) / combined
+    );
+    let (direct_only, _) = ours(0, 1024);
+    assert!(lux > direct_only * 1.01, "interreflection adds light");
+    assert!(
+        (lux - r).abs() <= (0.02 * r).max(4.0 * combined),
+        "ours {lux} vs rtrace {r}"
+    );
+}

@@ -1,0 +1,510 @@
+//! Rendering (`engine::render`): views against RADIANCE's `vwrays`, pixel values against
+//! closed forms and against `rtrace` on the same rays, and the picture files against
+//! RADIANCE's readers.
+//!
+//! RADIANCE comes from the `pyradiance` wheel (or `SKYLUX_RADIANCE_BIN`, or PATH); without it
+//! the comparisons print SKIPPED and pass, unless `SKYLUX_REQUIRE_RADIANCE` is set.
+
+use glam::DVec3;
+use skylux_hps::engine::render::{
+    self, rgbe, ColourScale, FalsecolourOptions, LegendUnit, RenderSettings, View, ViewError,
+};
+use skylux_hps::engine::{Settings, World};
+use skylux_hps::scene;
+use std::path::{Path, PathBuf};
+mod common;
+use common::radiance::{check_output, radiance, tool};
+
+const ROOM: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../../../shared/scenes/test-module"
+);
+
+fn radiance_or_skip() -> Option<(PathBuf, Option<PathBuf>)> {
+    let found = radiance();
+    if found.is_none() {
+        if std::env::var_os("SKYLUX_REQUIRE_RADIANCE").is_some() {
+            panic!(
+                "RADIANCE not found and SKYLUX_REQUIRE_RADIANCE is set (pip install pyradiance)"
+            );
+        }
+        println!("SKIPPED: RADIANCE not found (pip install pyradiance)");
+    }
+    found
+}
+
+fn world_from(text: &str) -> (tempfile::TempDir, World) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("scene.rad");
+    std::fs::write(&path, text).unwrap();
+    let scene = scene::load_files(&[&path]).unwrap();
+    let world = World::new(&scene).unwrap();
+    (dir, world)
+}
+
+fn settings(w: u32, h: u32, spp: u32, ab: u32) -> RenderSettings {
+    RenderSettings {
+        width_px: w,
+        height_px: h,
+        samples_per_pixel: spp,
+        trace: Settings {
+            ambient_bounces: ab,
+            seed: 7,
+            ..Settings::default()
+        },
+    }
+}
+
+/// Every pixel's direction (and origin) agrees with `vwrays` (double output, `-fd`) to 1e-6
+/// for perspective, hemispherical and angular fisheye views, shifted and lifted, and our
+/// square-pixel resolution equals vwrays' (`normaspect`).
+#[test]
+fn view_rays_match_vwrays() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let views = [
+        "-vtv -vp 1 2 1.2 -vd 0.3 -1 0.1 -vu 0 0 1 -vh 60 -vv 45",
+        "-vtv -vp 0 0 0 -vd 1 1 0 -vu 0 0 1 -vh 30 -vv 70 -vs 0.2 -vl -0.1 -vo 0.5",
+        "-vth -vp 1 1 1 -vd 0 0 1 -vu 0 1 0 -vh 180 -vv 180",
+        "-vth -vd 0 -1 0.2 -vh 150 -vv 120",
+        "-vta -vp 0 0 1 -vd 0 0 1 -vu 0 1 0 -vh 180 -vv 180",
+        "-vta -vd 1 0 0 -vh 270 -vv 200 -vs 0.1",
+    ];
+    for text in views {
+        let view = View::parse(text).unwrap().prepare().unwrap();
+        let (w, h) = view.fit_resolution(9, 7);
+        let mut c = tool(&bin, &lib, "vwrays");
+        c.arg("-d")
+            .args(text.split_whitespace())
+            .args(["-x", "9", "-y", "7"]);
+        let res = String::from_utf8(check_output(c, None)).unwrap();
+        assert_eq!(res.trim(), format!("-x {w} -y {h}"), "{text}");
+        let mut c = tool(&bin, &lib, "vwrays");
+        c.arg("-fd")
+            .args(text.split_whitespace())
+            .args(["-x", "9", "-y", "7"]);
+        let bytes = check_output(c, None);
+        let values: Vec<f64> = bytes
+            .chunks_exact(8)
+            .map(|b| f64::from_ne_bytes(b.try_into().unwrap()))
+            .collect();
+        assert_eq!(values.len(), (w * h * 6) as usize, "{text}");
+        let mut outside = 0;
+        for row in 0..h {
+            for column in 0..w {
+                let k = ((row * w + column) * 6) as usize;
+                let origin = DVec3::new(values[k], values[k + 1], values[k + 2]);
+                let dir = DVec3::new(values[k + 3], values[k + 4], values[k + 5]);
+                match view.pixel_centre_ray(column, row, w, h) {
+                    None => {
+                        assert_eq!(
+                            dir,
+                            DVec3::ZERO,
+                            "{text} ({column},{row}): vwrays has a ray"
+                        );
+                        outside += 1;
+                    }
+                    Some(ray) => {
+                        assert!(
+                            (ray.direction - dir).abs().max_element() < 1e-6,
+                            "{text} ({column},{row}): {} vs vwrays {dir}",
+                            ray.direction
+                        );
+                        assert!(
+                            (ray.origin_m - origin).abs().max_element() < 1e-6,
+                            "{text} ({column},{row}): origin {} vs {origin}",
+                            ray.origin_m
+                        );
+                    }
+                }
+            }
+        }
+        println!("{text}: {w}x{h}, {outside} pixels outside the fisheye");
+    }
+}
+
+#[test]
+fn bad_views_name_the_option() {
+    let err = |s: &str| View::parse(s).unwrap_err();
+    let msg = err("-vtv -vh sixty").to_string();
+    assert!(msg.contains("-vh") && msg.contains("sixty"), "{msg}");
+    let msg = err("-vtv -vp 1 2").to_string();
+    assert!(msg.contains("-vp") && msg.contains("3 number"), "{msg}");
+    let msg = err("-vtx").to_string();
+    assert!(msg.contains("-vtx"), "{msg}");
+    let msg = err("-vq 3").to_string();
+    assert!(msg.contains("-vq"), "{msg}");
+    assert!(matches!(err(""), ViewError::Option { .. }));
+    // Parses, but setview refuses it.
+    let msg = View::parse("-vtv -vh 180")
+        .unwrap()
+        .prepare()
+        .unwrap_err()
+        .to_string();
+    assert!(msg.contains("horizontal view size"), "{msg}");
+    let msg = View::parse("-vd 0 0 1 -vu 0 0 2")
+        .unwrap()
+        .prepare()
+        .unwrap_err()
+        .to_string();
+    assert!(msg.contains("parallel"), "{msg}");
+    // A view file: a picture header's VIEW= line is read, a stray line is named by number.
+    let dir = tempfile::tempdir().unwrap();
+    let vf = dir.path().join("a.vf");
+    std::fs::write(&vf, "rvu -vtv -vp 1 2 3 -vd 0 1 0\n-vh 30\n").unwrap();
+    let v = View::default().with_file(&vf).unwrap();
+    assert_eq!(v.position_m, DVec3::new(1.0, 2.0, 3.0));
+    assert_eq!(v.horizontal_deg, 30.0);
+    std::fs::write(&vf, "-vtv\nnonsense here\n").unwrap();
+    let msg = View::default().with_file(&vf).unwrap_err().to_string();
+    assert!(msg.contains("a.vf:2"), "{msg}");
+}
+
+/// A camera looking down at a large Lambertian plane of reflectance ρ under a uniform glow
+/// sky of radiance L sees ρ L in every pixel (-ab 1): every cosine-sampled path from the
+/// plane escapes to the sky, so each estimate is exact. With a sun instead (-ab 0), every
+/// pixel sees ρ/π · Ls Ω cos θ; and a narrow view aimed at the sun sees the sun's radiance.
+#[test]
+fn closed_forms_on_a_plane() {
+    let rho = DVec3::new(0.2, 0.5, 0.8);
+    let l_sky = 3.0;
+    let plane = format!(
+        "void plastic ground_mat 0 0 5 {} {} {} 0 0\n\
+         ground_mat polygon plane 0 0 12 -1000 -1000 0 1000 -1000 0 1000 1000 0 -1000 1000 0\n",
+        rho.x, rho.y, rho.z
+    );
+    let sky = format!(
+        "void glow sky_glow 0 0 4 {l_sky} {l_sky} {l_sky} 0\nsky_glow source sky 0 0 4 0 0 1 180\n"
+    );
+    let (_d, world) = world_from(&format!("{plane}{sky}"));
+    for view in [
+        "-vtv -vp 0 0 1 -vd 0 0 -1 -vu 0 1 0 -vh 60 -vv 60",
+        "-vta -vp 0 0 1 -vd 0 0 -1 -vu 0 1 0 -vh 120 -vv 120",
+    ] {
+        let v = View::parse(view).unwrap().prepare().unwrap();
+        let image = render::render(&world, &v, &settings(12, 12, 64, 1), &|_, _| {}).unwrap();
+        let expect = rho * l_sky;
+        let lum = 179.0 * (0.265 * expect.x + 0.670 * expect.y + 0.065 * expect.z);
+        let (mut seen, mut sum, mut var) = (0, 0.0, 0.0);
+        for (i, c) in image.radiance_rgb.iter().enumerate() {
+            if c.max_element() == 0.0 {
+                continue; // outside the fisheye circle
+            }
+            seen += 1;
+            let (l, se) = (image.luminance_cd_m2[i], image.luminance_stderr_cd_m2[i]);
+            // The sky's next-event estimation makes single paths noisy, not biased.
+            assert!(
+                (l - lum).abs() <= 5.0 * se + 1e-9,
+                "{view} pixel {i}: {l} ± {se} vs {lum}"
+            );
+            // Colour: every channel scales with ρ (the estimate's weights are grey).
+            assert!(((*c / rho) / (*c / rho).x - DVec3::ONE).abs().max_element() < 1e-9);
+            sum += l;
+            var += se * se;
+        }
+        let mean = sum / f64::from(seen);
+        let se = var.sqrt() / f64::from(seen);
+        println!("{view}: mean {mean:.4} ± {se:.4} cd/m², closed form {lum:.4}");
+        assert!((mean - lum).abs() <= 4.0 * se + 1e-9 && (mean - lum).abs() < 0.01 * lum);
+        assert!(seen >= 100, "{view}: {seen} pixels");
+    }
+
+    // The sun at 40° elevation, 0.533° across, radiance 1e6 (gensky's order).
+    let elevation = 40f64.to_radians();
+    let sun_dir = DVec3::new(0.0, elevation.cos(), elevation.sin());
+    let ls = 1.0e6;
+    let sun = format!(
+        "void light solar 0 0 3 {ls} {ls} {ls}\nsolar source sun 0 0 4 {} {} {} 0.533\n",
+        sun_dir.x, sun_dir.y, sun_dir.z
+    );
+    let (_d2, world) = world_from(&format!("{plane}{sun}"));
+    let v = View::parse("-vtv -vp 0 0 1 -vd 0 0 -1 -vu 0 1 0 -vh 40 -vv 40")
+        .unwrap()
+        .prepare()
+        .unwrap();
+    let image = render::render(&world, &v, &settings(8, 8, 16, 0), &|_, _| {}).unwrap();
+    let half = (0.533f64 / 2.0).to_radians();
+    let omega = 2.0 * std::f64::consts::PI * (1.0 - half.cos());
+    // Mean of cos over the cone, to first order: cos θ (1 − δ²/4), δ the half angle.
+    let expect = rho / std::f64::consts::PI * ls * omega * elevation.sin();
+    // Sampling the 0.53° disc moves cos θ by up to ±0.6 %: each pixel (16 directions) is
+    // within 0.3 %, the image's mean (1024) within 0.05 %.
+    for c in &image.radiance_rgb {
+        assert!(
+            ((*c - expect) / expect).abs().max_element() < 3e-3,
+            "{c} vs {expect}"
+        );
+    }
+    let mean = image.radiance_rgb.iter().sum::<DVec3>() / image.radiance_rgb.len() as f64;
+    println!("sun: mean {mean} vs closed form {expect}");
+    assert!(((mean - expect) / expect).abs().max_element() < 5e-4);
+    // Looking at the sun: a 0.1° view inside its 0.533° disc sees its radiance.
+    let at_sun = View::parse(&format!(
+        "-vtv -vp 0 0 1 -vd {} {} {} -vu 0 0 1 -vh 0.1 -vv 0.1",
+        sun_dir.x, sun_dir.y, sun_dir.z
+    ))
+    .unwrap()
+    .prepare()
+    .unwrap();
+    let image = render::render(&world, &at_sun, &settings(4, 4, 2, 0), &|_, _| {}).unwrap();
+    for c in &image.radiance_rgb {
+        assert!((*c - DVec3::splat(ls)).abs().max_element() < 1e-6, "{c}");
+    }
+}
+
+/// The same seed gives the same image on one thread and on several.
+#[test]
+fn image_does_not_depend_on_threads() {
+    let room = Path::new(ROOM).join("scene.rad");
+    let dir = tempfile::tempdir().unwrap();
+    let sky = dir.path().join("sky.rad");
+    std::fs::write(
+        &sky,
+        "void glow sky_glow 0 0 4 1 1 1 0\nsky_glow source sky 0 0 4 0 0 1 180\n",
+    )
+    .unwrap();
+    let world = World::new(&scene::load_files(&[&room, &sky]).unwrap()).unwrap();
+    let v = View::parse("-vtv -vp 1.45 5.5 1.2 -vd 0 -1 0 -vh 60 -vv 45")
+        .unwrap()
+        .prepare()
+        .unwrap();
+    let s = settings(10, 8, 3, 2);
+    let run = |threads| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| render::render(&world, &v, &s, &|_, _| {}).unwrap())
+    };
+    let one = run(1);
+    let two = run(3);
+    assert_eq!(one, two);
+    assert!(one.luminance_cd_m2.iter().any(|l| *l > 0.0));
+}
+
+/// Block means of the reference room's image under a CIE clear sky with sun (gensky) against
+/// rtrace on vwrays' rays for the same view: jittered rays (`-pj 1`), 4 per pixel (`-c 4`),
+/// pure path tracing (`-ab 5 -aa 0 -ad 512 -lw 1e-4`). Each block's rtrace standard error is
+/// from the spread of the 4 rays of each pixel; ours from each pixel's samples. Acceptance:
+/// |ours − rtrace| <= max(3 % of rtrace, 3 × the combined standard error).
+#[test]
+fn room_image_agrees_with_rtrace() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let mut sky = check_output(
+        {
+            let mut c = tool(&bin, &lib, "gensky");
+            c.args([
+                "3", "21", "12", "+s", "-a", "46.5", "-o", "-6.6", "-m", "-15",
+            ]);
+            c
+        },
+        None,
+    );
+    sky.extend_from_slice(
+        b"\nskyfunc glow sky_glow 0 0 4 1 1 1 0\nsky_glow source sky 0 0 4 0 0 1 180\n\
+          skyfunc glow ground_glow 0 0 4 1 1 1 0\nground_glow source ground 0 0 4 0 0 -1 180\n",
+    );
+    let sky_path = dir.path().join("sky.rad");
+    std::fs::write(&sky_path, &sky).unwrap();
+    let room = Path::new(ROOM).join("scene.rad");
+    let mut oconv = tool(&bin, &lib, "oconv");
+    oconv.current_dir(dir.path()).arg(&room).arg(&sky_path);
+    let octree = dir.path().join("room.oct");
+    std::fs::write(&octree, check_output(oconv, None)).unwrap();
+
+    let view_text = "-vtv -vp 1.45 5.5 1.2 -vd 0 -1 -0.15 -vu 0 0 1 -vh 60 -vv 45";
+    let view = View::parse(view_text).unwrap().prepare().unwrap();
+    let (w, h) = view.fit_resolution(32, 32);
+    const REPEATS: usize = 4;
+    let mut vwrays = tool(&bin, &lib, "vwrays");
+    vwrays
+        .args(["-ff", "-pj", "1", "-c", &REPEATS.to_string()])
+        .args(view_text.split_whitespace())
+        .args(["-x", "32", "-y", "32"]);
+    let rays = check_output(vwrays, None);
+    let rays_path = dir.path().join("view.rays");
+    std::fs::write(&rays_path, &rays).unwrap();
+    let mut rtrace = tool(&bin, &lib, "rtrace");
+    rtrace
+        .current_dir(dir.path())
+        .args([
+            "-ff", "-h", "-ab", "5", "-aa", "0", "-ad", "512", "-as", "0", "-lw", "1e-4",
+        ])
+        .arg(&octree)
+        .stdin(std::fs::File::open(&rays_path).unwrap());
+    let start = std::time::Instant::now();
+    let out = rtrace.output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let rtrace_s = start.elapsed().as_secs_f64();
+    let values: Vec<f32> = out
+        .stdout
+        .chunks_exact(4)
+        .map(|b| f32::from_ne_bytes(b.try_into().unwrap()))
+        .collect();
+    assert_eq!(values.len(), (w * h) as usize * REPEATS * 3);
+    // Per pixel: mean and variance of the mean over its repeats.
+    let lum = |k: usize| {
+        179.0
+            * (0.265 * f64::from(values[3 * k])
+                + 0.670 * f64::from(values[3 * k + 1])
+                + 0.065 * f64::from(values[3 * k + 2]))
+    };
+    let reference: Vec<(f64, f64)> = (0..(w * h) as usize)
+        .map(|p| {
+            let xs: Vec<f64> = (0..REPEATS).map(|r| lum(p * REPEATS + r)).collect();
+            let n = REPEATS as f64;
+            let m = xs.iter().sum::<f64>() / n;
+            let var = xs.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (n - 1.0);
+            (m, var / n)
+        })
+        .collect();
+
+    let world = World::new(&scene::load_files(&[&room, &sky_path]).unwrap()).unwrap();
+    let start = std::time::Instant::now();
+    let image = render::render(&world, &view, &settings(w, h, 64, 5), &|_, _| {}).unwrap();
+    let ours_s = start.elapsed().as_secs_f64();
+    println!("{w}x{h}: rtrace {REPEATS} rays/pixel in {rtrace_s:.1} s, ours 64 paths/pixel in {ours_s:.1} s");
+
+    // 3 x 2 blocks tiling the image.
+    let (bx, by) = (3u32, 2u32);
+    let mut failures = Vec::new();
+    for j in 0..by {
+        for i in 0..bx {
+            let (c0, c1) = (i * w / bx, (i + 1) * w / bx);
+            let (r0, r1) = (j * h / by, (j + 1) * h / by);
+            let (mut o, mut o_var, mut r, mut r_var, mut n) = (0.0, 0.0, 0.0, 0.0, 0.0);
+            for row in r0..r1 {
+                for column in c0..c1 {
+                    let k = image.index(column, row);
+                    o += image.luminance_cd_m2[k];
+                    o_var += image.luminance_stderr_cd_m2[k].powi(2);
+                    r += reference[k].0;
+                    r_var += reference[k].1;
+                    n += 1.0;
+                }
+            }
+            let (o, r) = (o / n, r / n);
+            let combined = (o_var + r_var).sqrt() / n;
+            let allowed = (0.03 * r).max(3.0 * combined);
+            println!(
+                "  block ({i},{j}): ours {o:.2} cd/m², rtrace {r:.2} cd/m², diff {:+.2} % ({:+.2} σ)",
+                100.0 * (o - r) / r,
+                (o - r) / combined
+            );
+            if (o - r).abs() > allowed {
+                failures.push(format!(
+                    "block ({i},{j}): {o:.2} vs {r:.2} (allowed ±{allowed:.2})"
+                ));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{failures:?}");
+}
+
+/// The .hdr file reads back through RADIANCE: `getinfo` finds the VIEW= and FORMAT lines,
+/// `getinfo -d` the resolution, and `pvalue` the pixel values to RGBE's precision (1/256 of
+/// the largest channel); the EXR's channels are the image's, and the PNG has the size stated.
+#[test]
+fn picture_files_read_back() {
+    let image = render::RenderedImage {
+        width_px: 5,
+        height_px: 3,
+        view: View::parse("-vth -vp 1 2 3 -vd 0 0 1 -vu 0 1 0 -vh 180 -vv 180").unwrap(),
+        radiance_rgb: (0..15)
+            .map(|i| {
+                let f = f64::from(i);
+                DVec3::new(0.001 * (f + 1.0), 10.0 * f, 1.0e5 * f * f)
+                    * if i == 7 { 0.0 } else { 1.0 }
+            })
+            .collect(),
+        luminance_cd_m2: (0..15).map(|i| f64::from(i) * 10.0).collect(),
+        luminance_stderr_cd_m2: vec![0.0; 15],
+        samples_per_pixel: 1,
+    };
+    assert_eq!(rgbe(DVec3::new(1.0, 0.5, 0.25)), [128, 64, 32, 129]);
+    assert_eq!(rgbe(DVec3::ZERO), [0, 0, 0, 0]);
+    let dir = tempfile::tempdir().unwrap();
+    let hdr = dir.path().join("a.hdr");
+    render::write_hdr(&hdr, &image, None).unwrap();
+    let exr = dir.path().join("a.exr");
+    render::write_exr(&exr, &image).unwrap();
+    let png = dir.path().join("a.png");
+    let outcome = render::write_falsecolour_png(
+        &png,
+        &image,
+        &FalsecolourOptions {
+            unit: LegendUnit::Lux,
+            scale: ColourScale::Log { decades: 2.0 },
+            maximum: None,
+            divisions: 4,
+        },
+    )
+    .unwrap();
+    // 99th percentile of π × 0..140 is π × 140 = 439.8: rounded up to 500.
+    assert_eq!(outcome.maximum, 500.0);
+    let png_bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&png_bytes[1..4], b"PNG");
+    let be = |o: usize| u32::from_be_bytes(png_bytes[o..o + 4].try_into().unwrap());
+    assert_eq!((be(16), be(20)), (outcome.width_px, outcome.height_px));
+
+    let ex = exr::prelude::read_all_flat_layers_from_file(&exr).unwrap();
+    let layer = &ex.layer_data[0];
+    let channel = |name: &str| -> Vec<f32> {
+        let c = layer
+            .channel_data
+            .list
+            .iter()
+            .find(|c| c.name.to_string() == name)
+            .unwrap();
+        c.sample_data.values_as_f32().collect()
+    };
+    assert_eq!(channel("B")[4], (1.0e5 * 16.0) as f32);
+    assert_eq!(channel("Y")[14], 140.0);
+
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let mut c = tool(&bin, &lib, "getinfo");
+    c.arg(&hdr);
+    let info = String::from_utf8(check_output(c, None)).unwrap();
+    assert!(
+        info.contains("VIEW= -vth -vp 1 2 3 -vd 0 0 1 -vu 0 1 0 -vh 180 -vv 180"),
+        "{info}"
+    );
+    assert!(info.contains("FORMAT=32-bit_rle_rgbe"), "{info}");
+    let mut c = tool(&bin, &lib, "getinfo");
+    c.arg("-d").arg(&hdr);
+    let dims = String::from_utf8(check_output(c, None)).unwrap();
+    assert!(dims.contains("-Y 3 +X 5"), "{dims}");
+    let mut c = tool(&bin, &lib, "pvalue");
+    c.args(["-h", "-H", "-o"]).arg(&hdr);
+    let text = String::from_utf8(check_output(c, None)).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .map(|l| l.split_whitespace().map(|t| t.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 15);
+    for r in rows {
+        // pvalue prints x y r g b with y counted from the bottom.
+        let (x, y) = (r[0] as usize, r[1] as usize);
+        let k = (2 - y) * 5 + x;
+        let want = image.radiance_rgb[k];
+        let tol = want.max_element() / 128.0 + 1e-30;
+        for ch in 0..3 {
+            assert!(
+                (r[2 + ch] - want[ch]).abs() <= tol,
+                "pixel ({x},{y}) channel {ch}: pvalue {} vs {}",
+                r[2 + ch],
+                want[ch]
+            );
+        }
+    }
+}

@@ -1,0 +1,743 @@
+//! [`FabricSource`]: HDR captures from the Skylux fabric through the `skylux_hps::fpga`
+//! drivers, over any [`RegisterBus`] and [`DmaMemory`]: the board's mapped windows
+//! (`skyluxd` without `--sim`) or the cycle-accurate core with its MT9P031 and SDRAM models
+//! (`[sim] source = "fabric"`, see [`sim_fabric_source`]).
+//!
+//! One capture: release and configure the sensor (Chip_Version, window, skip, modes, each
+//! register read back), program the capture path and the DMA ring (one slot per exposure),
+//! split the exposure table into shield openings (`plan_openings`), run each opening's
+//! sequence, wait for its frames ([`FrameWait`]: the UIO interrupt or polling, with a
+//! timeout), then read every slot, check its descriptor and checksum, release it, and hand the
+//! frames over.
+//!
+//! **Raw mode.** The capture path runs in raw mode (samples unchanged, two per word), and the
+//! source returns [`RawFrame`]s: the daemon's HDR path, its kept captures (campaign format) and
+//! the offline pipeline all consume raw frames, so a capture from the fabric is processed
+//! exactly as a capture from `--sim` or from the campaign tools. The grouped words would halve
+//! the DMA traffic and the HPS read (5 MB instead of 10 MB per full frame, BENCHMARKS.md) but
+//! cannot be kept in campaign format; the HDR merge takes both (`hdr::ExposureFrame`).
+//!
+//! **Reads of the DMA buffer.** The FPGA-to-SDRAM port is not cache-coherent (hardware-facts.md
+//! §3.2): the buffer is mapped uncached (`/dev/mem` with `O_SYNC` on a `no-map` region,
+//! `hardware.rs`), so every read of a slot sees what the fabric wrote, never a stale line.
+//! A slot is released (its format identifier cleared) after it is read, so a frame that did
+//! not arrive can never be mistaken for an earlier one.
+
+use crate::source::{CaptureSet, CaptureSource, SourceError};
+use crate::wait::{FrameWait, PollWait, WaitError};
+use chrono::{DateTime, FixedOffset};
+use skylux_bus::{DmaMemory, RegisterBus};
+use skylux_hps::campaign::{BayerPattern, CaptureConfig, ExposureEntry, RawFrame, Readout};
+use skylux_hps::fpga::frames::CapturedFrame;
+use skylux_hps::fpga::sensor::{reg, I2cTiming, SensorConfig, SensorError};
+use skylux_hps::fpga::sequence::{SequenceError, ShieldConfig};
+use skylux_hps::fpga::shield_plan::{plan_openings, OpeningCost};
+use skylux_hps::fpga::{CaptureConfig as RingConfig, ExposureSlot, Fabric, MAX_EXPOSURES};
+use std::ops::Range;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::Duration;
+
+/// Shutter overhead of the MT9P031 exposure formula, variant A (hardware-facts.md §0 item 2:
+/// the Linux drivers' constants), with Row_Bin 0 and Shutter_Delay 0: `SO = 208 + 98 + 1 −
+/// 94 = 213` PIXCLK. The bench settles A against B (§1.6); the simulated sensor uses A.
+const SHUTTER_OVERHEAD_PIXCLK: u64 = 213;
+/// I2C register writes the sequencer makes before each exposure's trigger (shutter upper and
+/// lower, shutter delay, gain) and the bits of one write (start, address, register, two data
+/// bytes, each with its acknowledge, stop): for the per-frame cost of a shield opening.
+const WRITES_PER_EXPOSURE: u64 = 4;
+const BITS_PER_WRITE: u64 = 38;
+
+/// Everything a fabric capture needs besides the hardware.
+#[derive(Clone, Debug)]
+pub struct FabricSettings {
+    /// Window, skip and modes; the shutter and gain are the exposure table's.
+    pub sensor: SensorConfig,
+    pub i2c: I2cTiming,
+    pub shield: ShieldConfig,
+    /// The sensor's pixel clock (hardware-facts.md §1.2: 96 MHz with the PLL on the board).
+    pub pixclk_hz: f64,
+    /// Integration times wanted, µs, in capture order (`camera.exposures_us`).
+    pub exposures_us: Vec<f64>,
+    /// Analog gain (`camera.gain`): 1 to 7.875, in the sensor's 1/8 steps.
+    pub gain: f64,
+    /// Longest wait for one opening's frames beyond its expected duration.
+    pub frame_timeout: Duration,
+    /// Pause after releasing RESET_BAR before the first I2C access (hardware-facts.md §1.7:
+    /// 1-2 ms on the board; 0 in simulation, where the model answers at once).
+    pub reset_settle: Duration,
+    /// Register value of the first active column and row: the capture's `readout` is in
+    /// active pixels (campaign.md), the sensor's `Column_Start`/`Row_Start` in array pixels.
+    pub active_origin: (u32, u32),
+}
+
+/// The exposure table as the sensor will run it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExposurePlan {
+    pub slots: Vec<ExposureSlot>,
+    /// What each slot integrates, µs (the formula applied to the rounded shutter width).
+    pub exposures_us: Vec<f64>,
+    pub gain: f64,
+    /// The shield openings, as ranges of the table.
+    pub openings: Vec<Range<usize>>,
+    /// Light time of each opening, µs.
+    pub open_time_us: Vec<f64>,
+    /// Output size of the window, pixels.
+    pub width_px: u32,
+    pub height_px: u32,
+    pub row_pixclk: u64,
+}
+
+/// Output pixels of a window dimension: `2 ceil(size / (2 skip))` (hardware-facts.md §1.5).
+fn output_size(size: u32, skip: u32) -> u32 {
+    2 * size.div_ceil(2 * skip.max(1))
+}
+
+/// Row time in PIXCLK (hardware-facts.md §0 item 1) for no binning:
+/// `2 max(W/2 + max(HB, 450), 41 + 346 + 99)`.
+pub fn row_pixclk(sensor: &SensorConfig) -> u64 {
+    let w = output_size(sensor.width, sensor.skip);
+    let hb = sensor.horizontal_blank + 1;
+    let a = w / 2 + hb.max(346 + 64 + 40);
+    let b = 41 + 346 + 99;
+    2 * u64::from(a.max(b))
+}
+
+/// Frame readout in PIXCLK: `(H + max(VB, 9)) t_ROW` (hardware-facts.md §1.5, short
+/// exposures).
+pub fn readout_pixclk(sensor: &SensorConfig) -> u64 {
+    let h = output_size(sensor.height, sensor.skip);
+    u64::from(h + (sensor.vertical_blank + 1).max(9)) * row_pixclk(sensor)
+}
+
+/// Plans the exposure table: shutter widths closest to the wanted times, the gain code, and
+/// the shield openings. Every refusal names the field.
+pub fn plan_exposures(s: &FabricSettings, sys_clock_hz: u32) -> Result<ExposurePlan, String> {
+    s.sensor.validate().map_err(|e| e.to_string())?;
+    if s.sensor.bin != 1 {
+        return Err("fabric: sensor binning is not supported by the exposure plan".into());
+    }
+    if !(s.pixclk_hz.is_finite() && s.pixclk_hz > 0.0) {
+        return Err(format!(
+            "fabric: pixclk_hz {} is not a frequency",
+            s.pixclk_hz
+        ));
+    }
+    if s.exposures_us.is_empty() || s.exposures_us.len() > MAX_EXPOSURES {
+        return Err(format!(
+            "camera.exposures_us: the fabric takes 1 to {MAX_EXPOSURES} exposures, not {}",
+            s.exposures_us.len()
+        ));
+    }
+    let code = (8.0 * s.gain).round();
+    if !(s.gain.is_finite() && (8.0..=63.0).contains(&code)) {
+        return Err(format!(
+            "camera.gain: {} is outside the sensor's analog gain 1 to 7.875 (Global_Gain \
+             codes 8 to 63, hardware-facts.md §1.4)",
+            s.gain
+        ));
+    }
+    let row = row_pixclk(&s.sensor);
+    let mut slots = Vec::new();
+    let mut exposures_us = Vec::new();
+    for (i, &e) in s.exposures_us.iter().enumerate() {
+        if !(e.is_finite() && e > 0.0) {
+            return Err(format!(
+                "camera.exposures_us[{i}]: {e} is not a positive time"
+            ));
+        }
+        let wanted = e * 1e-6 * s.pixclk_hz + 2.0 * SHUTTER_OVERHEAD_PIXCLK as f64;
+        let sw = (wanted / row as f64)
+            .round()
+            .clamp(1.0, ((1 << 20) - 1) as f64) as u32;
+        let pixclk = (u64::from(sw) * row).saturating_sub(2 * SHUTTER_OVERHEAD_PIXCLK);
+        if pixclk == 0 {
+            return Err(format!(
+                "camera.exposures_us[{i}]: {e} µs is below the sensor's shortest exposure here"
+            ));
+        }
+        slots.push(ExposureSlot {
+            shutter_width_rows: sw,
+            shutter_delay: 0,
+            gain_code: code as u32,
+        });
+        exposures_us.push(pixclk as f64 / s.pixclk_hz * 1e6);
+    }
+    let clock = f64::from(sys_clock_hz.max(1));
+    let cost = OpeningCost {
+        motion_us: 2.0 * f64::from(s.shield.steps) * f64::from(s.shield.step_period_cycles) / clock
+            * 1e6,
+        readout_us: readout_pixclk(&s.sensor) as f64 / s.pixclk_hz * 1e6,
+        per_frame_us: (WRITES_PER_EXPOSURE * BITS_PER_WRITE * 2) as f64
+            * f64::from(s.i2c.half_period_cycles)
+            / clock
+            * 1e6,
+        limit_us: f64::from(s.shield.limit_cycles) / clock * 1e6,
+    };
+    let openings = plan_openings(&exposures_us, &cost).map_err(|e| e.to_string())?;
+    let open_time_us = openings
+        .iter()
+        .map(|r| cost.open_time_us(&exposures_us[r.clone()]))
+        .collect();
+    Ok(ExposurePlan {
+        slots,
+        exposures_us,
+        gain: code / 8.0,
+        openings,
+        open_time_us,
+        width_px: output_size(s.sensor.width, s.sensor.skip),
+        height_px: output_size(s.sensor.height, s.sensor.skip),
+        row_pixclk: row,
+    })
+}
+
+/// Captures from the fabric.
+pub struct FabricSource<B: RegisterBus, M: DmaMemory, W: FrameWait> {
+    fabric: Fabric<B>,
+    memory: M,
+    wait: W,
+    settings: FabricSettings,
+    plan: ExposurePlan,
+    ring: RingConfig,
+    stop: Arc<AtomicBool>,
+}
+
+fn sensor_error(e: SensorError, what: &str) -> SourceError {
+    match e {
+        SensorError::Nack { reg: r } if r == reg::CHIP_VERSION => SourceError::SensorAbsent {
+            detail: format!(
+                "{what}: Chip_Version (0x00) read not acknowledged: no sensor answers at I2C \
+                 address 0x5D (unplugged, unpowered, or held in reset)"
+            ),
+        },
+        SensorError::WrongChip { found } => SourceError::SensorAbsent {
+            detail: format!("{what}: Chip_Version reads {found:#06x}, not an MT9P031 (0x1801)"),
+        },
+        SensorError::Nack { reg: r }
+        | SensorError::Timeout { reg: r }
+        | SensorError::BusStuck { reg: r }
+        | SensorError::Verify { reg: r, .. }
+        | SensorError::Refused { reg: r }
+        | SensorError::NoCompletion { reg: r, .. } => SourceError::I2cNack {
+            register: r,
+            detail: format!("{what}: {e}"),
+        },
+        other => SourceError::Other(format!("{what}: {other}")),
+    }
+}
+
+fn other(what: &str) -> impl FnOnce(String) -> SourceError + '_ {
+    move |e| SourceError::Other(format!("{what}: {e}"))
+}
+
+impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
+    /// Brings the fabric up (design ID, register-map version, a scratch round trip through the
+    /// bridge), checks that the DMA buffer holds the ring and reads back what the HPS writes,
+    /// and plans the exposure table. `stop` ends a wait for frames early (SIGTERM).
+    pub fn new(
+        bus: B,
+        mut memory: M,
+        wait: W,
+        settings: FabricSettings,
+        stop: Arc<AtomicBool>,
+    ) -> Result<Self, SourceError> {
+        let fabric =
+            Fabric::bring_up(bus).map_err(|e| SourceError::Other(format!("bring-up: {e}")))?;
+        let plan =
+            plan_exposures(&settings, fabric.info().sys_clock_hz).map_err(SourceError::Other)?;
+        let base = memory.phys_base().next_multiple_of(8);
+        let slots = settings.exposures_us.len() as u8;
+        let mut ring = RingConfig::fitted(plan.width_px, plan.height_px, base, slots);
+        ring.grouping.raw = true;
+        // Raw mode stores every row: refit the stride to it.
+        let stride = ring.slot_bytes_needed().min(u64::from(u32::MAX)) as u32;
+        ring.ring.slot_stride_bytes = stride;
+        ring.window_size_bytes = stride.saturating_mul(u32::from(slots));
+        let end = base - memory.phys_base() + u64::from(ring.window_size_bytes);
+        if end > memory.len_bytes() {
+            return Err(SourceError::Other(format!(
+                "DMA buffer: the ring needs {end} bytes from {:#x}, the buffer has {}: raise \
+                 hardware.dma_size or shrink the window",
+                memory.phys_base(),
+                memory.len_bytes()
+            )));
+        }
+        // The HPS side of the f2sdram path: the mapping must be memory that holds what is
+        // written (a wrong base or an unmapped region reads back something else).
+        let offset = base - memory.phys_base();
+        for pattern in [0xA5A5_5A5Au32, 0x5A5A_A5A5] {
+            let bytes = pattern.to_le_bytes();
+            memory
+                .write_bytes(offset, &bytes)
+                .and_then(|_| {
+                    let mut back = [0u8; 4];
+                    memory.read_bytes(offset, &mut back).map(|_| back)
+                })
+                .map_err(|e| SourceError::Other(format!("DMA buffer: {e}")))
+                .and_then(|back| {
+                    (back == bytes).then_some(()).ok_or_else(|| {
+                        SourceError::Other(format!(
+                            "DMA buffer at {base:#x}: wrote {pattern:#010x}, read {:#010x}: \
+                             not RAM the HPS can use (check hardware.dma_base and the \
+                             reserved-memory node)",
+                            u32::from_le_bytes(back)
+                        ))
+                    })
+                })?;
+        }
+        for slot in 0..slots {
+            ring.ring
+                .release_slot(&mut memory, slot)
+                .map_err(|e| SourceError::Other(format!("DMA buffer: {e}")))?;
+        }
+        tracing::info!(
+            info = ?fabric.info(),
+            width_px = plan.width_px,
+            height_px = plan.height_px,
+            openings = plan.openings.len(),
+            exposures_us = ?plan.exposures_us,
+            wait = wait.name(),
+            "fabric up"
+        );
+        Ok(Self {
+            fabric,
+            memory,
+            wait,
+            settings,
+            plan,
+            ring,
+            stop,
+        })
+    }
+
+    /// The exposure table as run.
+    pub fn plan(&self) -> &ExposurePlan {
+        &self.plan
+    }
+
+    /// The fabric (for tests and diagnostics).
+    pub fn fabric(&mut self) -> &mut Fabric<B> {
+        &mut self.fabric
+    }
+
+    fn stopped(&self) -> bool {
+        self.stop.load(Ordering::Relaxed)
+    }
+
+    /// Releases every slot: nothing of an abandoned capture can be read later.
+    fn release_all(&mut self) {
+        for slot in 0..self.ring.ring.slots {
+            let _ = self.ring.ring.release_slot(&mut self.memory, slot);
+        }
+    }
+
+    fn take(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
+        let s = &self.settings;
+        let f = &mut self.fabric;
+        f.sensor_bus_setup(s.i2c)
+            .map_err(|e| sensor_error(e, "I2C master setup"))?;
+        f.sensor_reset_release(true)
+            .map_err(|e| SourceError::Other(format!("RESET_BAR: {e}")))?;
+        if !s.reset_settle.is_zero() {
+            std::thread::sleep(s.reset_settle);
+        }
+        let first = self.plan.slots[0];
+        let sensor = SensorConfig {
+            snapshot: true,
+            shutter_width_rows: first.shutter_width_rows,
+            shutter_delay: first.shutter_delay,
+            global_gain_code: first.gain_code,
+            ..s.sensor.clone()
+        };
+        f.sensor_configure(&sensor)
+            .map_err(|e| sensor_error(e, "sensor configuration"))?;
+        f.capture_configure(&self.ring)
+            .map_err(|e| SourceError::Other(format!("capture path: {e}")))?;
+        f.configure_shield(&s.shield)
+            .map_err(|e| SourceError::Other(format!("shield: {e}")))?;
+        let expected = self.plan.slots.len();
+        let clock = f64::from(f.info().sys_clock_hz.max(1));
+        let mut received = 0usize;
+        for (opening, range) in self.plan.openings.clone().iter().enumerate() {
+            let f = &mut self.fabric;
+            f.set_exposures(&self.plan.slots[range.clone()])
+                .map_err(|e| SourceError::Other(format!("exposure table: {e}")))?;
+            let start = f
+                .frames_written()
+                .map_err(|e| other("dma")(e.to_string()))?;
+            // Each status poll takes at least one clock: twice the opening in clocks, plus a
+            // margin, bounds a sequence that never ends.
+            let open_cycles = self.plan.open_time_us[opening] * 1e-6 * clock;
+            let max_polls = (2.0 * open_cycles) as u64 + 200_000;
+            f.run_sequence(max_polls).map_err(|e| match e {
+                SequenceError::I2c { frames, i2c_status } => SourceError::I2cNack {
+                    register: reg::SHUTTER_WIDTH_LOWER,
+                    detail: format!(
+                        "the sequencer's exposure writes (Shutter_Width, Shutter_Delay, \
+                         Global_Gain) failed after {frames} frames of opening {opening}, \
+                         i2c.status {i2c_status:#x}"
+                    ),
+                },
+                SequenceError::NoCompletion { polls } => SourceError::DmaTimeout {
+                    frames_received: received,
+                    frames_expected: expected,
+                    waited_ms: (polls as f64 / clock * 1e3) as u64,
+                },
+                other => SourceError::Other(format!("sequence (opening {opening}): {other}")),
+            })?;
+            let timeout = s_timeout(&self.settings, self.plan.open_time_us[opening]);
+            let n = range.len() as u32;
+            match self
+                .wait
+                .wait_frames(&mut self.fabric, start, n, timeout, &self.stop)
+            {
+                Ok(_) => received += range.len(),
+                Err(WaitError::Timeout {
+                    received: r,
+                    waited_ms,
+                    ..
+                }) => {
+                    return Err(SourceError::DmaTimeout {
+                        frames_received: received + r as usize,
+                        frames_expected: expected,
+                        waited_ms,
+                    })
+                }
+                Err(e @ WaitError::Stopped { .. }) => {
+                    return Err(SourceError::Other(format!("capture discarded: {e}")))
+                }
+                Err(e) => return Err(SourceError::Other(format!("frame wait: {e}"))),
+            }
+        }
+        let faults = self
+            .fabric
+            .capture_take_faults()
+            .map_err(|e| other("capture status")(e.to_string()))?;
+        if faults.dma_bus_timeout {
+            return Err(SourceError::Other(
+                "DMA bus timeout: the FPGA-to-SDRAM port never accepted a burst (ports held in \
+                 reset: fpgaportrst at 0xFFC25080 must be set from U-Boot before the FPGA \
+                 touches SDRAM, hardware-facts.md §3.3)"
+                    .into(),
+            ));
+        }
+        let mut frames = Vec::with_capacity(expected);
+        let mut frame_flags = Vec::with_capacity(expected);
+        // Slot k holds exposure k (the ring restarts at slot 0 with each capture); its
+        // descriptor counts the exposure within its opening's table.
+        let order: Vec<(usize, usize)> = self
+            .plan
+            .openings
+            .iter()
+            .flat_map(|r| r.clone().map(move |k| (k, k - r.start)))
+            .collect();
+        for (k, index_in_opening) in order {
+            let slot = k as u8;
+            let captured = self
+                .ring
+                .ring
+                .read_slot(&mut self.memory, slot)
+                .map_err(|e| SourceError::Other(format!("slot {slot}: {e}")))?
+                .ok_or_else(|| {
+                    SourceError::Other(format!(
+                        "slot {slot}: no frame although the DMA counted it (ring overwritten?)"
+                    ))
+                })?;
+            let (frame, flags) = self.unpack(&captured, index_in_opening)?;
+            frames.push(frame);
+            frame_flags.push(flags);
+        }
+        // Sticky faults no descriptor explains: reported on the first frame.
+        if faults.any() && frame_flags.iter().all(Vec::is_empty) {
+            frame_flags[0].push(format!("CAPTURE_STATUS {faults:?}"));
+        }
+        let config = CaptureConfig {
+            time: at.to_rfc3339(),
+            bayer: bayer_of(&self.settings.sensor),
+            sensor_temperature_c: None,
+            readout: Readout {
+                col_start: self
+                    .settings
+                    .sensor
+                    .col_start
+                    .saturating_sub(self.settings.active_origin.0),
+                row_start: self
+                    .settings
+                    .sensor
+                    .row_start
+                    .saturating_sub(self.settings.active_origin.1),
+                skip: self.settings.sensor.skip,
+            },
+            exposure: self
+                .plan
+                .exposures_us
+                .iter()
+                .enumerate()
+                .map(|(i, &e)| ExposureEntry {
+                    file: format!("exp{i}.pgm"),
+                    exposure_us: e,
+                    gain: self.plan.gain,
+                    offset_ms: 0.0,
+                })
+                .collect(),
+        };
+        Ok(CaptureSet {
+            time: at,
+            config,
+            frames,
+            frame_flags,
+        })
+    }
+
+    /// A raw-mode slot as samples, with its flags (descriptor flags, a bad checksum, a frame
+    /// of the wrong size or exposure index).
+    fn unpack(
+        &self,
+        c: &CapturedFrame,
+        exposure_index: usize,
+    ) -> Result<(RawFrame, Vec<String>), SourceError> {
+        let (w, h) = (self.plan.width_px as usize, self.plan.height_px as usize);
+        let mut flags: Vec<String> = c.flag_names().iter().map(|n| n.to_string()).collect();
+        if c.checksum_ok() == Some(false) {
+            flags.push("CHECKSUM".into());
+        }
+        let d = &c.descriptor;
+        if !d.raw {
+            flags.push("NOT_RAW".into());
+        }
+        if usize::from(d.exposure_index) != exposure_index {
+            flags.push(format!(
+                "EXPOSURE_INDEX {} (expected {exposure_index})",
+                d.exposure_index
+            ));
+        }
+        if flags.is_empty() && (usize::from(d.lines) != h || usize::from(d.last_line_pixels) != w) {
+            flags.push(format!(
+                "SIZE {}x{} (expected {w}x{h})",
+                d.last_line_pixels, d.lines
+            ));
+        }
+        let mut samples_dn = vec![0u16; w * h];
+        if flags.is_empty() {
+            if c.words.len() != w / 2 * h {
+                return Err(SourceError::Other(format!(
+                    "slot {}: {} payload words for a {w}x{h} raw frame",
+                    c.slot,
+                    c.words.len()
+                )));
+            }
+            // Raw word: even column in [11:0], odd column in [27:16] (ARCHITECTURE.md).
+            for (pair, word) in samples_dn.chunks_exact_mut(2).zip(&c.words) {
+                pair[0] = (word & 0xFFF) as u16;
+                pair[1] = ((word >> 16) & 0xFFF) as u16;
+            }
+        }
+        Ok((
+            RawFrame {
+                width: w,
+                height: h,
+                samples_dn,
+            },
+            flags,
+        ))
+    }
+}
+
+/// The wait for one opening: its light time twice over, plus the configured margin.
+fn s_timeout(s: &FabricSettings, open_time_us: f64) -> Duration {
+    s.frame_timeout + Duration::from_secs_f64((2.0 * open_time_us * 1e-6).clamp(0.0, 60.0))
+}
+
+/// The CFA phase of the read-out window (hardware-facts.md §1.1): GRBG unmirrored, with even
+/// starts; mirroring moves it.
+fn bayer_of(s: &SensorConfig) -> BayerPattern {
+    match (s.mirror_row, s.mirror_column) {
+        (false, false) => BayerPattern::GRBG,
+        (false, true) => BayerPattern::RGGB,
+        (true, false) => BayerPattern::BGGR,
+        (true, true) => BayerPattern::GBRG,
+    }
+}
+
+impl<B: RegisterBus, M: DmaMemory, W: FrameWait> CaptureSource for FabricSource<B, M, W> {
+    fn name(&self) -> &'static str {
+        "fabric"
+    }
+
+    fn capture(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
+        if self.stopped() {
+            return Err(SourceError::Other(
+                "capture discarded: stop requested".into(),
+            ));
+        }
+        let result = self.take(at);
+        // Read or abandoned, no slot keeps a frame for the next capture.
+        self.release_all();
+        result
+    }
+}
+
+/// The fabric's interrupt or polling, as `[hardware] uio_device` says, for the board.
+pub fn board_wait(uio: Option<&std::path::Path>) -> Result<crate::wait::AnyWait, WaitError> {
+    Ok(match uio {
+        Some(p) => crate::wait::AnyWait::Uio(crate::wait::UioWait::open(p)?),
+        None => crate::wait::AnyWait::Poll(PollWait {
+            max_polls: u64::MAX,
+            pause: Duration::from_millis(1),
+        }),
+    })
+}
+
+/// The settings of `[fabric]`: on the board (`sim` false) the sensor at 96 MHz PIXCLK
+/// (hardware-facts.md §1.2), 100 kHz I2C, a shield step every millisecond, RESET_BAR settle
+/// 2 ms; in the cycle-accurate simulation the same window with a fast I2C bus (4 clocks per
+/// half period) and a short shield motion, because the simulation runs ~20k clocks a second.
+pub fn fabric_settings(
+    config: &crate::config::Config,
+    sys_clock_hz: u32,
+    sim: bool,
+) -> FabricSettings {
+    let w = &config.fabric;
+    FabricSettings {
+        sensor: SensorConfig {
+            row_start: w.row_start,
+            col_start: w.col_start,
+            width: w.width,
+            height: w.height,
+            skip: w.skip,
+            ..SensorConfig::default()
+        },
+        i2c: if sim {
+            I2cTiming {
+                half_period_cycles: 4,
+                timeout_cycles: 5_000,
+            }
+        } else {
+            I2cTiming {
+                // 100 kHz SCL: half a period of 5 µs.
+                half_period_cycles: (sys_clock_hz / 200_000).max(2),
+                timeout_cycles: (sys_clock_hz / 100).min((1 << 24) - 1),
+            }
+        },
+        shield: ShieldConfig {
+            steps: w.shield_steps,
+            step_period_cycles: if sim {
+                40
+            } else {
+                (sys_clock_hz / 1000).max(2)
+            },
+            limit_cycles: skylux_regmap::seq::shield_limit::CYCLES.reset,
+            trigger_pulse_cycles: if sim { 4 } else { 100 },
+        },
+        pixclk_hz: 96e6,
+        exposures_us: config.camera.exposures_us.clone(),
+        gain: config.camera.gain,
+        frame_timeout: Duration::from_secs_f64(w.frame_timeout_s),
+        reset_settle: if sim {
+            Duration::ZERO
+        } else {
+            Duration::from_millis(2)
+        },
+        // The simulated sensor renders its register window as active coordinates.
+        active_origin: if sim { (0, 0) } else { (16, 54) },
+    }
+}
+
+/// The simulated sensor's pixels: the camera imaging the simulated world, whose sky is
+/// replaced before each capture (the rig owns the pixel source, so it is shared).
+struct SharedScene(Arc<std::sync::Mutex<skylux_sim::mt9p031::SceneSource>>);
+
+impl skylux_sim::mt9p031::PixelSource for SharedScene {
+    fn frame(
+        &mut self,
+        settings: &skylux_sim::mt9p031::FrameSettings,
+        pixclk_hz: f64,
+        frame_index: u64,
+    ) -> RawFrame {
+        match self.0.lock() {
+            Ok(mut s) => s.frame(settings, pixclk_hz, frame_index),
+            Err(p) => p.into_inner().frame(settings, pixclk_hz, frame_index),
+        }
+    }
+}
+
+/// The fabric source over the cycle-accurate core (`[sim] source = "fabric"`): the whole
+/// fabric with an MT9P031 model imaging the simulated world through the declared camera, and
+/// SDRAM models with random back-pressure, driven through the same `FabricSource` as the
+/// board with a polling wait.
+pub struct SimFabricSource {
+    pub inner: FabricSource<
+        skylux_sim::core_rig::SimCoreRegisters,
+        skylux_sim::core_rig::SimCoreMemory,
+        PollWait,
+    >,
+    pub rig: skylux_sim::core_rig::SharedCore,
+    scene: Arc<std::sync::Mutex<skylux_sim::mt9p031::SceneSource>>,
+    site: skylux_hps::sun::Site,
+    sky: crate::config::SimSky,
+}
+
+/// Builds [`SimFabricSource`] from the configuration.
+pub fn sim_fabric_source(
+    config: &crate::config::Config,
+    device: &skylux_hps::camera::DeviceConfig,
+    stop: Arc<AtomicBool>,
+) -> Result<SimFabricSource, SourceError> {
+    use skylux_sim::core_rig::{sim_core, CoreRigConfig};
+    let settings = fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, true);
+    let plan =
+        plan_exposures(&settings, skylux_regmap::SYS_CLOCK_HZ).map_err(SourceError::Other)?;
+    let mut ring = RingConfig::fitted(
+        plan.width_px,
+        plan.height_px,
+        0,
+        settings.exposures_us.len() as u8,
+    );
+    ring.grouping.raw = true;
+    let memory_bytes = (ring.slot_bytes_needed() as usize) * settings.exposures_us.len() + 4096;
+    let scene = Arc::new(std::sync::Mutex::new(skylux_sim::mt9p031::SceneSource {
+        camera: skylux_hps::camera::CameraModel::new(device.clone()),
+        luminance_cd_m2: Box::new(|_| 0.0),
+        noise_seed: Some(config.sim.seed),
+        channel_response: skylux_sim::sensor::ChannelResponse::GREY,
+    }));
+    let sensor =
+        skylux_sim::mt9p031::Mt9p031::new(Box::new(SharedScene(scene.clone())), settings.pixclk_hz);
+    // Back-pressure on the frame port as in tests/tests/core_system.rs.
+    let (rig, regs, memory, _raybox) =
+        sim_core(sensor, CoreRigConfig::new(memory_bytes, 4096, 0.3));
+    let wait = PollWait {
+        // Each poll is a register read of a few simulated clocks: a bound of ~20 simulated
+        // ms beyond the opening, reached in seconds when no frame comes.
+        max_polls: 500_000,
+        pause: Duration::ZERO,
+    };
+    let inner = FabricSource::new(regs, memory, wait, settings, stop)?;
+    Ok(SimFabricSource {
+        inner,
+        rig,
+        scene,
+        site: skylux_hps::sun::Site {
+            latitude_deg: config.site.latitude_deg,
+            longitude_deg: config.site.longitude_deg,
+            elevation_m: config.site.elevation_m,
+        },
+        sky: config.sim.sky,
+    })
+}
+
+impl CaptureSource for SimFabricSource {
+    fn name(&self) -> &'static str {
+        "fabric-sim"
+    }
+
+    fn capture(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
+        let world =
+            crate::source::sim_world(&self.site, self.sky, at).map_err(SourceError::Other)?;
+        match self.scene.lock() {
+            Ok(mut s) => s.luminance_cd_m2 = Box::new(world),
+            Err(p) => p.into_inner().luminance_cd_m2 = Box::new(world),
+        }
+        self.inner.capture(at)
+    }
+}

@@ -1,0 +1,221 @@
+//! The fabric source on the cycle-accurate core (`skylux_sim::core_rig`: the whole fabric,
+//! an MT9P031 model imaging the simulated sky through the declared camera, SDRAM models with
+//! random back-pressure), driven through the same `FabricSource` as the board:
+//!
+//! - the frames it returns are the samples the sensor model put on its pins, bit for bit, and
+//!   the exposure times it records are the sensor model's own exposure formula;
+//! - `PollWait` ends with a timeout when the sensor is silent (held in reset);
+//! - `skyluxd --sim` with `[sim] source = "fabric"` runs a cycle end to end, and its HDR map
+//!   equals the offline merge (`hdr::map_capture`) of the frames it kept.
+//!
+//! The rust-hdl simulation runs 10^3 to 10^4 clocks a second here (1.3k measured on the shared
+//! machine), so the window is 16 x 12 output pixels (skip 8) and the exposures a few rows, and
+//! the two simulations of a whole capture are `#[ignore]`d (run them with `--ignored`). Native only: under qemu-arm the same
+//! simulation is an order of magnitude slower, and the ARM build runs the driver code through
+//! tests/tests/hps_driver_backends.rs.
+
+#![cfg(not(target_arch = "arm"))]
+
+mod common;
+
+use common::*;
+use skylux_hps::fpga::Fabric;
+use skylux_sim::core_rig::{sim_core, CoreRigConfig};
+use skylux_sim::mt9p031::timing::exposure_pixclk;
+use skylux_sim::mt9p031::{FrameGeometry, Mt9p031, RampSource, ShutterOverhead};
+use skyluxd::config::{Config, Overrides};
+use skyluxd::fabric_source::sim_fabric_source;
+use skyluxd::source::CaptureSource;
+use skyluxd::wait::{FrameWait, PollWait, WaitError};
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+/// The example configuration on the fabric: a 128 x 96 array window around the lens axis
+/// read with skip 8 (16 x 12 samples), two exposures of 30 and 100 rows at the
+/// highest analog gain (7.875), so that the sky near the horizon lands in the valid range.
+fn fabric_config(dir: &std::path::Path) -> std::path::PathBuf {
+    config_with(
+        dir,
+        &[
+            (
+                "exposures_us = [1.0, 26.59, 707.1, 18803.0, 500000.0]",
+                "exposures_us = [300.0, 1000.0]",
+            ),
+            ("source = \"sim\"", "source = \"fabric\""),
+            ("gain = 1.0", "gain = 7.875"),
+            ("row_start = 54 ", "row_start = 924 "),
+            ("col_start = 16 ", "col_start = 1232 "),
+            ("width = 2592 ", "width = 128 "),
+            ("height = 1944\n", "height = 96\n"),
+            ("skip = 1 ", "skip = 8 "),
+            ("frame_timeout_s = 2.0 ", "frame_timeout_s = 120.0 "),
+        ],
+        "",
+    )
+}
+
+/// ~1 min of simulation on an idle machine, several on a loaded one: `--ignored`.
+#[test]
+#[ignore = "slow cycle-accurate simulation: run with --ignored"]
+fn fabric_frames_are_the_sensor_samples_and_exposures_the_sensor_formula() {
+    let tmp = tempfile::tempdir().unwrap();
+    let path = fabric_config(tmp.path());
+    let config = Config::load(&path, &Overrides::default()).unwrap();
+    let (device, _) = skylux_hps::camera::DeviceConfig::read(&config.camera.device).unwrap();
+    let stop = Arc::new(AtomicBool::new(false));
+    let mut source = sim_fabric_source(&config, &device, stop).unwrap();
+    let at = chrono::DateTime::parse_from_rfc3339("2017-05-08T12:00:00+02:00").unwrap();
+    let began = Instant::now();
+    let set = source.capture(at).unwrap();
+    let clocks = source.rig.lock().unwrap().sys_cycles();
+    eprintln!(
+        "one 2-exposure capture: {clocks} simulated clocks in {:.1} s",
+        began.elapsed().as_secs_f64()
+    );
+    assert_eq!(set.frames.len(), 2);
+    assert!(
+        set.frame_flags.iter().all(Vec::is_empty),
+        "{:?}",
+        set.frame_flags
+    );
+    let rig = source.rig.lock().unwrap();
+    assert_eq!(rig.log.frames.len(), 2, "one sensor frame per exposure");
+    for (k, (got, sent)) in set.frames.iter().zip(&rig.log.frames).enumerate() {
+        assert_eq!((got.width, got.height), (16, 12), "frame {k}");
+        assert_eq!(
+            got, sent,
+            "frame {k}: DMA payload differs from the sensor's samples"
+        );
+    }
+    // Brighter with a longer exposure (the sky is not saturated at 100 rows).
+    let mean = |f: &skylux_hps::campaign::RawFrame| {
+        f.samples_dn.iter().map(|&v| f64::from(v)).sum::<f64>() / f.samples_dn.len() as f64
+    };
+    assert!(mean(&set.frames[1]) > mean(&set.frames[0]));
+    // The exposure times recorded are the sensor model's formula (variant A) for the shutter
+    // widths the sequencer wrote, at 96 MHz.
+    let geometry = FrameGeometry::from_registers(&rig.sensor.registers);
+    assert_eq!((geometry.width, geometry.height), (16, 12));
+    for (k, (slot, e)) in source
+        .inner
+        .plan()
+        .slots
+        .iter()
+        .zip(&set.config.exposure)
+        .enumerate()
+    {
+        let model = exposure_pixclk(
+            &geometry,
+            slot.shutter_width_rows,
+            0,
+            ShutterOverhead::VariantA,
+        ) as f64
+            / 96e6
+            * 1e6;
+        assert!(
+            (e.exposure_us - model).abs() < 1e-9,
+            "exposure {k}: {} µs recorded, {model} µs by the model",
+            e.exposure_us
+        );
+    }
+    assert_eq!(set.config.readout.skip, 8);
+}
+
+#[test]
+fn poll_wait_times_out_when_the_sensor_is_silent() {
+    // The rig has no "silent sensor" switch: a sensor held in reset sends nothing.
+    let sensor = Mt9p031::new(Box::new(RampSource), 96e6);
+    let capture = skylux_hps::fpga::CaptureConfig::fitted(16, 8, 0x3000_0000, 1);
+    let (shared, regs, _memory, _raybox) = sim_core(
+        sensor,
+        CoreRigConfig::new(capture.window_size_bytes as usize + 4096, 4096, 0.0),
+    );
+    let mut fabric = Fabric::bring_up(regs).unwrap();
+    fabric.capture_configure(&capture).unwrap();
+    let start = fabric.frames_written().unwrap();
+    let mut wait = PollWait {
+        max_polls: 2_000,
+        pause: Duration::ZERO,
+    };
+    let stop = AtomicBool::new(false);
+    let began = Instant::now();
+    match wait.wait_frames(&mut fabric, start, 1, Duration::from_secs(60), &stop) {
+        Err(WaitError::Timeout {
+            received: 0,
+            expected: 1,
+            ..
+        }) => {}
+        other => panic!("{other:?}"),
+    }
+    assert!(began.elapsed() < Duration::from_secs(30));
+    let rig = shared.lock().unwrap();
+    assert!(rig.log.frames.is_empty() && !rig.log.reset_released);
+    // The bound is what ended it: 2000 polls of a few simulated clocks each.
+    assert!(rig.sys_cycles() >= 2_000, "{}", rig.sys_cycles());
+}
+
+/// ~1 min of simulation plus the daylight coefficients: `--ignored`.
+#[test]
+#[ignore = "slow cycle-accurate simulation: run with --ignored"]
+fn skyluxd_runs_a_cycle_on_the_simulated_fabric_and_its_map_is_the_offline_merge() {
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("out");
+    let log = tmp.path().join("stderr.log");
+    let config = fabric_config(tmp.path());
+    let mut child = start(
+        &SimRun::new(&config, &out)
+            .cycles(1)
+            .clock("2017-05-08T12:00:00+02:00", 3600)
+            .args(),
+        &log,
+    );
+    let status = wait(&mut child, Duration::from_secs(900));
+    let text = std::fs::read_to_string(&log).unwrap();
+    assert_eq!(status.code(), Some(0), "{text}");
+    let lines = complete_lines(&out.join("results.jsonl"));
+    assert_eq!(lines.len(), 1, "{text}");
+    let r: serde_json::Value = serde_json::from_str(&lines[0]).unwrap();
+    assert_eq!(r["source"], "fabric-sim");
+    assert_eq!(r["time"], "2017-05-08T12:00:00+02:00");
+    let lux: Vec<f64> = r["illuminance"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["lux"].as_f64().unwrap())
+        .collect();
+    assert_eq!(lux.len(), 5);
+    assert!(lux.iter().all(|l| l.is_finite() && *l >= 0.0), "{lux:?}");
+    assert!(r["durations_ms"]["capture_ms"].as_f64().unwrap() > 0.0);
+
+    // The kept capture, merged offline, is the daemon's map.
+    let capture_dir = out.join(r["capture"].as_str().unwrap());
+    let (device, _) = skylux_hps::camera::DeviceConfig::read(
+        &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("device.toml"),
+    )
+    .unwrap();
+    let offline = skylux_hps::hdr::map_capture(&capture_dir, &device).unwrap();
+    let (daemon_map, _, _) =
+        skylux_hps::hdr::read_exr(&out.join(r["map"].as_str().unwrap())).unwrap();
+    let a = &offline.map.luminance_cd_m2;
+    let b = &daemon_map.luminance_cd_m2;
+    assert_eq!(a.len(), b.len());
+    assert_eq!(a.len(), 8 * 6);
+    let mut compared = 0;
+    for (i, (x, y)) in a.iter().zip(b).enumerate() {
+        if x.is_finite() && *x > 0.0 {
+            // The EXR stores f32.
+            assert!(
+                (f64::from(*y) / f64::from(*x) - 1.0).abs() < 1e-6,
+                "group {i}: {y} vs {x}"
+            );
+            compared += 1;
+        }
+    }
+    assert_eq!(offline.map.flags, daemon_map.flags);
+    assert!(
+        compared >= 4,
+        "{compared} groups compared, flags {:?}",
+        offline.map.flags
+    );
+}

@@ -1,0 +1,3 @@
+//! Helpers shared by the integration tests of this folder.
+
+pub mod loop_harness;
