@@ -9,8 +9,10 @@ fn skylux(args: &[&str]) -> Output {
         .expect("running the skylux binary")
 }
 
-/// A uniform sky of radiance 1 W/(sr m²) over a horizontal sensor: E = π W/m², 179 π lux
-/// (every cosine-weighted sample gives exactly π, so the standard error is 0).
+/// A uniform sky of radiance 1 W/(sr m²) over a horizontal sensor: E = π W/m², 179 π lux.
+/// (The sky's importance sampling, combined with the cosine continuation, makes single
+/// samples vary even here, so the check is statistical: within 4 standard errors, and the
+/// standard error itself small.)
 #[test]
 fn uniform_sky_csv() {
     let dir = tempfile::tempdir().unwrap();
@@ -48,8 +50,13 @@ fn uniform_sky_csv() {
         let f: Vec<&str> = line.split(',').collect();
         assert_eq!(f[0], name);
         let lux: f64 = f[1].parse().unwrap();
-        assert!((lux - 179.0 * std::f64::consts::PI).abs() < 1e-3, "{line}");
-        assert_eq!(f[2], "0.000");
+        let stderr_lux: f64 = f[2].parse().unwrap();
+        let truth = 179.0 * std::f64::consts::PI;
+        assert!(
+            stderr_lux > 0.0 && stderr_lux < 0.05 * truth,
+            "{line}: standard error"
+        );
+        assert!((lux - truth).abs() < 4.0 * stderr_lux, "{line}");
     }
 }
 
