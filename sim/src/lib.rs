@@ -10,6 +10,7 @@ pub mod campaign;
 pub mod capture;
 pub mod capture_path;
 pub mod core_rig;
+pub mod dc_case;
 pub mod hdr_case;
 pub mod mt9p031;
 pub mod pixel_bus;

@@ -3,7 +3,7 @@
 
 use anyhow::Context;
 use clap::Args;
-use skylux_hps::engine::{self, DaylightCoefficients, Settings, World};
+use skylux_hps::engine::{self, Settings, World};
 use skylux_hps::scene;
 use std::path::PathBuf;
 
@@ -65,27 +65,15 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
 /// `skylux bench dc --json`: one daylight-coefficient update (matrix times patch
 /// luminances) for 400 sensors, on one core and all cores.
 pub fn bench(json: bool, repeat: usize) -> anyhow::Result<()> {
-    let sensors = 400;
-    let mf = 4;
-    let patches = skylux_hps::sky::SkyPatches::reinhart(mf).len();
-    let bins = 2 * patches;
-    // A synthetic matrix of the right shape: the timing does not depend on the values.
-    let dc = DaylightCoefficients {
-        sensors: (1..=sensors).map(|i| format!("S{i}")).collect(),
-        mf,
-        bins,
-        lux_per_cd_m2: (0..sensors * bins)
-            .map(|i| 1e-4 * ((i % 97) as f64))
-            .collect(),
-        samples_per_sensor: 0,
-    };
-    let lum: Vec<f64> = (0..bins).map(|i| 1000.0 + (i % 13) as f64).collect();
+    let case = skylux_sim::dc_case::DcCase::new();
+    let (dc, lum) = (&case.dc, &case.luminance_cd_m2);
+    let (sensors, patches, bins) = (dc.sensors.len(), case.sky_patches, dc.bins);
     let mut out = vec![0.0; sensors];
     let time = |pool: &rayon::ThreadPool, out: &mut Vec<f64>| -> anyhow::Result<f64> {
         let mut times = Vec::new();
         for _ in 0..repeat {
             let t = std::time::Instant::now();
-            pool.install(|| dc.apply_into(&lum, out))?;
+            pool.install(|| dc.apply_into(lum, out))?;
             times.push(t.elapsed().as_secs_f64() * 1e3);
         }
         times.sort_by(f64::total_cmp);
@@ -100,13 +88,7 @@ pub fn bench(json: bool, repeat: usize) -> anyhow::Result<()> {
         let mut times = Vec::new();
         for _ in 0..repeat {
             let t = std::time::Instant::now();
-            for (s, o) in out.iter_mut().enumerate() {
-                *o = dc.row(s)[..patches]
-                    .iter()
-                    .zip(&lum)
-                    .map(|(c, l)| c * l)
-                    .sum();
-            }
+            case.sky_only_update(&mut out);
             times.push(t.elapsed().as_secs_f64() * 1e3);
         }
         times.sort_by(f64::total_cmp);

@@ -21,7 +21,6 @@
 
 use skylux_bus::{BusError, DmaMemory};
 use skylux_hps::campaign::BayerPattern;
-use skylux_hps::engine::DaylightCoefficients;
 use skylux_hps::fpga::frames::RingLayout;
 use skylux_hps::fpga::sensor::SensorConfig;
 use skylux_hps::hdr::merge;
@@ -182,33 +181,14 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
     });
 
     // Daylight-coefficient update, 400 sensors, MF4.
-    let sensors = 400;
-    let mf = 4;
-    let patches = skylux_hps::sky::SkyPatches::reinhart(mf).len();
-    let bins = 2 * patches;
-    let dc = DaylightCoefficients {
-        sensors: (1..=sensors).map(|i| format!("S{i}")).collect(),
-        mf,
-        bins,
-        lux_per_cd_m2: (0..sensors * bins)
-            .map(|i| 1e-4 * ((i % 97) as f64))
-            .collect(),
-        samples_per_sensor: 0,
-    };
-    let lum: Vec<f64> = (0..bins).map(|i| 1000.0 + (i % 13) as f64).collect();
+    let case = skylux_sim::dc_case::DcCase::new();
+    let (dc, lum) = (&case.dc, &case.luminance_cd_m2);
+    let (sensors, patches) = (dc.sensors.len(), case.sky_patches);
     let mut out = vec![0.0; sensors];
     let dc_ms = median_ms(repeat.max(11), || {
-        let _ = one.install(|| dc.apply_into(&lum, &mut out));
+        let _ = one.install(|| dc.apply_into(lum, &mut out));
     });
-    let dc_sky_ms = median_ms(repeat.max(11), || {
-        for (s, o) in out.iter_mut().enumerate() {
-            *o = dc.row(s)[..patches]
-                .iter()
-                .zip(&lum)
-                .map(|(c, l)| c * l)
-                .sum();
-        }
-    });
+    let dc_sky_ms = median_ms(repeat.max(11), || case.sky_only_update(&mut out));
 
     let measured = hps_read_ms + hdr_ms + sun_ms + dc_ms;
     let result = serde_json::json!({

@@ -106,7 +106,7 @@ impl Settings {
 }
 
 /// A direction uniformly distributed in the cone of a distant source (pdf 1/Ω).
-fn sample_cone(source: &DistantEmitter, rng: &mut Rng) -> DVec3 {
+pub(crate) fn sample_cone(source: &DistantEmitter, rng: &mut Rng) -> DVec3 {
     let cos_theta = 1.0 - rng.uniform() * (1.0 - source.cos_half_angle);
     let sin_theta = (1.0 - cos_theta * cos_theta).max(0.0).sqrt();
     let phi = 2.0 * PI * rng.uniform();

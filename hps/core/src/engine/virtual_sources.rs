@@ -15,28 +15,17 @@
 //! from the sun via a mirror reaches diffuse surfaces through the virtual source only. One
 //! reflection is followed (RADIANCE's default `-dr 2` also follows mirror-to-mirror).
 
-use super::material::{basis, glass_fractions, Material};
+use super::integrator::sample_cone;
+use super::material::{glass_fractions, Material};
 use super::ray::Ray;
 use super::rng::Rng;
 use super::shapes::Primitive;
-use super::sky::{DistantEmitter, DistantKind};
+use super::sky::DistantKind;
 use super::world::World;
 use glam::DVec3;
-use std::f64::consts::PI;
 
 /// Most surfaces a shadow ray passes through on its way to the mirror.
 const MAX_CROSSINGS: usize = 64;
-
-/// A direction uniformly distributed in the cone of a distant source (pdf 1/Ω), as the
-/// integrator samples the sun.
-fn sample_cone(source: &DistantEmitter, rng: &mut Rng) -> DVec3 {
-    let cos_theta = 1.0 - rng.uniform() * (1.0 - source.cos_half_angle);
-    let sin_theta = (1.0 - cos_theta * cos_theta).max(0.0).sqrt();
-    let phi = 2.0 * PI * rng.uniform();
-    let (u, v) = basis(source.direction);
-    (u * (sin_theta * phi.cos()) + v * (sin_theta * phi.sin()) + source.direction * cos_theta)
-        .normalize()
-}
 
 /// The primitives that make virtual sources: polygons with a `mirror` material.
 pub fn mirror_polygons(world: &World) -> impl Iterator<Item = (u32, DVec3, DVec3)> + '_ {
