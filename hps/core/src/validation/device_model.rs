@@ -57,6 +57,16 @@ pub struct CaptureTerms {
     pub unseen_sky_fraction: f64,
     /// Fraction of valid groups over-range.
     pub saturated_fraction: f64,
+    /// Per bin (sky patches, then mirrored ground patches: the daylight coefficients'
+    /// order), the map's luminance with the sun left in, cd/m²: unseen sky patches filled as
+    /// [`SkyPatches::aggregate`] fills them, unseen ground NaN. What effects acting on the
+    /// measured sky itself (vignetting, the field of view, the glazing's angular
+    /// transmittance) rescale before the daylight coefficients apply.
+    pub bins_with_sun_cd_m2: Vec<f64>,
+    /// The same with the sun disk removed and filled from the circumsolar sky.
+    pub bins_without_sun_cd_m2: Vec<f64>,
+    /// Per bin, whether the lens saw at least `MIN_COVERAGE` of it.
+    pub bin_seen: Vec<bool>,
 }
 
 /// The room: its engine world (without sky) and daylight coefficients.
@@ -382,6 +392,9 @@ pub fn capture_terms(
                 0.0
             },
             sun,
+            bins_with_sun_cd_m2: with_sun,
+            bins_without_sun_cd_m2: without_sun,
+            bin_seen: seen,
         });
     }
     Ok(out)
