@@ -554,15 +554,15 @@ pub fn fit_effect(
 
 /// The shutter overhead's signature in the fit set under `state`: the mean signed relative
 /// residual of the readings where the modelled direct sun exceeds 5 % of the measured light
-/// (the sunlit readings of `sun_undersampling`'s signature),
-/// the mean |relative residual| of the others, and the count of each. An overhead
-/// over-estimates what the short exposures measure, the sun first: a positive bias where
-/// the sun lights the sensor.
+/// (the sunlit readings of `sun_undersampling`'s signature), the mean signed and the mean
+/// |relative residual| of the others, and the count of each. An overhead over-estimates
+/// what the short exposures measure, the sun first: a positive bias where the sun lights the
+/// sensor, over and above the others' (a common factor biases both alike).
 pub fn sunlit_bias(
     state: &ModelState,
     terms: &[CaptureTerms],
     fit: &FitSet<Sample>,
-) -> (f64, f64, usize, usize) {
+) -> (f64, f64, f64, usize, usize) {
     let (mut lit, mut shade) = (Vec::new(), Vec::new());
     for (t, k, m) in readings(state, terms, fit) {
         let p = predict(state, t)[k];
@@ -570,7 +570,7 @@ pub fn sunlit_bias(
         if p > 0.0 && direct > 0.05 * m {
             lit.push(p / m - 1.0);
         } else {
-            shade.push((p / m - 1.0).abs());
+            shade.push(p / m - 1.0);
         }
     }
     let mean = |v: &[f64]| {
@@ -580,5 +580,12 @@ pub fn sunlit_bias(
             v.iter().sum::<f64>() / v.len() as f64
         }
     };
-    (mean(&lit), mean(&shade), lit.len(), shade.len())
+    let shade_abs: Vec<f64> = shade.iter().map(|r| r.abs()).collect();
+    (
+        mean(&lit),
+        mean(&shade),
+        mean(&shade_abs),
+        lit.len(),
+        shade.len(),
+    )
 }

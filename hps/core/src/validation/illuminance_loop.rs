@@ -363,11 +363,21 @@ fn fit_shutter_candidate(
     if !state.concentrated_sun {
         return Ok(None);
     }
-    let (lit_bias, shade_error, lit_n, shade_n) = sunlit_bias(state, terms, fit);
+    let (lit_bias, shade_bias, shade_error, lit_n, shade_n) = sunlit_bias(state, terms, fit);
     if std::env::var_os("SKYLUX_DEBUG_LOOP").is_some() {
-        eprintln!("shutter signature: lit {lit_bias} ({lit_n}), shade {shade_error} ({shade_n})");
+        eprintln!(
+            "shutter signature: lit {lit_bias} ({lit_n}), shade {shade_bias} |{shade_error}| ({shade_n})"
+        );
     }
-    if lit_n < 2 || !lit_bias.is_finite() || lit_bias < 0.03 || lit_bias < shade_error {
+    // The sunlit readings' bias over and above the others': a common factor (dirty glazing)
+    // biases both alike and is no overhead's signature.
+    let shade_bias = if shade_bias.is_finite() {
+        shade_bias
+    } else {
+        0.0
+    };
+    let excess = lit_bias - shade_bias;
+    if lit_n < 2 || !excess.is_finite() || excess < 0.03 || excess < shade_error {
         return Ok(None);
     }
     let mut evaluate = |t0: f64| -> Result<(f64, Vec<CaptureData>, Vec<CaptureTerms>), LoopError> {
@@ -418,9 +428,10 @@ fn fit_shutter_candidate(
     parameters.insert("overhead_us".into(), t0);
     let evidence = format!(
         "readings lit by the sun are over-predicted by {:+.1} % on average ({lit_n} readings) \
-         against a mean error of {:.1} % elsewhere ({shade_n}): the short exposures that \
-         measure the sun integrate longer than declared",
+         against {:+.1} % (mean |error| {:.1} %) elsewhere ({shade_n}): the short exposures \
+         that measure the sun integrate longer than declared",
         100.0 * lit_bias,
+        100.0 * shade_bias,
         100.0 * shade_error
     );
     Ok(Some((
