@@ -165,3 +165,51 @@ fn mirror_light_is_counted_once_with_interreflection() {
         "ours {lux} vs rtrace {r}"
     );
 }
+
+/// A mirror's back is black, as RADIANCE's `m_mirror` makes it (m_mirror.c: `r->rod < 0`
+/// returns no light). A sensor facing up under a 200 m square mirror 1 m above it, a glow
+/// of radiance 1 below the horizon and another above: with the mirror's front facing down,
+/// the sensor sees the lower glow in it, E = ρ π L × 179 lm/W (less the 1e-4 of its
+/// cosine-weighted view that passes beside the mirror); with the front facing up, it sees
+/// the mirror's back, black, and the sky beside it: E ≈ 1e-4 π L × 179.
+#[test]
+fn a_mirror_seen_from_behind_is_black() {
+    let lux = |front_down: bool| {
+        let dir = tempfile::tempdir().unwrap();
+        let square = if front_down {
+            "-100 -100 1 -100 100 1 100 100 1 100 -100 1"
+        } else {
+            "-100 -100 1 100 -100 1 100 100 1 -100 100 1"
+        };
+        let text = format!(
+            "void mirror silver 0 0 3 {r} {r} {r}\n\
+             void glow bright 0 0 4 1 1 1 0\n\
+             bright source sky 0 0 4 0 0 1 180\n\
+             bright source ground 0 0 4 0 0 -1 180\n\
+             silver polygon mirror 0 0 12 {square}\n",
+            r = MIRROR_REFLECTANCE,
+        );
+        let rad = dir.path().join("m.rad");
+        std::fs::write(&rad, text).unwrap();
+        let pts = dir.path().join("s.pts");
+        std::fs::write(&pts, "0 0 0 0 0 1\n").unwrap();
+        let world = World::new(&scene::load_files(&[&rad]).unwrap()).unwrap();
+        let sensors = scene::load_sensors(&pts).unwrap();
+        let settings = Settings {
+            ambient_bounces: 2,
+            samples_per_sensor: 4096,
+            seed: 5,
+            ..Settings::default()
+        };
+        engine::illuminance(&world, &sensors, &settings, &|_, _| {}).unwrap()[0].illuminance_lux
+    };
+    let unit = std::f64::consts::PI * engine::WHITE_EFFICACY_LM_PER_W;
+    let (front, back) = (lux(true), lux(false));
+    println!("front {front:.2} lux, back {back:.4} lux, π L 179 = {unit:.1} lux");
+    assert!(
+        (front / (MIRROR_REFLECTANCE * unit) - 1.0).abs() < 0.01,
+        "front: {front} lux against {}",
+        MIRROR_REFLECTANCE * unit
+    );
+    assert!(back < 1e-3 * unit, "back: {back} lux, should be black");
+}

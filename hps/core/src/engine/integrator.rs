@@ -544,6 +544,10 @@ fn trace(
                 return radiance;
             }
             Material::Mirror { reflectance_rgb } => {
+                // The back is black (RADIANCE m_mirror.c: `r->rod < 0` returns no light).
+                if d.dot(hit.normal) > 0.0 {
+                    return radiance;
+                }
                 specular_events += 1;
                 if specular_events > settings.max_specular_events {
                     return radiance;
