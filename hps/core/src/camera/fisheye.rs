@@ -68,8 +68,14 @@ impl KannalaBrandt {
         }
         let (mut lo, mut hi) = (0.0, max);
         let mut theta = (radius_px / self.focal_px).min(max);
+        // An exact hit returns at once, the bracket is closed and convergence is relative:
+        // with an open bracket and an absolute 1e-15, an exact Newton step (every step of an
+        // equidistant lens) fell back to bisection and took some 50 iterations.
         for _ in 0..100 {
             let err = self.radius_px(theta) - radius_px;
+            if err == 0.0 {
+                return Some(theta);
+            }
             if err > 0.0 {
                 hi = theta;
             } else {
@@ -77,10 +83,10 @@ impl KannalaBrandt {
             }
             let step = err / self.radius_derivative_px(theta);
             let mut next = theta - step;
-            if !(next > lo && next < hi) {
+            if !(next >= lo && next <= hi) {
                 next = 0.5 * (lo + hi); // bisect when Newton leaves the bracket
             }
-            if (next - theta).abs() < 1e-15 {
+            if (next - theta).abs() <= 4.0 * f64::EPSILON * next.abs() {
                 return Some(next);
             }
             theta = next;
