@@ -69,6 +69,11 @@ pub struct WorldEffects {
     /// MT9P031's electronic shutter adds a fixed fraction of a row time; datasheet
     /// "Exposure" section). Biases the shortest exposures, which measure the sun.
     pub shutter_overhead_us: f64,
+    /// Spectral mismatch with the sky's colour: the clear sky's colour temperature far from
+    /// the sun, K (0: a spectrally grey world). The frames are rendered with the sky's real
+    /// colour through measured camera sensitivities (`crate::sky_colour`) while `device.toml`
+    /// keeps the weights calibrated under D65.
+    pub spectral_clear_sky_cct_k: f64,
 }
 
 impl Default for WorldEffects {
@@ -80,6 +85,7 @@ impl Default for WorldEffects {
             orientation_azimuth_deg: 0.0,
             clock_offset_s: 0.0,
             shutter_overhead_us: 0.0,
+            spectral_clear_sky_cct_k: 0.0,
         }
     }
 }
@@ -129,6 +135,13 @@ impl WorldEffects {
                 check((0.0..=100.0).contains(&v), "in [0, 100] µs")?;
                 self.shutter_overhead_us = v;
             }
+            "spectral_mismatch" | "spectral_clear_sky_cct_k" => {
+                check(
+                    v == 0.0 || (4000.0..=25_000.0).contains(&v),
+                    "0 (off) or a clear-sky colour temperature in [4000, 25000] K",
+                )?;
+                self.spectral_clear_sky_cct_k = v;
+            }
             other => {
                 return Err(format!(
                     "unknown effect `{other}`: expected {}",
@@ -141,13 +154,14 @@ impl WorldEffects {
 }
 
 /// The names `--effect NAME=VALUE` accepts.
-pub const EFFECT_NAMES: [&str; 6] = [
+pub const EFFECT_NAMES: [&str; 7] = [
     "glazing_transmittance",
     "light_leak",
     "ground_reflectance",
     "orientation_error",
     "clock_offset",
     "shutter_overhead",
+    "spectral_mismatch",
 ];
 
 /// When the lux-meter logger records: every `cadence_s` seconds within `half_window_s` of
@@ -242,6 +256,8 @@ pub struct CampaignSpec {
     /// Paths per sensor of the engine run that gives the true illuminance.
     pub truth_samples: u32,
     pub seed: u64,
+    /// The shared data folder (`spectral/` within), for the spectral-mismatch effect.
+    pub spectral_data_dir: Option<PathBuf>,
 }
 
 impl CampaignSpec {
@@ -249,6 +265,12 @@ impl CampaignSpec {
     /// day in May, captures every hour from 8:00 to 18:00, the camera facing south through
     /// the façade as declared in the spec's example `device.toml`.
     pub fn lausanne(room_dir: PathBuf) -> Self {
+        // `$SKYLUX_DATA_DIR`, else the shared data beside the shared scenes.
+        let spectral_data_dir =
+            skylux_hps::photometry::spectral::data_dir_from_env().or_else(|| {
+                let d = room_dir.join("../../data");
+                d.join("spectral").is_dir().then_some(d)
+            });
         Self {
             name: "lausanne-simulated".into(),
             site: Site {
@@ -277,6 +299,7 @@ impl CampaignSpec {
             luxmeter_noise: 0.01,
             truth_samples: 4096,
             seed: 2017,
+            spectral_data_dir,
         }
     }
 }
@@ -409,6 +432,19 @@ pub fn simulate_campaign(
         elevation_m: spec.site.elevation_m,
     };
 
+    let responses = if spec.effects.spectral_clear_sky_cct_k > 0.0 {
+        let dir = spec.spectral_data_dir.as_deref().ok_or_else(|| {
+            SimCampaignError::Invalid(
+                "spectral_mismatch needs the shared spectral data: set SKYLUX_DATA_DIR".into(),
+            )
+        })?;
+        Some(
+            crate::sky_colour::DaylightResponses::load(dir)
+                .map_err(|e| SimCampaignError::Invalid(e.to_string()))?,
+        )
+    } else {
+        None
+    };
     let mut truth = Vec::new();
     let mut readings = Vec::new();
     let mut pyranometer = Vec::new();
@@ -513,26 +549,47 @@ pub fn simulate_campaign(
             // Frames, through the true camera.
             let stamp = time.format("%Y-%m-%dT%H%M").to_string();
             let capture_dir = out.join("captures").join(&stamp);
-            simulate_capture_with_overhead(
-                &capture_dir,
-                &true_camera,
-                &field,
-                &CaptureSpec {
-                    time: time.to_rfc3339(),
-                    readout: Readout {
-                        col_start: 0,
-                        row_start: 0,
-                        skip: spec.skip,
-                    },
-                    raw_width,
-                    raw_height,
-                    exposures_us: spec.exposures_us.clone(),
-                    gain: 1.0,
-                    seed,
-                    footprint: crate::sensor::Footprint::Integrated,
+            let capture_spec = CaptureSpec {
+                time: time.to_rfc3339(),
+                readout: Readout {
+                    col_start: 0,
+                    row_start: 0,
+                    skip: spec.skip,
                 },
-                spec.effects.shutter_overhead_us,
-            )?;
+                raw_width,
+                raw_height,
+                exposures_us: spec.exposures_us.clone(),
+                gain: 1.0,
+                seed,
+                footprint: crate::sensor::Footprint::Integrated,
+            };
+            match &responses {
+                None => simulate_capture_with_overhead(
+                    &capture_dir,
+                    &true_camera,
+                    &field,
+                    &capture_spec,
+                    spec.effects.shutter_overhead_us,
+                )?,
+                Some(responses) => {
+                    let colour = crate::sky_colour::SkyColour {
+                        clear_sky_cct_k: (kind != DaySky::Overcast)
+                            .then_some(spec.effects.spectral_clear_sky_cct_k),
+                        sun_direction: sun_dir,
+                        sun_cos_half,
+                        sun_visible: sun_cd_m2 > 0.0,
+                    };
+                    crate::sky_colour::simulate_capture_coloured(
+                        &capture_dir,
+                        &true_camera,
+                        &field,
+                        &colour,
+                        responses,
+                        &capture_spec,
+                        spec.effects.shutter_overhead_us,
+                    )?;
+                }
+            }
             // The room, by direct path tracing of the continuous sky and a light sun.
             let settings = Settings {
                 ambient_bounces: 5,

@@ -17,5 +17,6 @@ pub mod pixel_bus;
 pub mod raybox;
 pub mod sensor;
 pub mod sky;
+pub mod sky_colour;
 
 pub use bus::{AvalonHost, RegisterFileModel, SimRegisterBus};

@@ -27,7 +27,11 @@ pub struct SimCampaignArgs {
     /// 1.5), light_leak (lux per outdoor lux, 0 to 0.2), ground_reflectance (0 to 1),
     /// orientation_error (axis azimuth, degrees, ±10), clock_offset (lux-meter logger minus
     /// device clock, seconds, ±300; visible only when the light changes within minutes: use
-    /// --sky partly), shutter_overhead (µs added to every declared exposure, 0 to 100).
+    /// --sky partly), shutter_overhead (µs added to every declared exposure, 0 to 100),
+    /// spectral_mismatch (the clear sky's colour temperature far from the sun, K, 4000 to
+    /// 25000: frames rendered with the sky's real colour through measured camera
+    /// sensitivities, device.toml calibrated under D65; needs the shared data folder,
+    /// $SKYLUX_DATA_DIR or shared/data beside the room).
     #[arg(long = "effect")]
     pub effects: Vec<String>,
     /// The sky of every day (default: one clear and one overcast day). `partly`: broken

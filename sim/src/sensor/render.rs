@@ -237,11 +237,50 @@ impl FrameRenderer<'_> {
         pattern: BayerPattern,
     ) -> RawFrame {
         let mean = self.mean_signal_dn(scene, exposure_s, gain);
+        let gw = self.raw_width / 2;
+        self.render_samples(gain, noise, &|x, y| {
+            mean[(y / 2) * gw + x / 2] * response.sample_gain(pattern, x, y)
+        })
+    }
+
+    /// A 12-bit raw frame of a scene whose every channel has its own scene (R, G, B: the
+    /// luminance times the channel's response, as [`Self::scene`] computes them): the sky's
+    /// colour changes from direction to direction (`pattern`: the colours of the frame's first
+    /// 2x2 block).
+    pub fn render_scene_channels(
+        &self,
+        scenes: &[Vec<f64>; 3],
+        exposure_s: f64,
+        gain: f64,
+        noise: Noise,
+        pattern: BayerPattern,
+    ) -> RawFrame {
+        let means = scenes
+            .each_ref()
+            .map(|scene| self.mean_signal_dn(scene, exposure_s, gain));
+        let gw = self.raw_width / 2;
+        self.render_samples(gain, noise, &|x, y| {
+            let c = match pattern.channel(x & 1, y & 1) {
+                skylux_hps::campaign::Channel::Red => 0,
+                skylux_hps::campaign::Channel::Green => 1,
+                skylux_hps::campaign::Channel::Blue => 2,
+            };
+            means[c][(y / 2) * gw + x / 2]
+        })
+    }
+
+    /// The frame from each sample's mean black-subtracted signal `mean_at(x, y)` (DN): shot
+    /// noise, read noise, black level, rounding and clipping.
+    fn render_samples(
+        &self,
+        gain: f64,
+        noise: Noise,
+        mean_at: &(dyn Fn(usize, usize) -> f64 + Sync),
+    ) -> RawFrame {
         let d = &self.camera.config;
         let black = d.sensor.black_level_dn;
         let k = d.noise.conversion_dn_per_e * gain;
         let read = Normal::new(0.0, d.noise.read_noise_dn.max(0.0)).expect("finite read noise");
-        let gw = self.raw_width / 2;
         let seed = match noise {
             Noise::Sensor { seed } => seed,
             Noise::None => 0,
@@ -255,8 +294,7 @@ impl FrameRenderer<'_> {
                 );
                 (0..self.raw_width)
                     .map(|x| {
-                        let m = (mean[(y / 2) * gw + x / 2] * response.sample_gain(pattern, x, y))
-                            .max(0.0);
+                        let m = mean_at(x, y).max(0.0);
                         let dn = match noise {
                             Noise::None => black + m,
                             Noise::Sensor { .. } => {

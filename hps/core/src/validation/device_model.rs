@@ -67,6 +67,9 @@ pub struct CaptureTerms {
     pub bins_without_sun_cd_m2: Vec<f64>,
     /// Per bin, whether the lens saw at least `MIN_COVERAGE` of it.
     pub bin_seen: Vec<bool>,
+    /// The sky's colour from the raw frames and the per-patch sky light, for the
+    /// spectral-mismatch effect (attached by the loop; `None` until then).
+    pub spectral: Option<super::effect_spectral::SpectralTerms>,
 }
 
 /// The room: its engine world (without sky) and daylight coefficients.
@@ -395,6 +398,7 @@ pub fn capture_terms(
             bins_with_sun_cd_m2: with_sun,
             bins_without_sun_cd_m2: without_sun,
             bin_seen: seen,
+            spectral: None,
         });
     }
     Ok(out)
@@ -417,6 +421,9 @@ pub struct ModelState {
     /// The lux-meter logger's clock minus the device's, seconds: readings are matched to a
     /// capture at this offset on the logger's clock.
     pub clock_offset_s: f64,
+    /// Spectral mismatch: measured / true luminance is `1 + m (c − 1)` at sky colour index
+    /// `c` (blue / red); this is `m` (0: no mismatch).
+    pub spectral_slope: f64,
 }
 
 impl Default for ModelState {
@@ -427,6 +434,7 @@ impl Default for ModelState {
             light_leak: 0.0,
             ground_reflectance: 0.2,
             clock_offset_s: 0.0,
+            spectral_slope: 0.0,
         }
     }
 }
@@ -442,6 +450,7 @@ pub fn parts(state: &ModelState, t: &CaptureTerms) -> Vec<(f64, f64, f64)> {
             } else {
                 t.sky_with_sun_lux[s]
             };
+            let room = super::effect_spectral::corrected_room(state, t, s, room);
             let ground = t.unseen_ground_lux_per_cd_m2[s] * t.outdoor_horizontal_lux / PI;
             (room, ground, t.outdoor_horizontal_lux)
         })

@@ -101,10 +101,12 @@ pub enum Effect {
     ClockOffset,
     /// The shutter integrates longer than declared by a fixed overhead.
     ShutterOverhead,
+    /// The camera's luminance depends on the sky's colour (spectral mismatch).
+    SpectralMismatch,
 }
 
 impl Effect {
-    pub const ALL: [Effect; 7] = [
+    pub const ALL: [Effect; 8] = [
         Effect::SunUndersampling,
         Effect::GlazingTransmittance,
         Effect::LightLeak,
@@ -112,6 +114,7 @@ impl Effect {
         Effect::OrientationError,
         Effect::ClockOffset,
         Effect::ShutterOverhead,
+        Effect::SpectralMismatch,
     ];
 
     /// The name in reports and in `skylux sim campaign --effect NAME=VALUE`.
@@ -124,6 +127,7 @@ impl Effect {
             Effect::OrientationError => "orientation_error",
             Effect::ClockOffset => "clock_offset",
             Effect::ShutterOverhead => "shutter_overhead",
+            Effect::SpectralMismatch => "spectral_mismatch",
         }
     }
 }
@@ -542,6 +546,9 @@ pub fn fit_effect(
             next = st;
             parameters.insert("logger_minus_device_s".into(), next.clock_offset_s);
             evidence = ev;
+        }
+        Effect::SpectralMismatch => {
+            return super::effect_spectral::fit_spectral(state, accepted, terms, fit);
         }
     }
     Some(Candidate {

@@ -121,13 +121,15 @@ pub struct Diagnostic {
     pub saturated_fraction: f64,
     /// Local clock time of the capture, hours.
     pub local_hour: f64,
+    /// The sky's colour index (blue / red from the raw frames; NaN if unreadable).
+    pub sky_colour_index: f64,
 }
 
 /// How an explanatory variable is read from a diagnostic.
 pub type Variable = fn(&Diagnostic) -> f64;
 
 /// The explanatory variables of the residual table, with how each is read.
-pub const RESIDUAL_VARIABLES: [(&str, Variable); 12] = [
+pub const RESIDUAL_VARIABLES: [(&str, Variable); 13] = [
     ("sun visible (0/1)", |d| d.sun_visible),
     ("sun altitude (deg)", |d| d.sun_altitude_deg),
     ("sun azimuth (deg)", |d| d.sun_azimuth_deg),
@@ -144,6 +146,7 @@ pub const RESIDUAL_VARIABLES: [(&str, Variable); 12] = [
     }),
     ("rate of change (rel./min)", |d| d.rate_of_change_per_min),
     ("sun offset from SPA (deg)", |d| d.sun_offset_deg),
+    ("sky colour index (blue/red)", |d| d.sky_colour_index),
 ];
 
 /// The residual table: per variable, over all readings and per sensor, the relative
@@ -559,6 +562,11 @@ pub fn run_loop(
     let (perez, reference_outdoor) =
         perez_predictions(campaign, &mut room, &captures, TimeDelta::minutes(5))?;
     use_reference_outdoor(&mut terms, &reference_outdoor);
+    // The sky's colour from the raw frames (a separate pass beside the monochrome merge).
+    progress("sky colour", 0, 1);
+    let colours =
+        super::effect_spectral::sky_colours(campaign, &declared, &captures, &room, &terms)?;
+    super::effect_spectral::attach(&room, &mut terms, &colours);
     let base_terms = terms.clone();
 
     // Samples: each capture with the readings at its time, and the logger's series around
@@ -629,6 +637,7 @@ pub fn run_loop(
         {
             let mut new_terms = capture_terms(&mut room, &captures, &dev, &|_, _| {})?;
             use_reference_outdoor(&mut new_terms, &reference_outdoor);
+            super::effect_spectral::attach(&room, &mut new_terms, &colours);
             let offset = |t: &[CaptureTerms]| {
                 holdout.evaluate(|s: &Sample| {
                     t[s.capture].sun.as_ref().map(|sun| {
@@ -716,7 +725,7 @@ pub fn run_loop(
         // signature (a positive bias where the sun lights the sensors) is in the residual.
         let mut shutter: Option<(Vec<CaptureData>, Vec<CaptureTerms>)> = None;
         if !accepted.contains(&Effect::ShutterOverhead) {
-            if let Some((c, err, caps, t)) = fit_shutter_candidate(
+            if let Some((c, err, caps, mut t)) = fit_shutter_candidate(
                 campaign,
                 &mut room,
                 &device,
@@ -725,6 +734,7 @@ pub fn run_loop(
                 &fit,
                 &reference_outdoor,
             )? {
+                super::effect_spectral::attach(&room, &mut t, &colours);
                 candidates.push((c, err));
                 shutter = Some((caps, t));
             }
@@ -802,6 +812,10 @@ pub fn run_loop(
                 "clock_offset" => {
                     e.parameters
                         .insert("logger_minus_device_s".into(), state.clock_offset_s);
+                }
+                "spectral_mismatch" => {
+                    e.parameters
+                        .insert("slope_per_index".into(), state.spectral_slope);
                 }
                 _ => {}
             }
@@ -939,6 +953,10 @@ pub fn run_loop(
                 local_hour: f64::from(c.time.hour())
                     + f64::from(c.time.minute()) / 60.0
                     + f64::from(c.time.second()) / 3600.0,
+                sky_colour_index: t
+                    .spectral
+                    .as_ref()
+                    .map_or(f64::NAN, |sp| sp.colour.sky_index),
             });
         }
     }

@@ -32,6 +32,9 @@ fn revealing_variable(effect: &str) -> Option<(&'static str, Reading)> {
             "rate of change of the logged illuminance (relative, per minute)",
             |d| d.rate_of_change_per_min,
         ),
+        "spectral_mismatch" => ("sky colour index (blue / red from the raw frames)", |d| {
+            d.sky_colour_index
+        }),
         _ => return None,
     })
 }

@@ -4,10 +4,12 @@
 
 pub mod closure;
 pub mod device_model;
+pub mod effect_spectral;
 pub mod effects;
 pub mod illuminance_loop;
 pub mod loop_figures;
 pub mod plot;
 pub mod pyranometer_effects;
 pub mod report;
+pub mod sky_colour;
 pub mod split;
