@@ -58,12 +58,17 @@ pub struct IlluminanceBenchArgs {
     /// Runs of the ambient-cache configuration (each its own process).
     #[arg(long, default_value_t = 2)]
     cache_runs: usize,
+    /// Only the faster rtrace layout (two processes) and the engine's main configurations.
+    #[arg(long)]
+    quick: bool,
 }
 
 /// rtrace's pure path tracing, the issue's settings (`-ad` added per run).
 const PURE_ARGS: &[&str] = &[
     "-h", "-I", "-u+", "-ab", "12", "-lr", "-16", "-aa", "0", "-as", "0", "-lw", "2e-5",
 ];
+/// Index of `-lw`'s value in [`PURE_ARGS`].
+const PURE_LW: usize = 12;
 /// The published ambient-cache settings.
 const CACHE_ARGS: &[&str] = &[
     "-h", "-I", "-u+", "-ab", "5", "-ad", "1024", "-as", "512", "-aa", "0.1", "-ar", "256",
@@ -374,14 +379,37 @@ struct Point {
     worst_rel_err: f64,
 }
 
-/// Time at which the RMS error reaches `target`: log-log interpolation between the two
-/// measured points that bracket it (the pair with the most time), else t^-1/2 extrapolation
-/// from the point whose error is nearest; and how it was found.
+/// Time at which the RMS error reaches `target`: a least-squares line in log-log (error
+/// against time) through the measured points with errors within a factor 2.5 of the target
+/// on either side (each point's RMS, from a few runs, is itself uncertain by ±10-15 %, so one
+/// pair alone could land on a lucky or unlucky point); else log-log interpolation between the
+/// two points that bracket it; else t^-1/2 extrapolation from the point whose error is
+/// nearest; and how it was found.
 fn time_to(points: &[Point], target: f64) -> Option<(f64, &'static str)> {
     let ok: Vec<&Point> = points
         .iter()
         .filter(|p| p.rms_rel_err > 0.0 && p.seconds > 0.0)
         .collect();
+    let near: Vec<(f64, f64)> = ok
+        .iter()
+        .filter(|p| (p.rms_rel_err / target).ln().abs() <= 2.5f64.ln())
+        .map(|p| (p.seconds.ln(), p.rms_rel_err.ln()))
+        .collect();
+    let brackets =
+        near.iter().any(|p| p.1 >= target.ln()) && near.iter().any(|p| p.1 <= target.ln());
+    if near.len() >= 2 && brackets {
+        let n = near.len() as f64;
+        let (mx, my) = (
+            near.iter().map(|p| p.0).sum::<f64>() / n,
+            near.iter().map(|p| p.1).sum::<f64>() / n,
+        );
+        let sxx: f64 = near.iter().map(|p| (p.0 - mx).powi(2)).sum();
+        let sxy: f64 = near.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+        if sxx > 0.0 && sxy < 0.0 {
+            let slope = sxy / sxx;
+            return Some(((mx + (target.ln() - my) / slope).exp(), "log-log fit"));
+        }
+    }
     for w in ok.windows(2).rev() {
         let (a, b) = (w[0], w[1]);
         if (a.rms_rel_err - target) * (b.rms_rel_err - target) <= 0.0
@@ -582,40 +610,58 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
     } else {
         &[1024, 2048, 4096, 8192, 16384, 32768]
     };
-    for processes in [1usize, 2] {
-        let mut points_measured = Vec::new();
-        for &ad in ads {
-            let ad_text = ad.to_string();
-            let mut a: Vec<&str> = PURE_ARGS.to_vec();
-            a.extend(["-ad", &ad_text]);
-            let runs = if args.grid { 2 } else { args.runs };
-            let (estimates, seconds) = bench.run(&a, runs.max(processes), processes)?;
-            let (rms, worst) = rel_errors(&estimates, &reference);
-            log(format!(
-                "rtrace pure path tracing, {processes} process(es), -ad {ad}: {seconds:.3} s per run, \
-                 RMS error {:.2} %, worst point {:.2} %",
-                100.0 * rms,
-                100.0 * worst
-            ));
-            points_measured.push(Point {
-                samples: ad,
-                seconds,
-                rms_rel_err: rms,
-                worst_rel_err: worst,
-            });
+    // -lw: with -lr negative, rays whose weight falls below it go on by Russian roulette
+    // (unbiased; RADIANCE rayorigin), so -lw trades time per estimate for variance. With
+    // -aa 0 a first-bounce ray weighs about ρ/ad, so the issue's 2e-5 puts roulette on the
+    // first bounce from -ad 32768 on. Both the issue's value and one that keeps the first
+    // two bounces above it (0.1/ad) are timed, and rtrace gets the faster.
+    let lw_of = |fixed: bool, ad: u32| {
+        if fixed {
+            "2e-5".to_string()
+        } else {
+            format!("{:.3e}", 0.1 / f64::from(ad))
         }
-        rtrace_configs.push((
-            format!(
-                "pure path tracing {} -ad N, {processes} process(es){}",
-                PURE_ARGS[3..].join(" "),
-                if processes == 2 {
-                    " (the runs split between two concurrent processes: both cores)"
-                } else {
-                    ""
-                }
-            ),
-            points_measured,
-        ));
+    };
+    let lws = [("-lw 2e-5", true), ("-lw 0.1/ad", false)];
+    let layouts: &[usize] = if args.quick { &[2] } else { &[1, 2] };
+    for &processes in layouts {
+        for &(lw_label, fixed) in &lws {
+            let mut points_measured = Vec::new();
+            for &ad in ads {
+                let ad_text = ad.to_string();
+                let lw_text = lw_of(fixed, ad);
+                let mut a: Vec<&str> = PURE_ARGS.to_vec();
+                a[PURE_LW] = &lw_text;
+                a.extend(["-ad", &ad_text]);
+                let runs = if args.grid { 2 } else { args.runs };
+                let (estimates, seconds) = bench.run(&a, runs.max(processes), processes)?;
+                let (rms, worst) = rel_errors(&estimates, &reference);
+                log(format!(
+                    "rtrace pure path tracing, {processes} process(es), -ad {ad} -lw {lw_text}: \
+                     {seconds:.3} s per run, RMS error {:.2} %, worst point {:.2} %",
+                    100.0 * rms,
+                    100.0 * worst
+                ));
+                points_measured.push(Point {
+                    samples: ad,
+                    seconds,
+                    rms_rel_err: rms,
+                    worst_rel_err: worst,
+                });
+            }
+            rtrace_configs.push((
+                format!(
+                    "pure path tracing {} -ad N, {lw_label}, {processes} process(es){}",
+                    PURE_ARGS[3..PURE_LW - 1].join(" "),
+                    if processes == 2 {
+                        " (the runs split between two concurrent processes: both cores)"
+                    } else {
+                        ""
+                    }
+                ),
+                points_measured,
+            ));
+        }
     }
     if !args.skip_cache_config {
         let mut estimates = Vec::new();
@@ -647,31 +693,59 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
 
     // 3. Our engine, both cores.
     let scene_files = [scene_path.clone(), sky_path.clone()];
-    // (label, portal sampling, sky sampling, sun-patch sampling)
-    let our_variants: [(&str, bool, bool, bool); 5] = [
+    // (label, portal sampling, sky sampling, sun-patch sampling, stratified)
+    let all_variants: [(&str, bool, bool, bool, bool); 6] = [
         (
-            "portal + sky + sun-patch sampling (MIS, the default)",
+            "stratified, portal + sky + sun-patch sampling (MIS, the default)",
+            true,
             true,
             true,
             true,
         ),
-        ("portal + sun-patch sampling", true, false, true),
-        ("portal + sky sampling", true, true, false),
-        ("portal sampling only", true, false, false),
         (
-            "no next-event estimation of sky or sun patch",
+            "stratified, portal + sun-patch sampling",
+            true,
+            false,
+            true,
+            true,
+        ),
+        (
+            "independent samples, portal + sky + sun-patch sampling",
+            true,
+            true,
+            true,
+            false,
+        ),
+        (
+            "independent samples, portal + sun-patch sampling",
+            true,
+            false,
+            true,
+            false,
+        ),
+        (
+            "independent samples, portal sampling only",
+            true,
+            false,
+            false,
+            false,
+        ),
+        (
+            "independent samples, no next-event estimation of sky or sun patch",
+            false,
             false,
             false,
             false,
         ),
     ];
+    let our_variants = &all_variants[..if args.quick { 3 } else { all_variants.len() }];
     let counts: &[u32] = if args.grid {
         &[64, 128, 256, 512, 1024]
     } else {
         &[256, 512, 1024, 2048, 4096, 8192, 16384]
     };
     let mut skylux_configs = Vec::new();
-    for (label, portal, sky_nee, sun_patch) in our_variants {
+    for &(label, portal, sky_nee, sun_patch, stratified) in our_variants {
         let mut measured = Vec::new();
         for &n in counts {
             let mut estimates = Vec::new();
@@ -687,6 +761,7 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
                     portal_sampling: portal,
                     sky_sampling: sky_nee,
                     sun_portal_sampling: sun_patch,
+                    stratified,
                     ..Settings::default()
                 };
                 let result = engine::illuminance(&world, &sensors, &settings, &|_, _| {})?;

@@ -480,3 +480,68 @@ fn portal_and_sky_sampling_agree_with_plain_sampling_in_a_room() {
         assert!(ratio > 3.0, "{position:?}: variance ratio {ratio}");
     }
 }
+
+/// (g) The standard error the engine reports is the spread it really has, with stratified
+/// samples (from independent replicates) and with independent ones (from the paths'
+/// variance): in the window room of (f) with the same Perez sky plus a sun shining in, at
+/// a sensor in the sun's patch and one beside it, 64 seeds of 256 paths each; the variance
+/// of the 64 estimates over the mean reported variance must lie in [0.45, 1.9] (its
+/// sampling spread is about ±0.18 for 64 seeds). Also, stratification must not be grossly
+/// worse than independent sampling at equal paths: the ratio of the two observed variances
+/// is uncertain by about ±25 % here, so only a loss beyond a factor 2 fails.
+#[test]
+fn reported_standard_error_matches_the_spread_over_seeds() {
+    let sky = "void brightfunc skyfunc 2 skybright perezlum.cal 0 10 3.356e+01 2.949e+01 \
+               -0.982813 -0.198255 21.991380 -5.862501 1.343255 0.124333 -0.487290 0.864344\n\
+               skyfunc glow sky_glow 0 0 4 1 1 1 0\nsky_glow source sky 0 0 4 0 0 1 180\n\
+               skyfunc glow ground_glow 0 0 4 1 1 1 0\n\
+               ground_glow source ground 0 0 4 0 0 -1 180\n\
+               void light solar 0 0 3 1e7 1e7 1e7\nsolar source sun 0 0 4 0 -0.6 0.8 0.533\n";
+    let w = world(&room_with_opening("0.5", "window", sky));
+    // The sun enters at 53° altitude through the pane (z 0.9-2.1 m): its patch on the floor
+    // spans y ≈ 0.7-1.6 m, x 1-3 m.
+    let points = "2 1.1 0.0 0 0 1\n0.5 3.5 0.8 0 0 1\n";
+    let sensors = scene::parse_sensors("test.pts", points.as_bytes()).unwrap();
+    let seeds = 64u64;
+    let mut spread = Vec::new();
+    for stratified in [true, false] {
+        let runs: Vec<Vec<engine::SensorIlluminance>> = (0..seeds)
+            .map(|seed| {
+                let settings = Settings {
+                    ambient_bounces: 3,
+                    samples_per_sensor: 256,
+                    seed: 500 + seed,
+                    stratified,
+                    ..Settings::default()
+                };
+                engine::illuminance(&w, &sensors, &settings, &|_, _| {}).unwrap()
+            })
+            .collect();
+        for s in 0..sensors.len() {
+            let x: Vec<f64> = runs.iter().map(|r| r[s].illuminance_lux).collect();
+            let mean = x.iter().sum::<f64>() / seeds as f64;
+            let observed = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (seeds - 1) as f64;
+            let reported = runs.iter().map(|r| r[s].stderr_lux.powi(2)).sum::<f64>() / seeds as f64;
+            let ratio = observed / reported;
+            println!(
+                "stratified {stratified}, sensor {s}: {mean:.1} lux, observed sd {:.2} lux, \
+                 reported {:.2} lux, variance ratio {ratio:.2}",
+                observed.sqrt(),
+                reported.sqrt()
+            );
+            assert!(
+                (0.45..=1.9).contains(&ratio),
+                "stratified {stratified}, sensor {s}: variance ratio {ratio}"
+            );
+            spread.push(observed);
+        }
+    }
+    for s in 0..sensors.len() {
+        let gain = spread[sensors.len() + s] / spread[s];
+        println!("sensor {s}: variance independent / stratified {gain:.2}");
+        assert!(
+            gain > 0.5,
+            "sensor {s}: stratification raised the variance ({gain})"
+        );
+    }
+}

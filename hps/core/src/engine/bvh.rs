@@ -175,7 +175,11 @@ impl Bvh {
         }
         let mut best: Option<H> = None;
         // Depth is at most about 2 log2(n) + bins; 64 is ample, and the stack grows if needed.
-        let mut stack: Vec<(u32, f64)> = Vec::with_capacity(64);
+        // A fixed array on the machine stack (no allocation per ray); a deeper tree spills
+        // into `spill`.
+        let mut stack = [(0u32, 0.0f64); 64];
+        let mut depth = 0usize;
+        let mut spill: Vec<(u32, f64)> = Vec::new();
         let mut current = 0usize;
         loop {
             let node = self.nodes[current];
@@ -202,7 +206,12 @@ impl Bvh {
                         } else {
                             (second, first, entry[0])
                         };
-                        stack.push((far as u32, far_t));
+                        if depth < stack.len() {
+                            stack[depth] = (far as u32, far_t);
+                            depth += 1;
+                        } else {
+                            spill.push((far as u32, far_t));
+                        }
                         current = near;
                         continue;
                     }
@@ -219,7 +228,15 @@ impl Bvh {
             }
             // Pop the next node still closer than the best hit.
             loop {
-                match stack.pop() {
+                let popped = if let Some(x) = spill.pop() {
+                    Some(x)
+                } else if depth > 0 {
+                    depth -= 1;
+                    Some(stack[depth])
+                } else {
+                    None
+                };
+                match popped {
                     None => return best,
                     Some((n, t)) if t <= query.t_max_m => {
                         current = n as usize;

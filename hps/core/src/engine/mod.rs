@@ -25,6 +25,7 @@ pub mod illuminance;
 pub mod integrator;
 pub mod material;
 pub mod portal;
+pub mod qmc;
 pub mod radiance;
 pub mod ray;
 pub mod render;

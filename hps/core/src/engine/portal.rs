@@ -114,15 +114,7 @@ impl Portals {
         if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
-        let target = rng.uniform() * total;
-        let i = self
-            .cumulative_m2
-            .partition_point(|&c| c <= target)
-            .min(self.triangles.len() - 1);
-        let t = &self.triangles[i];
-        // Uniform point on the triangle (square-root parametrisation).
-        let (r1, r2) = (rng.uniform().sqrt(), rng.uniform());
-        let y = t.v0 + t.e1 * (r1 * (1.0 - r2)) + t.e2 * (r1 * r2);
+        let (y, _) = self.point(rng, total);
         let to = y - x;
         let dist2 = to.length_squared();
         if (dist2).partial_cmp(&1e-18) != Some(std::cmp::Ordering::Greater) {
@@ -139,14 +131,30 @@ impl Portals {
         if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
+        Some(self.point(rng, total))
+    }
+
+    /// A point uniform over the portals (total area `total` > 0) and its triangle's normal,
+    /// from two uniforms: the first chooses the triangle by area and, rescaled within the
+    /// triangle's share, gives the first coordinate, so stratified pairs stay stratified
+    /// across triangles.
+    fn point(&self, rng: &mut Rng, total: f64) -> (DVec3, DVec3) {
         let target = rng.uniform() * total;
         let i = self
             .cumulative_m2
             .partition_point(|&c| c <= target)
             .min(self.triangles.len() - 1);
         let t = &self.triangles[i];
-        let (r1, r2) = (rng.uniform().sqrt(), rng.uniform());
-        Some((t.v0 + t.e1 * (r1 * (1.0 - r2)) + t.e2 * (r1 * r2), t.normal))
+        let below = if i == 0 {
+            0.0
+        } else {
+            self.cumulative_m2[i - 1]
+        };
+        let share = self.cumulative_m2[i] - below;
+        let u = ((target - below) / share).clamp(0.0, 1.0);
+        // Uniform point on the triangle (square-root parametrisation).
+        let (r1, r2) = (u.sqrt(), rng.uniform());
+        (t.v0 + t.e1 * (r1 * (1.0 - r2)) + t.e2 * (r1 * r2), t.normal)
     }
 
     /// Density per unit area at a point `y` (unit normal `n_y`) of the points reached by

@@ -12,10 +12,14 @@ pub fn splitmix64(state: &mut u64) -> u64 {
     z ^ (z >> 31)
 }
 
-/// A xoshiro256++ generator.
+/// A xoshiro256++ generator, optionally preceded by a few given numbers (a path's
+/// stratified dimensions, [`super::qmc`]) that [`Rng::uniform`] returns first.
 #[derive(Clone, Debug)]
 pub struct Rng {
     s: [u64; 4],
+    prefix: [f64; super::qmc::DIMENSIONS],
+    prefix_len: u8,
+    prefix_next: u8,
 }
 
 impl Rng {
@@ -29,7 +33,26 @@ impl Rng {
             splitmix64(&mut sm),
             splitmix64(&mut sm),
         ];
-        Self { s }
+        Self {
+            s,
+            prefix: [0.0; super::qmc::DIMENSIONS],
+            prefix_len: 0,
+            prefix_next: 0,
+        }
+    }
+
+    /// The next calls of [`Rng::uniform`] return `values` (each in [0, 1)) in order, then
+    /// the stream resumes where it was.
+    pub fn set_prefix(&mut self, values: &[f64; super::qmc::DIMENSIONS]) {
+        self.prefix = *values;
+        self.prefix_len = values.len() as u8;
+        self.prefix_next = 0;
+    }
+
+    /// Drops what is left of the prefix.
+    pub fn clear_prefix(&mut self) {
+        self.prefix_len = 0;
+        self.prefix_next = 0;
     }
 
     /// Next 64 random bits (xoshiro256++ reference implementation).
@@ -48,6 +71,11 @@ impl Rng {
 
     /// Uniform in [0, 1) with 53 random bits.
     pub fn uniform(&mut self) -> f64 {
+        if self.prefix_next < self.prefix_len {
+            let u = self.prefix[usize::from(self.prefix_next)];
+            self.prefix_next += 1;
+            return u;
+        }
         (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
     }
 }

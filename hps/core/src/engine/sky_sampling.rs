@@ -86,7 +86,12 @@ impl SkyDistribution {
             i -= 1; // rounding landed on an empty cell: take the previous non-empty one
         }
         let (iz, ip) = (i / PHI_CELLS, i % PHI_CELLS);
-        let z = -1.0 + 2.0 / Z_CELLS as f64 * (iz as f64 + rng.uniform());
+        // The first uniform, rescaled within the chosen cell's weight, places the point in z
+        // (two uniforms per direction keep stratified pairs stratified).
+        let below = if i == 0 { 0.0 } else { self.cumulative[i - 1] };
+        let fz = ((target - below) / self.weight[i]).clamp(0.0, 1.0 - f64::EPSILON / 2.0);
+        let fz = if fz.is_finite() { fz } else { 0.5 };
+        let z = -1.0 + 2.0 / Z_CELLS as f64 * (iz as f64 + fz);
         let phi = 2.0 * PI / PHI_CELLS as f64 * (ip as f64 + rng.uniform());
         let d = direction(z.clamp(-1.0, 1.0), phi);
         (d, self.weight[i] / (self.total() * cell_solid_angle_sr()))
