@@ -27,7 +27,9 @@ pub struct SimCampaignArgs {
     /// 1.5), light_leak (lux per outdoor lux, 0 to 0.2), ground_reflectance (0 to 1),
     /// orientation_error (axis azimuth, degrees, ±10), clock_offset (lux-meter logger minus
     /// device clock, seconds, ±300; visible only when the light changes within minutes: use
-    /// --sky partly), shutter_overhead (µs added to every declared exposure, 0 to 100).
+    /// --sky partly), shutter_overhead (µs added to every declared exposure, 0 to 100),
+    /// glazing_angular (ASHRAE incidence-angle modifier b0 of the glazing, 0 to 1: light
+    /// through it at incidence θ times 1 − b0 (1/cos θ − 1); 0.05 is clean glass).
     #[arg(long = "effect")]
     pub effects: Vec<String>,
     /// The sky of every day (default: one clear and one overcast day). `partly`: broken

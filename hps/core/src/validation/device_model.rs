@@ -417,6 +417,10 @@ pub struct ModelState {
     /// The lux-meter logger's clock minus the device's, seconds: readings are matched to a
     /// capture at this offset on the logger's clock.
     pub clock_offset_s: f64,
+    /// ASHRAE incidence-angle modifier parameter of the glazing (0: the scene's glass alone).
+    /// Applied to the terms (`effect_glazing_angular::apply_glazing_angular`), not by
+    /// [`predict`]: terms computed afresh need it re-applied.
+    pub glazing_angular_b0: f64,
 }
 
 impl Default for ModelState {
@@ -427,6 +431,7 @@ impl Default for ModelState {
             light_leak: 0.0,
             ground_reflectance: 0.2,
             clock_offset_s: 0.0,
+            glazing_angular_b0: 0.0,
         }
     }
 }

@@ -101,10 +101,12 @@ pub enum Effect {
     ClockOffset,
     /// The shutter integrates longer than declared by a fixed overhead.
     ShutterOverhead,
+    /// The glazing's transmittance falls with incidence faster than the scene's glass says.
+    GlazingAngular,
 }
 
 impl Effect {
-    pub const ALL: [Effect; 7] = [
+    pub const ALL: [Effect; 8] = [
         Effect::SunUndersampling,
         Effect::GlazingTransmittance,
         Effect::LightLeak,
@@ -112,6 +114,7 @@ impl Effect {
         Effect::OrientationError,
         Effect::ClockOffset,
         Effect::ShutterOverhead,
+        Effect::GlazingAngular,
     ];
 
     /// The name in reports and in `skylux sim campaign --effect NAME=VALUE`.
@@ -124,6 +127,7 @@ impl Effect {
             Effect::OrientationError => "orientation_error",
             Effect::ClockOffset => "clock_offset",
             Effect::ShutterOverhead => "shutter_overhead",
+            Effect::GlazingAngular => "glazing_angular",
         }
     }
 }
@@ -537,6 +541,8 @@ pub fn fit_effect(
         }
         // Device-level effects: fitted by the loop, which re-merges or re-projects.
         Effect::OrientationError | Effect::ShutterOverhead => return None,
+        // Needs the room's glazing and daylight coefficients: fitted by the loop.
+        Effect::GlazingAngular => return None,
         Effect::ClockOffset => {
             let (st, ev) = fit_clock_offset(state, terms, fit)?;
             next = st;

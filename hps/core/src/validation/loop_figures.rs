@@ -32,6 +32,12 @@ fn revealing_variable(effect: &str) -> Option<(&'static str, Reading)> {
             "rate of change of the logged illuminance (relative, per minute)",
             |d| d.rate_of_change_per_min,
         ),
+        // Its signature on the sunlit readings is the solar incidence angle; over all
+        // readings the clearer one is the depth: near the façade the sky is seen through
+        // the glazing at wider angles.
+        "glazing_angular" => ("sensor's distance from the façade (m)", |d| {
+            d.facade_distance_m
+        }),
         _ => return None,
     })
 }
