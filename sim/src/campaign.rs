@@ -74,6 +74,11 @@ pub struct WorldEffects {
     /// colour through measured camera sensitivities (`crate::sky_colour`) while `device.toml`
     /// keeps the weights calibrated under D65.
     pub spectral_clear_sky_cct_k: f64,
+    /// The glazing's angular transmittance beyond the scene's glass: ASHRAE's
+    /// incidence-angle modifier parameter b0 (Souka & Safwat 1966; pvlib `iam.ashrae`; 0.05
+    /// for clean glass): light crossing the glazing at incidence θ is multiplied by
+    /// 1 − b0 (1/cos θ − 1), clamped to [0, 1]. 0: absent.
+    pub glazing_angular_b0: f64,
 }
 
 impl Default for WorldEffects {
@@ -86,6 +91,7 @@ impl Default for WorldEffects {
             clock_offset_s: 0.0,
             shutter_overhead_us: 0.0,
             spectral_clear_sky_cct_k: 0.0,
+            glazing_angular_b0: 0.0,
         }
     }
 }
@@ -142,6 +148,10 @@ impl WorldEffects {
                 )?;
                 self.spectral_clear_sky_cct_k = v;
             }
+            "glazing_angular" | "glazing_angular_b0" => {
+                check((0.0..=1.0).contains(&v), "in [0, 1] (ASHRAE b0)")?;
+                self.glazing_angular_b0 = v;
+            }
             other => {
                 return Err(format!(
                     "unknown effect `{other}`: expected {}",
@@ -154,7 +164,7 @@ impl WorldEffects {
 }
 
 /// The names `--effect NAME=VALUE` accepts.
-pub const EFFECT_NAMES: [&str; 7] = [
+pub const EFFECT_NAMES: [&str; 8] = [
     "glazing_transmittance",
     "light_leak",
     "ground_reflectance",
@@ -162,6 +172,7 @@ pub const EFFECT_NAMES: [&str; 7] = [
     "clock_offset",
     "shutter_overhead",
     "spectral_mismatch",
+    "glazing_angular",
 ];
 
 /// When the lux-meter logger records: every `cadence_s` seconds within `half_window_s` of
@@ -418,6 +429,28 @@ pub fn simulate_campaign(
     let scene = skylux_hps::scene::load(out.join("room/scene.rad"))?;
     let sensors = skylux_hps::scene::load_sensors(out.join("room/sensors.pts"))?;
     let mut world = World::new(&scene)?;
+    // The glazing's outward normal, where its angular transmittance is an effect.
+    let glazing_normal = if spec.effects.glazing_angular_b0 > 0.0 {
+        let g = skylux_hps::validation::glazing::Glazing::of_world(&world)
+            .map_err(|e| SimCampaignError::Invalid(format!("glazing_angular: {e}")))?;
+        if !g.single_orientation() {
+            return Err(SimCampaignError::Invalid(format!(
+                "glazing_angular: the scene's glazing lies in {} planes facing different ways; \
+                 the simulated effect needs one orientation",
+                g.planes.len()
+            )));
+        }
+        Some(g.primary().normal_out)
+    } else {
+        None
+    };
+    let b0 = spec.effects.glazing_angular_b0;
+    // IAM of light arriving from unit direction `d` through the glazing (1 without the effect).
+    let iam = move |d: DVec3| {
+        glazing_normal.map_or(1.0, |n| {
+            skylux_hps::validation::effect_glazing_angular::iam_ashrae(d.dot(n), b0)
+        })
+    };
     let mut true_device = spec.device.clone();
     true_device.orientation.axis_azimuth_deg += spec.effects.orientation_azimuth_deg;
     let true_camera = CameraModel::new(true_device);
@@ -602,14 +635,18 @@ pub fn simulate_campaign(
                              ground: f64,
                              sun: f64|
              -> Result<Vec<f64>, SimCampaignError> {
+                // A ray leaving the room along d crossed the glazing at the angle between d
+                // and its normal (glass does not refract): the angular effect scales what it
+                // sees, and the sun, by the IAM at that angle.
                 world.set_environment(Some(Arc::new(move |d: DVec3| {
                     let l = if d.z < 0.0 {
                         ground
                     } else {
                         above.as_ref().map_or(0.0, |f| f(d))
                     };
-                    DVec3::splat(l / engine::WHITE_EFFICACY_LM_PER_W)
+                    DVec3::splat(iam(d) * l / engine::WHITE_EFFICACY_LM_PER_W)
                 })));
+                let sun = sun * iam(sun_dir);
                 if sun > 0.0 {
                     world.add_distant(DistantEmitter::sun(
                         sun_dir,

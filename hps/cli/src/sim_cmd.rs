@@ -32,6 +32,8 @@ pub struct SimCampaignArgs {
     /// 25000: frames rendered with the sky's real colour through measured camera
     /// sensitivities, device.toml calibrated under D65; needs the shared data folder,
     /// $SKYLUX_DATA_DIR or shared/data beside the room).
+    /// glazing_angular (ASHRAE incidence-angle modifier b0 of the glazing, 0 to 1: light
+    /// through it at incidence θ times 1 − b0 (1/cos θ − 1); 0.05 is clean glass).
     #[arg(long = "effect")]
     pub effects: Vec<String>,
     /// The sky of every day (default: one clear and one overcast day). `partly`: broken

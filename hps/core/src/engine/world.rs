@@ -213,6 +213,19 @@ impl World {
             .collect()
     }
 
+    /// The portal polygons: (primitive index, surface name, vertices), in the portals'
+    /// order. What the loop's glazing geometry (`validation::glazing`) is built from.
+    pub fn portal_polygons(&self) -> Vec<(u32, &str, &[DVec3])> {
+        self.portals
+            .primitives()
+            .iter()
+            .filter_map(|&p| {
+                let (_, v) = self.portal_candidates.iter().find(|(q, _)| *q == p)?;
+                Some((p, self.names[p as usize].as_str(), v.as_slice()))
+            })
+            .collect()
+    }
+
     /// Uses the named glass or invisible polygons as the portals instead of those found
     /// automatically (an empty list turns portal sampling off). A name that matches no such
     /// polygon is an error.

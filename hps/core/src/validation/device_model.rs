@@ -424,6 +424,10 @@ pub struct ModelState {
     /// Spectral mismatch: measured / true luminance is `1 + m (c − 1)` at sky colour index
     /// `c` (blue / red); this is `m` (0: no mismatch).
     pub spectral_slope: f64,
+    /// ASHRAE incidence-angle modifier parameter of the glazing (0: the scene's glass alone).
+    /// Applied to the terms (`effect_glazing_angular::apply_glazing_angular`), not by
+    /// [`predict`]: terms computed afresh need it re-applied.
+    pub glazing_angular_b0: f64,
 }
 
 impl Default for ModelState {
@@ -435,6 +439,7 @@ impl Default for ModelState {
             ground_reflectance: 0.2,
             clock_offset_s: 0.0,
             spectral_slope: 0.0,
+            glazing_angular_b0: 0.0,
         }
     }
 }

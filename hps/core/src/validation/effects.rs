@@ -103,10 +103,12 @@ pub enum Effect {
     ShutterOverhead,
     /// The camera's luminance depends on the sky's colour (spectral mismatch).
     SpectralMismatch,
+    /// The glazing's transmittance falls with incidence faster than the scene's glass says.
+    GlazingAngular,
 }
 
 impl Effect {
-    pub const ALL: [Effect; 8] = [
+    pub const ALL: [Effect; 9] = [
         Effect::SunUndersampling,
         Effect::GlazingTransmittance,
         Effect::LightLeak,
@@ -115,6 +117,7 @@ impl Effect {
         Effect::ClockOffset,
         Effect::ShutterOverhead,
         Effect::SpectralMismatch,
+        Effect::GlazingAngular,
     ];
 
     /// The name in reports and in `skylux sim campaign --effect NAME=VALUE`.
@@ -128,6 +131,7 @@ impl Effect {
             Effect::ClockOffset => "clock_offset",
             Effect::ShutterOverhead => "shutter_overhead",
             Effect::SpectralMismatch => "spectral_mismatch",
+            Effect::GlazingAngular => "glazing_angular",
         }
     }
 }
@@ -541,6 +545,8 @@ pub fn fit_effect(
         }
         // Device-level effects: fitted by the loop, which re-merges or re-projects.
         Effect::OrientationError | Effect::ShutterOverhead => return None,
+        // Needs the room's glazing and daylight coefficients: fitted by the loop.
+        Effect::GlazingAngular => return None,
         Effect::ClockOffset => {
             let (st, ev) = fit_clock_offset(state, terms, fit)?;
             next = st;

@@ -13,10 +13,12 @@ use super::device_model::{
     capture_terms, load_captures, load_captures_with_overhead, predict, CaptureData, CaptureTerms,
     ModelError, ModelState, Room,
 };
+use super::effect_glazing_angular::{fit_glazing_angular, AngularGlazing};
 use super::effects::{
     fit_effect, fit_error, interpolate, relative_rate_per_min, sunlit_bias, Candidate, Effect,
     Sample, CLOCK_SCAN_S,
 };
+use super::glazing::Glazing;
 use super::report::{correlation_and_slope, EffectReport, ErrorSummary, Report, ResidualRow};
 use super::split::{compare, split, Figure, FitSet, HoldoutSet, Score, SplitPlan};
 use crate::camera::{DeviceConfig, ImagePoint};
@@ -123,13 +125,18 @@ pub struct Diagnostic {
     pub local_hour: f64,
     /// The sky's colour index (blue / red from the raw frames; NaN if unreadable).
     pub sky_colour_index: f64,
+    /// Angle between the SPA sun and the glazing's outward normal, degrees (NaN: sun below
+    /// the horizon or behind the façade, or no glazing found).
+    pub sun_incidence_deg: f64,
+    /// The sensor's distance from the glazing plane, metres (NaN: no glazing found).
+    pub facade_distance_m: f64,
 }
 
 /// How an explanatory variable is read from a diagnostic.
 pub type Variable = fn(&Diagnostic) -> f64;
 
 /// The explanatory variables of the residual table, with how each is read.
-pub const RESIDUAL_VARIABLES: [(&str, Variable); 13] = [
+pub const RESIDUAL_VARIABLES: [(&str, Variable); 15] = [
     ("sun visible (0/1)", |d| d.sun_visible),
     ("sun altitude (deg)", |d| d.sun_altitude_deg),
     ("sun azimuth (deg)", |d| d.sun_azimuth_deg),
@@ -147,6 +154,10 @@ pub const RESIDUAL_VARIABLES: [(&str, Variable); 13] = [
     ("rate of change (rel./min)", |d| d.rate_of_change_per_min),
     ("sun offset from SPA (deg)", |d| d.sun_offset_deg),
     ("sky colour index (blue/red)", |d| d.sky_colour_index),
+    ("solar incidence on the glazing (deg)", |d| {
+        d.sun_incidence_deg
+    }),
+    ("distance from the facade (m)", |d| d.facade_distance_m),
 ];
 
 /// The residual table: per variable, over all readings and per sensor, the relative
@@ -171,8 +182,17 @@ pub fn residual_rows(diagnostics: &[Diagnostic]) -> Vec<ResidualRow> {
             };
             let before = of(&|d| d.before_lux / d.measured_before_lux - 1.0);
             let after = of(&|d| d.after_lux / d.measured_lux - 1.0);
-            let (before_r, before_slope) = correlation_and_slope(&before);
-            let (after_r, after_slope) = correlation_and_slope(&after);
+            // A variable constant over the group (a sensor's distance from the façade, per
+            // sensor) has no correlation: NaN rather than rounding noise.
+            let fit = |xy: &[(f64, f64)]| {
+                if xy.windows(2).all(|w| w[0].0 == w[1].0) {
+                    (f64::NAN, f64::NAN)
+                } else {
+                    correlation_and_slope(xy)
+                }
+            };
+            let (before_r, before_slope) = fit(&before);
+            let (after_r, after_slope) = fit(&after);
             rows.push(ResidualRow {
                 variable: variable.into(),
                 group: g.clone(),
@@ -362,6 +382,7 @@ fn fit_shutter_candidate(
     terms: &[CaptureTerms],
     fit: &FitSet<Sample>,
     reference_outdoor: &[Option<f64>],
+    angular: Option<&AngularGlazing>,
 ) -> Result<Option<(Candidate, f64, Vec<CaptureData>, Vec<CaptureTerms>)>, LoopError> {
     if !state.concentrated_sun {
         return Ok(None);
@@ -387,6 +408,9 @@ fn fit_shutter_candidate(
         let caps = load_captures_with_overhead(campaign, device, t0, &|_, _| {})?;
         let mut t = capture_terms(room, &caps, device, &|_, _| {})?;
         use_reference_outdoor(&mut t, reference_outdoor);
+        if let (Some(g), true) = (angular, state.glazing_angular_b0 > 0.0) {
+            t = g.apply(&t, state.glazing_angular_b0);
+        }
         let e = fit_error(state, &t, fit);
         Ok((if e.is_finite() { e } else { f64::INFINITY }, caps, t))
     };
@@ -555,6 +579,21 @@ pub fn run_loop(
         progress("daylight coefficients", i, n)
     })?;
     let sensor_names: Vec<String> = room.sensors.iter().map(|s| s.name.clone()).collect();
+    // The glazing's geometry: residual variables, and the angular effect where the glazing
+    // faces one way.
+    let glazing = Glazing::of_world(&room.world);
+    let angular = glazing
+        .as_ref()
+        .ok()
+        .filter(|g| g.single_orientation())
+        .map(|g| {
+            let depths: Vec<f64> = room
+                .sensors
+                .iter()
+                .map(|s| g.facade_distance_m(s.position_m))
+                .collect();
+            AngularGlazing::new(&room.dc, g.primary().normal_out, depths)
+        });
     let mut terms = capture_terms(&mut room, &captures, &declared, &|i, n| {
         progress("sky and sun per capture", i as u64, n as u64)
     })?;
@@ -628,6 +667,16 @@ pub fn run_loop(
         .into_iter()
         .map(|w| format!("{}: {w}", device_path.display()))
         .collect();
+    match &glazing {
+        Err(e) => notes.push(format!(
+            "glazing: {e}; no solar incidence or façade distance, glazing_angular not tried"
+        )),
+        Ok(g) if angular.is_none() => notes.push(format!(
+            "glazing: {} planes facing different ways; glazing_angular not tried",
+            g.planes.len()
+        )),
+        Ok(_) => {}
+    }
 
     // The geometric effect first, judged against its own reference instrument: the sun
     // sightings against SPA (its signature is there, not in the illuminance).
@@ -733,10 +782,20 @@ pub fn run_loop(
                 &terms,
                 &fit,
                 &reference_outdoor,
+                angular.as_ref(),
             )? {
                 super::effect_spectral::attach(&room, &mut t, &colours);
                 candidates.push((c, err));
                 shutter = Some((caps, t));
+            }
+        }
+        // The glazing's angular transmittance rescales the bins of the current terms (which
+        // do not carry it yet) and re-applies the daylight coefficients.
+        let mut angular_terms: Option<Vec<CaptureTerms>> = None;
+        if let (Some(g), false) = (&angular, accepted.contains(&Effect::GlazingAngular)) {
+            if let Some((c, err, t)) = fit_glazing_angular(g, &state, &accepted, &terms, &fit) {
+                candidates.push((c, err));
+                angular_terms = Some(t);
             }
         }
         candidates.sort_by(|a, b| a.1.total_cmp(&b.1));
@@ -746,6 +805,10 @@ pub fn run_loop(
         let (best_terms, best_captures) = match (&best.effect, shutter) {
             (Effect::ShutterOverhead, Some((caps, t))) => (Some(t), Some(caps)),
             _ => (None, None),
+        };
+        let best_terms = match (&best.effect, angular_terms) {
+            (Effect::GlazingAngular, Some(t)) => Some(t),
+            _ => best_terms,
         };
         let candidate_terms = best_terms.as_deref().unwrap_or(&terms);
         if best_fit.is_nan() || best_fit >= base_fit - 0.002 {
@@ -791,9 +854,11 @@ pub fn run_loop(
             fit_error_after: Some(best_fit),
         });
         state = best.state;
-        if let (Some(t), Some(c)) = (best_terms, best_captures) {
+        if let (Some(t), Some(c)) = (best_terms.clone(), best_captures) {
             terms = t;
             captures = c;
+        } else if let (Effect::GlazingAngular, Some(t)) = (best.effect, best_terms) {
+            terms = t;
         }
         for e in effects.iter_mut() {
             match e.name.as_str() {
@@ -957,6 +1022,12 @@ pub fn run_loop(
                     .spectral
                     .as_ref()
                     .map_or(f64::NAN, |sp| sp.colour.sky_index),
+                sun_incidence_deg: glazing
+                    .as_ref()
+                    .map_or(f64::NAN, |g| g.primary().incidence_deg(c.spa_sun)),
+                facade_distance_m: glazing.as_ref().map_or(f64::NAN, |g| {
+                    g.facade_distance_m(room.sensors[k].position_m)
+                }),
             });
         }
     }

@@ -35,6 +35,12 @@ fn revealing_variable(effect: &str) -> Option<(&'static str, Reading)> {
         "spectral_mismatch" => ("sky colour index (blue / red from the raw frames)", |d| {
             d.sky_colour_index
         }),
+        // Its signature on the sunlit readings is the solar incidence angle; over all
+        // readings the clearer one is the depth: near the façade the sky is seen through
+        // the glazing at wider angles.
+        "glazing_angular" => ("sensor's distance from the façade (m)", |d| {
+            d.facade_distance_m
+        }),
         _ => return None,
     })
 }

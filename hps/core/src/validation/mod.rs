@@ -5,7 +5,9 @@
 pub mod closure;
 pub mod device_model;
 pub mod effect_spectral;
+pub mod effect_glazing_angular;
 pub mod effects;
+pub mod glazing;
 pub mod illuminance_loop;
 pub mod loop_figures;
 pub mod plot;
