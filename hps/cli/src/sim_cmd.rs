@@ -27,7 +27,10 @@ pub struct SimCampaignArgs {
     /// 1.5), light_leak (lux per outdoor lux, 0 to 0.2), ground_reflectance (0 to 1),
     /// orientation_error (axis azimuth, degrees, ±10), clock_offset (lux-meter logger minus
     /// device clock, seconds, ±300; visible only when the light changes within minutes: use
-    /// --sky partly), shutter_overhead (µs added to every declared exposure, 0 to 100).
+    /// --sky partly), shutter_overhead (µs added to every declared exposure, 0 to 100),
+    /// vignetting (v of an extra relative illumination 1 − v (α/90°)² on top of the declared
+    /// polynomial, 0 to 0.9), fov_limit_deg (a baffle darkens the image beyond this off-axis
+    /// angle, degrees, 20 to 180).
     #[arg(long = "effect")]
     pub effects: Vec<String>,
     /// The sky of every day (default: one clear and one overcast day). `partly`: broken

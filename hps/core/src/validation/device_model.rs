@@ -417,6 +417,13 @@ pub struct ModelState {
     /// The lux-meter logger's clock minus the device's, seconds: readings are matched to a
     /// capture at this offset on the logger's clock.
     pub clock_offset_s: f64,
+    /// Extra vignetting v: the true relative illumination is the declared one times
+    /// 1 − v (α/90°)² (`effect_vignetting.rs`; applied to the terms, not in [`predict`]).
+    pub extra_vignetting: f64,
+    /// With the field-of-view effect: the factor on the extrapolated luminance of the sky
+    /// patches the lens did not see, and the sun beyond the maps' field filled from the
+    /// pyranometer (`effect_fov.rs`; applied to the terms, not in [`predict`]).
+    pub unseen_sky_factor: Option<f64>,
 }
 
 impl Default for ModelState {
@@ -427,6 +434,8 @@ impl Default for ModelState {
             light_leak: 0.0,
             ground_reflectance: 0.2,
             clock_offset_s: 0.0,
+            extra_vignetting: 0.0,
+            unseen_sky_factor: None,
         }
     }
 }

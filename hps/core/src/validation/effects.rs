@@ -84,6 +84,16 @@ impl super::split::Timed for Sample {
     }
 }
 
+/// A sky effect's fit: from the state, the terms without the sky effects, the daylight
+/// coefficients and the capture geometry, a candidate and its corrected terms.
+pub type SkyFit = fn(
+    &ModelState,
+    &[CaptureTerms],
+    &crate::engine::DaylightCoefficients,
+    &super::effect_vignetting::SkyGeometry,
+    &FitSet<Sample>,
+) -> Option<(Candidate, Vec<CaptureTerms>)>;
+
 /// The effects the loop knows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Effect {
@@ -101,10 +111,14 @@ pub enum Effect {
     ClockOffset,
     /// The shutter integrates longer than declared by a fixed overhead.
     ShutterOverhead,
+    /// The lens's relative illumination falls off more steeply than the declared polynomial.
+    Vignetting,
+    /// A baffle clips the field of view: the sky beyond is extrapolated, and mis-estimated.
+    SkyOutsideFov,
 }
 
 impl Effect {
-    pub const ALL: [Effect; 7] = [
+    pub const ALL: [Effect; 9] = [
         Effect::SunUndersampling,
         Effect::GlazingTransmittance,
         Effect::LightLeak,
@@ -112,6 +126,8 @@ impl Effect {
         Effect::OrientationError,
         Effect::ClockOffset,
         Effect::ShutterOverhead,
+        Effect::Vignetting,
+        Effect::SkyOutsideFov,
     ];
 
     /// The name in reports and in `skylux sim campaign --effect NAME=VALUE`.
@@ -124,6 +140,8 @@ impl Effect {
             Effect::OrientationError => "orientation_error",
             Effect::ClockOffset => "clock_offset",
             Effect::ShutterOverhead => "shutter_overhead",
+            Effect::Vignetting => "vignetting",
+            Effect::SkyOutsideFov => "sky_outside_fov",
         }
     }
 }
@@ -537,6 +555,9 @@ pub fn fit_effect(
         }
         // Device-level effects: fitted by the loop, which re-merges or re-projects.
         Effect::OrientationError | Effect::ShutterOverhead => return None,
+        // Sky effects: fitted by the loop, which holds the camera geometry and the daylight
+        // coefficients (`effect_vignetting.rs`, `effect_fov.rs`).
+        Effect::Vignetting | Effect::SkyOutsideFov => return None,
         Effect::ClockOffset => {
             let (st, ev) = fit_clock_offset(state, terms, fit)?;
             next = st;

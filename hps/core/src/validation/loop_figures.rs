@@ -32,6 +32,14 @@ fn revealing_variable(effect: &str) -> Option<(&'static str, Reading)> {
             "rate of change of the logged illuminance (relative, per minute)",
             |d| d.rate_of_change_per_min,
         ),
+        "vignetting" => (
+            "mean off-axis angle of the light reaching the sensor (deg)",
+            |d| d.light_off_axis_deg,
+        ),
+        "sky_outside_fov" => (
+            "unseen sky fraction of the daylight-coefficient weight",
+            |d| d.unseen_sky_fraction,
+        ),
         _ => return None,
     })
 }

@@ -4,6 +4,8 @@
 
 pub mod closure;
 pub mod device_model;
+pub mod effect_fov;
+pub mod effect_vignetting;
 pub mod effects;
 pub mod illuminance_loop;
 pub mod loop_figures;
