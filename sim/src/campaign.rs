@@ -79,6 +79,22 @@ pub struct WorldEffects {
     /// for clean glass): light crossing the glazing at incidence θ is multiplied by
     /// 1 − b0 (1/cos θ − 1), clamped to [0, 1]. 0: absent.
     pub glazing_angular_b0: f64,
+    /// Relative illumination steeper than `device.toml`'s polynomial: every frame is rendered
+    /// with the declared V(α) times `1 − v (α / 90°)²` ([`extra_vignetting_factor`]).
+    pub extra_vignetting: f64,
+    /// A housing or baffle clips the image beyond this off-axis angle, degrees: the sensor
+    /// sees nothing there (≥ 180: no clipping, the declared lens alone).
+    pub fov_limit_deg: f64,
+}
+
+/// The extra relative illumination of the `vignetting` effect at off-axis angle α: the
+/// leading term of the even radial polynomial that models a lens's vignetting,
+/// 1 + a₂ r² + a₄ r⁴ + … (Goldman, "Vignette and exposure calibration and compensation",
+/// IEEE TPAMI 32(12), 2010; Kang & Weiss, ECCV 2000), with the image radius r of the
+/// equidistant fisheye proportional to α and normalised at 90°: `1 − v (α / 90°)²`, clamped
+/// at 0. One parameter, and the same form the loop fits.
+pub fn extra_vignetting_factor(v: f64, off_axis_rad: f64) -> f64 {
+    (1.0 - v * (off_axis_rad / std::f64::consts::FRAC_PI_2).powi(2)).max(0.0)
 }
 
 impl Default for WorldEffects {
@@ -92,6 +108,8 @@ impl Default for WorldEffects {
             shutter_overhead_us: 0.0,
             spectral_clear_sky_cct_k: 0.0,
             glazing_angular_b0: 0.0,
+            extra_vignetting: 0.0,
+            fov_limit_deg: 180.0,
         }
     }
 }
@@ -152,6 +170,14 @@ impl WorldEffects {
                 check((0.0..=1.0).contains(&v), "in [0, 1] (ASHRAE b0)")?;
                 self.glazing_angular_b0 = v;
             }
+            "vignetting" | "extra_vignetting" => {
+                check((0.0..=0.9).contains(&v), "in [0, 0.9]")?;
+                self.extra_vignetting = v;
+            }
+            "fov_limit_deg" | "sky_outside_fov" => {
+                check((20.0..=180.0).contains(&v), "in [20, 180] degrees")?;
+                self.fov_limit_deg = v;
+            }
             other => {
                 return Err(format!(
                     "unknown effect `{other}`: expected {}",
@@ -164,7 +190,7 @@ impl WorldEffects {
 }
 
 /// The names `--effect NAME=VALUE` accepts.
-pub const EFFECT_NAMES: [&str; 8] = [
+pub const EFFECT_NAMES: [&str; 10] = [
     "glazing_transmittance",
     "light_leak",
     "ground_reflectance",
@@ -173,6 +199,8 @@ pub const EFFECT_NAMES: [&str; 8] = [
     "shutter_overhead",
     "spectral_mismatch",
     "glazing_angular",
+    "vignetting",
+    "fov_limit_deg",
 ];
 
 /// When the lux-meter logger records: every `cadence_s` seconds within `half_window_s` of
@@ -576,6 +604,26 @@ pub fn simulate_campaign(
                         sun_cd_m2
                     } else {
                         sky(d)
+                    }
+                }
+            };
+            // What reaches the sensor through the true lens and housing: the field times the
+            // undeclared extra vignetting, and nothing beyond the baffle's field of view.
+            let field = {
+                let (v, limit_rad) = (
+                    spec.effects.extra_vignetting,
+                    spec.effects.fov_limit_deg.to_radians(),
+                );
+                let camera = true_camera.clone();
+                move |d: DVec3| {
+                    if v == 0.0 && limit_rad >= std::f64::consts::PI {
+                        return field(d);
+                    }
+                    let alpha = camera.off_axis_rad(d);
+                    if alpha > limit_rad {
+                        0.0
+                    } else {
+                        field(d) * extra_vignetting_factor(v, alpha)
                     }
                 }
             };

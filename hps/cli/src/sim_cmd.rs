@@ -34,6 +34,9 @@ pub struct SimCampaignArgs {
     /// $SKYLUX_DATA_DIR or shared/data beside the room).
     /// glazing_angular (ASHRAE incidence-angle modifier b0 of the glazing, 0 to 1: light
     /// through it at incidence θ times 1 − b0 (1/cos θ − 1); 0.05 is clean glass).
+    /// vignetting (v of an extra relative illumination 1 − v (α/90°)² on top of the declared
+    /// polynomial, 0 to 0.9), fov_limit_deg (a baffle darkens the image beyond this off-axis
+    /// angle, degrees, 20 to 180).
     #[arg(long = "effect")]
     pub effects: Vec<String>,
     /// The sky of every day (default: one clear and one overcast day). `partly`: broken

@@ -428,6 +428,13 @@ pub struct ModelState {
     /// Applied to the terms (`effect_glazing_angular::apply_glazing_angular`), not by
     /// [`predict`]: terms computed afresh need it re-applied.
     pub glazing_angular_b0: f64,
+    /// Extra vignetting v: the true relative illumination is the declared one times
+    /// 1 − v (α/90°)² (`effect_vignetting.rs`; applied to the terms, not in [`predict`]).
+    pub extra_vignetting: f64,
+    /// With the field-of-view effect: the factor on the extrapolated luminance of the sky
+    /// patches the lens did not see, and the sun beyond the maps' field filled from the
+    /// pyranometer (`effect_fov.rs`; applied to the terms, not in [`predict`]).
+    pub unseen_sky_factor: Option<f64>,
 }
 
 impl Default for ModelState {
@@ -440,6 +447,8 @@ impl Default for ModelState {
             clock_offset_s: 0.0,
             spectral_slope: 0.0,
             glazing_angular_b0: 0.0,
+            extra_vignetting: 0.0,
+            unseen_sky_factor: None,
         }
     }
 }

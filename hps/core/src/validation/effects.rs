@@ -84,6 +84,16 @@ impl super::split::Timed for Sample {
     }
 }
 
+/// A sky effect's fit: from the state, the terms without the sky effects, the daylight
+/// coefficients and the capture geometry, a candidate and its corrected terms.
+pub type SkyFit = fn(
+    &ModelState,
+    &[CaptureTerms],
+    &crate::engine::DaylightCoefficients,
+    &super::effect_vignetting::SkyGeometry,
+    &FitSet<Sample>,
+) -> Option<(Candidate, Vec<CaptureTerms>)>;
+
 /// The effects the loop knows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Effect {
@@ -105,10 +115,14 @@ pub enum Effect {
     SpectralMismatch,
     /// The glazing's transmittance falls with incidence faster than the scene's glass says.
     GlazingAngular,
+    /// The lens's relative illumination falls off more steeply than the declared polynomial.
+    Vignetting,
+    /// A baffle clips the field of view: the sky beyond is extrapolated, and mis-estimated.
+    SkyOutsideFov,
 }
 
 impl Effect {
-    pub const ALL: [Effect; 9] = [
+    pub const ALL: [Effect; 11] = [
         Effect::SunUndersampling,
         Effect::GlazingTransmittance,
         Effect::LightLeak,
@@ -118,6 +132,8 @@ impl Effect {
         Effect::ShutterOverhead,
         Effect::SpectralMismatch,
         Effect::GlazingAngular,
+        Effect::Vignetting,
+        Effect::SkyOutsideFov,
     ];
 
     /// The name in reports and in `skylux sim campaign --effect NAME=VALUE`.
@@ -132,6 +148,8 @@ impl Effect {
             Effect::ShutterOverhead => "shutter_overhead",
             Effect::SpectralMismatch => "spectral_mismatch",
             Effect::GlazingAngular => "glazing_angular",
+            Effect::Vignetting => "vignetting",
+            Effect::SkyOutsideFov => "sky_outside_fov",
         }
     }
 }
@@ -547,6 +565,9 @@ pub fn fit_effect(
         Effect::OrientationError | Effect::ShutterOverhead => return None,
         // Needs the room's glazing and daylight coefficients: fitted by the loop.
         Effect::GlazingAngular => return None,
+        // Sky effects: fitted by the loop, which holds the camera geometry and the daylight
+        // coefficients (`effect_vignetting.rs`, `effect_fov.rs`).
+        Effect::Vignetting | Effect::SkyOutsideFov => return None,
         Effect::ClockOffset => {
             let (st, ev) = fit_clock_offset(state, terms, fit)?;
             next = st;

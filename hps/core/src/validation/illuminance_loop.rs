@@ -13,7 +13,9 @@ use super::device_model::{
     capture_terms, load_captures, load_captures_with_overhead, predict, CaptureData, CaptureTerms,
     ModelError, ModelState, Room,
 };
+use super::effect_fov::{fit_unseen_sky, hidden_suns, MIN_CLIPPED_DEG};
 use super::effect_glazing_angular::{fit_glazing_angular, AngularGlazing};
+use super::effect_vignetting::{correct_terms, fit_vignetting, light_off_axis_deg, SkyGeometry};
 use super::effects::{
     fit_effect, fit_error, interpolate, relative_rate_per_min, sunlit_bias, Candidate, Effect,
     Sample, CLOCK_SCAN_S,
@@ -130,13 +132,16 @@ pub struct Diagnostic {
     pub sun_incidence_deg: f64,
     /// The sensor's distance from the glazing plane, metres (NaN: no glazing found).
     pub facade_distance_m: f64,
+    /// Mean off-axis angle in the camera of the light the model brings to the sensor (sky
+    /// and seen ground bins and the sun, weighted by their illuminance), degrees.
+    pub light_off_axis_deg: f64,
 }
 
 /// How an explanatory variable is read from a diagnostic.
 pub type Variable = fn(&Diagnostic) -> f64;
 
 /// The explanatory variables of the residual table, with how each is read.
-pub const RESIDUAL_VARIABLES: [(&str, Variable); 15] = [
+pub const RESIDUAL_VARIABLES: [(&str, Variable); 16] = [
     ("sun visible (0/1)", |d| d.sun_visible),
     ("sun altitude (deg)", |d| d.sun_altitude_deg),
     ("sun azimuth (deg)", |d| d.sun_azimuth_deg),
@@ -158,6 +163,9 @@ pub const RESIDUAL_VARIABLES: [(&str, Variable); 15] = [
         d.sun_incidence_deg
     }),
     ("distance from the facade (m)", |d| d.facade_distance_m),
+    ("off-axis angle of the light (deg)", |d| {
+        d.light_off_axis_deg
+    }),
 ];
 
 /// The residual table: per variable, over all readings and per sensor, the relative
@@ -743,6 +751,21 @@ pub fn run_loop(
             }
         }
     }
+    // The sky effects (vignetting, the field of view) rescale the per-bin luminances of the
+    // terms without them, under the camera as it now stands.
+    let sky_patches = room.dc.patches();
+    let mut sky_raw = terms.clone();
+    let mut sky_geometry = SkyGeometry::new(&sky_patches, &captures, &terms, &device);
+    if sky_geometry.lens_fov_deg - sky_geometry.median_shown_fov_deg() >= MIN_CLIPPED_DEG {
+        sky_geometry.hidden_sun = hidden_suns(
+            campaign,
+            &mut room,
+            &captures,
+            &terms,
+            &device,
+            &sky_geometry,
+        )?;
+    }
     while effects.len() < options.max_effects {
         progress(
             "fitting effects",
@@ -798,6 +821,20 @@ pub fn run_loop(
                 angular_terms = Some(t);
             }
         }
+        let mut sky_candidates: Vec<(Effect, Vec<CaptureTerms>)> = Vec::new();
+        for (effect, fitted) in [
+            (Effect::Vignetting, fit_vignetting as super::effects::SkyFit),
+            (Effect::SkyOutsideFov, fit_unseen_sky),
+        ] {
+            if accepted.contains(&effect) {
+                continue;
+            }
+            if let Some((c, t)) = fitted(&state, &sky_raw, &room.dc, &sky_geometry, &fit) {
+                let err = fit_error(&c.state, &t, &fit);
+                candidates.push((c, err));
+                sky_candidates.push((effect, t));
+            }
+        }
         candidates.sort_by(|a, b| a.1.total_cmp(&b.1));
         let Some((best, best_fit)) = candidates.into_iter().next() else {
             break;
@@ -810,6 +847,12 @@ pub fn run_loop(
             (Effect::GlazingAngular, Some(t)) => Some(t),
             _ => best_terms,
         };
+        let best_terms = best_terms.or_else(|| {
+            sky_candidates
+                .into_iter()
+                .find(|(e, _)| *e == best.effect)
+                .map(|(_, t)| t)
+        });
         let candidate_terms = best_terms.as_deref().unwrap_or(&terms);
         if best_fit.is_nan() || best_fit >= base_fit - 0.002 {
             notes.push(format!(
@@ -854,11 +897,28 @@ pub fn run_loop(
             fit_error_after: Some(best_fit),
         });
         state = best.state;
-        if let (Some(t), Some(c)) = (best_terms.clone(), best_captures) {
+        let remerged = best_captures.is_some();
+        if let Some(t) = best_terms {
             terms = t;
+        }
+        if let Some(c) = best_captures {
             captures = c;
-        } else if let (Effect::GlazingAngular, Some(t)) = (best.effect, best_terms) {
-            terms = t;
+        }
+        if remerged {
+            // New maps: new raw terms for the sky effects, with those already added re-applied.
+            sky_raw = terms.clone();
+            sky_geometry = SkyGeometry::new(&sky_patches, &captures, &sky_raw, &device);
+            if sky_geometry.lens_fov_deg - sky_geometry.median_shown_fov_deg() >= MIN_CLIPPED_DEG {
+                sky_geometry.hidden_sun = hidden_suns(
+                    campaign,
+                    &mut room,
+                    &captures,
+                    &sky_raw,
+                    &device,
+                    &sky_geometry,
+                )?;
+            }
+            terms = correct_terms(&sky_raw, &room.dc, &sky_geometry, &state);
         }
         for e in effects.iter_mut() {
             match e.name.as_str() {
@@ -968,6 +1028,7 @@ pub fn run_loop(
         let sun_offset_deg = base_terms[i].sun.as_ref().map_or(f64::NAN, |s| {
             s.direction.angle_between(c.spa_sun).to_degrees()
         });
+        let light_off_axis = light_off_axis_deg(t, &room.dc, &sky_geometry, i);
         for (k, name) in sensor_names.iter().enumerate() {
             let Some(m0) = reading_at(campaign, name, c.time, options.match_window) else {
                 continue;
@@ -1028,6 +1089,7 @@ pub fn run_loop(
                 facade_distance_m: glazing.as_ref().map_or(f64::NAN, |g| {
                     g.facade_distance_m(room.sensors[k].position_m)
                 }),
+                light_off_axis_deg: light_off_axis[k],
             });
         }
     }

@@ -41,6 +41,14 @@ fn revealing_variable(effect: &str) -> Option<(&'static str, Reading)> {
         "glazing_angular" => ("sensor's distance from the façade (m)", |d| {
             d.facade_distance_m
         }),
+        "vignetting" => (
+            "mean off-axis angle of the light reaching the sensor (deg)",
+            |d| d.light_off_axis_deg,
+        ),
+        "sky_outside_fov" => (
+            "unseen sky fraction of the daylight-coefficient weight",
+            |d| d.unseen_sky_fraction,
+        ),
         _ => return None,
     })
 }

@@ -4,8 +4,10 @@
 
 pub mod closure;
 pub mod device_model;
-pub mod effect_spectral;
+pub mod effect_fov;
 pub mod effect_glazing_angular;
+pub mod effect_spectral;
+pub mod effect_vignetting;
 pub mod effects;
 pub mod glazing;
 pub mod illuminance_loop;
