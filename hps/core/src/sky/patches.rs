@@ -111,40 +111,12 @@ impl SkyPatches {
         Some(self.row_start[row] + k)
     }
 
-    /// Aggregates a luminance map (with each group's direction and solid angle) into patches:
-    /// each patch gets the solid-angle-weighted mean of its valid groups. A patch with less
-    /// than `min_coverage` of its solid angle seen (outside the field of view, or over- or
-    /// under-range) is filled by a documented extrapolation: the coverage-weighted mean of the
-    /// seen patches of the same row, weighted by the cosine-power proximity in azimuth; for a
-    /// row seen nowhere, the nearest seen row's mean. Filled patches are listed.
-    pub fn aggregate(
-        &self,
-        map: &LuminanceMap,
-        direction: &[Vec3],
-        solid_angle_sr: &[f32],
-        min_coverage: f64,
-    ) -> PatchSky {
+    /// Fills the patches not `seen` by the extrapolation [`Self::aggregate`] documents (the
+    /// seen patches of the same row weighted by cosine-power proximity in azimuth; for a row
+    /// seen nowhere, the nearest seen row's mean) and returns the filled patches. Shared by
+    /// effects that rescale the seen patches and must re-fill the rest the same way.
+    pub fn fill_unseen(&self, luminance: &mut [f64], seen: &[bool]) -> Vec<usize> {
         let n = self.len();
-        let (mut sum, mut omega) = (vec![0.0f64; n], vec![0.0f64; n]);
-        for i in 0..map.luminance_cd_m2.len() {
-            if map.flags[i] != MapFlag::Valid
-                || !direction[i].is_finite()
-                || solid_angle_sr[i] <= 0.0
-            {
-                continue;
-            }
-            if let Some(p) = self.patch_of(direction[i].as_dvec3()) {
-                let w = solid_angle_sr[i] as f64;
-                sum[p] += w * map.luminance_cd_m2[i] as f64;
-                omega[p] += w;
-            }
-        }
-        let seen: Vec<bool> = (0..n)
-            .map(|p| omega[p] >= min_coverage * self.solid_angle_sr(p))
-            .collect();
-        let mut luminance: Vec<f64> = (0..n)
-            .map(|p| if seen[p] { sum[p] / omega[p] } else { f64::NAN })
-            .collect();
         let mut filled = vec![];
         // Row means of the seen patches, for rows with no seen patch at all.
         let rows = self.per_row.len() + 1;
@@ -187,6 +159,44 @@ impl SkyPatches {
                 filled.push(p);
             }
         }
+        filled
+    }
+
+    /// Aggregates a luminance map (with each group's direction and solid angle) into patches:
+    /// each patch gets the solid-angle-weighted mean of its valid groups. A patch with less
+    /// than `min_coverage` of its solid angle seen (outside the field of view, or over- or
+    /// under-range) is filled by a documented extrapolation: the coverage-weighted mean of the
+    /// seen patches of the same row, weighted by the cosine-power proximity in azimuth; for a
+    /// row seen nowhere, the nearest seen row's mean. Filled patches are listed.
+    pub fn aggregate(
+        &self,
+        map: &LuminanceMap,
+        direction: &[Vec3],
+        solid_angle_sr: &[f32],
+        min_coverage: f64,
+    ) -> PatchSky {
+        let n = self.len();
+        let (mut sum, mut omega) = (vec![0.0f64; n], vec![0.0f64; n]);
+        for i in 0..map.luminance_cd_m2.len() {
+            if map.flags[i] != MapFlag::Valid
+                || !direction[i].is_finite()
+                || solid_angle_sr[i] <= 0.0
+            {
+                continue;
+            }
+            if let Some(p) = self.patch_of(direction[i].as_dvec3()) {
+                let w = solid_angle_sr[i] as f64;
+                sum[p] += w * map.luminance_cd_m2[i] as f64;
+                omega[p] += w;
+            }
+        }
+        let seen: Vec<bool> = (0..n)
+            .map(|p| omega[p] >= min_coverage * self.solid_angle_sr(p))
+            .collect();
+        let mut luminance: Vec<f64> = (0..n)
+            .map(|p| if seen[p] { sum[p] / omega[p] } else { f64::NAN })
+            .collect();
+        let filled = self.fill_unseen(&mut luminance, &seen);
         PatchSky {
             luminance_cd_m2: luminance,
             filled,

@@ -197,24 +197,14 @@ pub fn fit_glazing_angular(
     if i == 0 {
         return None;
     }
-    let (mut a, mut b) = (grid[i - 1], grid.get(i + 1).copied().unwrap_or(MAX_B0));
-    let g = (5f64.sqrt() - 1.0) / 2.0;
-    let mut best = (errors[i], grid[i]);
-    for _ in 0..20 {
-        let (x1, x2) = (b - g * (b - a), a + g * (b - a));
-        let (e1, e2) = (evaluate(x1).0, evaluate(x2).0);
-        if e1 < e2 {
-            b = x2;
-            if e1 < best.0 {
-                best = (e1, x1);
-            }
-        } else {
-            a = x1;
-            if e2 < best.0 {
-                best = (e2, x2);
-            }
-        }
-    }
+    let (x, e) = super::effects::golden_section(
+        grid[i - 1],
+        grid.get(i + 1).copied().unwrap_or(MAX_B0),
+        (grid[i], errors[i]),
+        20,
+        |b0| evaluate(b0).0,
+    );
+    let best = (e, x);
     let (err, next, terms) = evaluate(best.1);
     let xy = sunlit_by_incidence(state, base, fit, glazing.normal_out);
     let (r, slope) = super::report::correlation_and_slope(&xy);

@@ -161,24 +161,14 @@ pub fn fit_spectral(
         .collect();
     let errors: Vec<f64> = grid.iter().map(|m| at(*m).0).collect();
     let i = (0..grid.len()).min_by(|&a, &b| errors[a].total_cmp(&errors[b]))?;
-    let (mut a, mut b) = (grid[i.saturating_sub(1)], grid[(i + 1).min(grid.len() - 1)]);
-    let mut best = (errors[i], grid[i]);
-    let g = (5f64.sqrt() - 1.0) / 2.0;
-    for _ in 0..24 {
-        let (x1, x2) = (b - g * (b - a), a + g * (b - a));
-        let (e1, e2) = (at(x1).0, at(x2).0);
-        if e1 < e2 {
-            b = x2;
-            if e1 < best.0 {
-                best = (e1, x1);
-            }
-        } else {
-            a = x1;
-            if e2 < best.0 {
-                best = (e2, x2);
-            }
-        }
-    }
+    let (x, e) = super::effects::golden_section(
+        grid[i.saturating_sub(1)],
+        grid[(i + 1).min(grid.len() - 1)],
+        (grid[i], errors[i]),
+        24,
+        |m| at(m).0,
+    );
+    let best = (e, x);
     if !best.0.is_finite() || (best.1 - state.spectral_slope).abs() < 0.005 {
         return None;
     }

@@ -178,52 +178,7 @@ impl SkyGeometry {
 /// by (1 + cos of the angle between centres)⁴; a row with none seen takes the nearest row's
 /// mean.
 fn refill(patches: &SkyPatches, lum: &mut [f64], seen: &[bool]) {
-    let n = patches.len();
-    let mut row_start = Vec::with_capacity(patches.per_row.len());
-    let mut next = 0;
-    for k in &patches.per_row {
-        row_start.push(next);
-        next += k;
-    }
-    let rows = patches.per_row.len() + 1;
-    let range = |r: usize| {
-        if r == rows - 1 {
-            (n - 1, n)
-        } else {
-            (row_start[r], row_start[r] + patches.per_row[r])
-        }
-    };
-    let row_mean: Vec<Option<f64>> = (0..rows)
-        .map(|r| {
-            let (a, b) = range(r);
-            let v: Vec<f64> = (a..b).filter(|&p| seen[p]).map(|p| lum[p]).collect();
-            (!v.is_empty()).then(|| v.iter().sum::<f64>() / v.len() as f64)
-        })
-        .collect();
-    for r in 0..rows {
-        let (a, b) = range(r);
-        for p in a..b {
-            if seen[p] {
-                continue;
-            }
-            let centre = patches.centre(p);
-            let (mut num, mut den) = (0.0, 0.0);
-            for q in (a..b).filter(|&q| seen[q]) {
-                let w = (1.0 + centre.dot(patches.centre(q))).powi(4);
-                num += w * lum[q];
-                den += w;
-            }
-            lum[p] = if den > 0.0 {
-                num / den
-            } else {
-                (0..rows)
-                    .filter_map(|s| row_mean[s].map(|m| (s.abs_diff(r), m)))
-                    .min_by_key(|(dist, _)| *dist)
-                    .map(|(_, m)| m)
-                    .unwrap_or(f64::NAN)
-            };
-        }
-    }
+    patches.fill_unseen(lum, seen);
 }
 
 /// The terms of one capture with the sky effects of `state` applied to `raw` (terms without
@@ -366,24 +321,8 @@ pub fn minimise_1d(f: &dyn Fn(f64) -> f64, a: f64, b: f64, steps: usize) -> (f64
             best = (x, e);
         }
     }
-    let (mut lo, mut hi) = ((best.0 - h).max(a), (best.0 + h).min(b));
-    let g = (5f64.sqrt() - 1.0) / 2.0;
-    for _ in 0..30 {
-        let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
-        let (e1, e2) = (f(x1), f(x2));
-        if e1 < e2 {
-            hi = x2;
-            if e1 < best.1 {
-                best = (x1, e1);
-            }
-        } else {
-            lo = x1;
-            if e2 < best.1 {
-                best = (x2, e2);
-            }
-        }
-    }
-    best
+    let (lo, hi) = ((best.0 - h).max(a), (best.0 + h).min(b));
+    super::effects::golden_section(lo, hi, best, 30, f)
 }
 
 /// Largest extra vignetting the fit considers.

@@ -198,6 +198,35 @@ impl FreeLinear {
     }
 }
 
+/// Golden-section search for a minimum of `f` between `a` and `b` (unimodal there), for
+/// `iterations` steps, starting from `best` = (x, f(x)); returns the best (x, f(x)) seen.
+/// The one search the effects' 1-D fits share.
+pub fn golden_section(
+    mut a: f64,
+    mut b: f64,
+    mut best: (f64, f64),
+    iterations: usize,
+    mut f: impl FnMut(f64) -> f64,
+) -> (f64, f64) {
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    for _ in 0..iterations {
+        let (x1, x2) = (b - g * (b - a), a + g * (b - a));
+        let (e1, e2) = (f(x1), f(x2));
+        if e1 < e2 {
+            b = x2;
+            if e1 < best.1 {
+                best = (x1, e1);
+            }
+        } else {
+            a = x1;
+            if e2 < best.1 {
+                best = (x2, e2);
+            }
+        }
+    }
+    best
+}
+
 /// Solves the small normal equations `a x = b` (Gaussian elimination with pivoting).
 fn solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Option<Vec<f64>> {
     let n = b.len();
