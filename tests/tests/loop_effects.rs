@@ -31,6 +31,10 @@ fn sun_undersampling_is_found_when_the_sun_stays_in_the_map() {
     let r = run(&clean().1, true).report;
     let e = effect(&r, "sun_undersampling");
     assert!(e.evidence.contains("sunlit"), "{}", e.evidence);
+    // The undersampled sun is the only thing missing: nothing else may explain it away
+    // (the glazing's angular fit once did, on the demo, before the sun was handed over).
+    let names: Vec<&str> = r.effects.iter().map(|e| e.name.as_str()).collect();
+    assert_eq!(names, ["sun_undersampling"], "{names:?}");
     assert_improved(&r);
 }
 

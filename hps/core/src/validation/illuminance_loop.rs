@@ -815,7 +815,11 @@ pub fn run_loop(
         // The glazing's angular transmittance rescales the bins of the current terms (which
         // do not carry it yet) and re-applies the daylight coefficients.
         let mut angular_terms: Option<Vec<CaptureTerms>> = None;
-        if let (Some(g), false) = (&angular, accepted.contains(&Effect::GlazingAngular)) {
+        // Its signature is read on the sunlit readings, whose direct part is the
+        // concentrated sun's: while the sun is still spread over its patch, undersampling
+        // dominates that residual and the angular fit would explain it away.
+        let angular_ready = state.concentrated_sun && !accepted.contains(&Effect::GlazingAngular);
+        if let (Some(g), true) = (&angular, angular_ready) {
             if let Some((c, err, t)) = fit_glazing_angular(g, &state, &accepted, &terms, &fit) {
                 candidates.push((c, err));
                 angular_terms = Some(t);
