@@ -132,7 +132,7 @@ fn a_measured_sky_map_lights_the_room_as_in_rtrace() {
         &octree,
         &points,
         RTRACE_PATH_TRACING,
-        8,
+        32,
     );
 
     // Ours: the room alone, the map as the environment.

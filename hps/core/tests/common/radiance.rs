@@ -141,13 +141,17 @@ pub fn lux_of_line(line: &str) -> f64 {
     179.0 * (0.265 * v[0] + 0.670 * v[1] + 0.065 * v[2])
 }
 
-/// Mean and standard error of rtrace's illuminance per sensor over `runs` seeds, each run
-/// with `args`, in `dir` (so relative file names in the scene resolve).
+/// Mean and standard error of rtrace's illuminance per sensor over `samples` independent
+/// estimates, each with `args`, in `dir` (so relative file names in the scene resolve).
 ///
-/// rtrace `-u+` seeds its generator with the wall clock in whole seconds
-/// (`srandom((long)time(0))` in RADIANCE's rtmain.c), so runs started within the same second
-/// are the same run: each run here starts in a new second, and identical runs fail the test
-/// rather than pass with a spread of zero.
+/// Each sensor is traced `samples` times: the points go in as `samples` copies, split over
+/// two rtrace processes run at once (one per core). With `-u+` every copy draws fresh random
+/// numbers, so the copies are independent estimates; and rtrace seeds its generator with the
+/// wall clock in whole seconds (`srandom((long)time(0))` in RADIANCE's rtmain.c), so the two
+/// processes start in different seconds. The standard error comes from the spread of the
+/// copies: with 8 separate runs (the earlier design) the spread itself was so uncertain that
+/// a 4-sigma band sometimes held half the real one. Identical copies fail the test rather
+/// than pass with a spread of zero.
 pub fn rtrace_lux_runs(
     bin: &Path,
     lib: &Option<PathBuf>,
@@ -155,8 +159,12 @@ pub fn rtrace_lux_runs(
     octree: &Path,
     points: &[u8],
     args: &[&str],
-    runs: usize,
+    samples: usize,
 ) -> Vec<(f64, f64)> {
+    const PROCESSES: usize = 2;
+    assert!(samples >= 2 * PROCESSES, "at least two samples per process");
+    let text = String::from_utf8_lossy(points);
+    let lines: Vec<&str> = text.lines().filter(|l| !l.trim().is_empty()).collect();
     let second = || {
         std::time::SystemTime::now()
             .duration_since(std::time::UNIX_EPOCH)
@@ -164,28 +172,60 @@ pub fn rtrace_lux_runs(
             .unwrap_or(0)
     };
     let mut last_start = 0;
-    let results: Vec<Vec<f64>> = (0..runs)
+    let copies_per_process = samples.div_ceil(PROCESSES);
+    let children: Vec<std::thread::JoinHandle<Vec<f64>>> = (0..PROCESSES)
         .map(|_| {
             while second() == last_start {
                 std::thread::sleep(std::time::Duration::from_millis(20));
             }
             last_start = second();
+            let mut input = String::new();
+            for _ in 0..copies_per_process {
+                for l in &lines {
+                    input.push_str(l);
+                    input.push('\n');
+                }
+            }
             let mut c = tool(bin, lib, "rtrace");
             c.current_dir(dir).args(args).arg(octree);
-            let text = String::from_utf8(check_output(c, Some(points))).unwrap();
-            text.lines()
-                .filter(|l| !l.trim().is_empty())
-                .map(lux_of_line)
-                .collect()
+            // Through a file: rtrace's answers would fill the pipe while we still write.
+            let stem = octree.file_stem().unwrap_or_default().to_string_lossy();
+            let input_path = dir.join(format!("{stem}-rtrace-input-{last_start}.pts"));
+            std::fs::write(&input_path, input).unwrap();
+            c.stdin(std::fs::File::open(&input_path).unwrap());
+            std::thread::spawn(move || {
+                let out = c.output().unwrap_or_else(|e| panic!("running rtrace: {e}"));
+                assert!(
+                    out.status.success(),
+                    "rtrace failed: {}",
+                    String::from_utf8_lossy(&out.stderr)
+                );
+                String::from_utf8(out.stdout)
+                    .unwrap()
+                    .lines()
+                    .filter(|l| !l.trim().is_empty())
+                    .map(lux_of_line)
+                    .collect()
+            })
         })
         .collect();
-    assert!(
-        results.windows(2).any(|w| w[0] != w[1]),
-        "every rtrace run gave the same result: the seeds did not differ"
+    let values: Vec<f64> = children
+        .into_iter()
+        .flat_map(|h| h.join().expect("rtrace thread"))
+        .collect();
+    let n_sensors = lines.len();
+    assert_eq!(
+        values.len(),
+        n_sensors * copies_per_process * PROCESSES,
+        "one rtrace answer per point copy"
     );
-    (0..results[0].len())
+    (0..n_sensors)
         .map(|s| {
-            let xs: Vec<f64> = results.iter().map(|r| r[s]).collect();
+            let xs: Vec<f64> = values.iter().skip(s).step_by(n_sensors).copied().collect();
+            assert!(
+                xs.windows(2).any(|w| w[0] != w[1]),
+                "every rtrace estimate of sensor {s} was the same: the samples were not independent"
+            );
             let n = xs.len() as f64;
             let mean = xs.iter().sum::<f64>() / n;
             let var = xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0);
