@@ -11,7 +11,7 @@ use glam::DVec3;
 use skylux_hps::engine::{self, Settings, World};
 use skylux_hps::scene;
 mod common;
-use common::radiance::{check_output, radiance, tool};
+use common::radiance::{check_output, lux_of_line, radiance_or_skip, rtrace_lux_runs, tool};
 
 const SUN_RADIANCE: f64 = 1.0e6;
 const SUN_ANGLE_DEG: f64 = 0.533;
@@ -67,16 +67,10 @@ fn ours(ab: u32, samples: u32) -> (f64, f64) {
     (r[0].illuminance_lux, r[0].stderr_lux)
 }
 
-/// Mean and standard error of rtrace -I over `runs` runs with different seeds (-u+ seeds from
-/// the clock in whole seconds, so each run starts in a new second).
-fn rtrace_lux(args: &[&str], runs: usize) -> Option<(f64, f64)> {
-    let Some((bin, lib)) = radiance() else {
-        if std::env::var_os("SKYLUX_REQUIRE_RADIANCE").is_some() {
-            panic!("RADIANCE not found and SKYLUX_REQUIRE_RADIANCE is set");
-        }
-        println!("SKIPPED: RADIANCE not found (pip install pyradiance)");
-        return None;
-    };
+/// Mean and standard error of rtrace -I over `samples` independent estimates
+/// (`rtrace_lux_runs`); one sample, standard error 0, for a deterministic setting (`-ab 0`).
+fn rtrace_lux(args: &[&str], samples: usize) -> Option<(f64, f64)> {
+    let (bin, lib) = radiance_or_skip()?;
     let dir = tempfile::tempdir().unwrap();
     let rad = dir.path().join("room.rad");
     std::fs::write(&rad, scene_text()).unwrap();
@@ -84,34 +78,23 @@ fn rtrace_lux(args: &[&str], runs: usize) -> Option<(f64, f64)> {
     oconv.arg(&rad);
     let oct = dir.path().join("room.oct");
     std::fs::write(&oct, check_output(oconv, None)).unwrap();
-    let second = || {
-        std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map(|d| d.as_secs())
-            .unwrap_or(0)
-    };
-    let mut last = 0;
-    let xs: Vec<f64> = (0..runs)
-        .map(|_| {
-            while runs > 1 && second() == last {
-                std::thread::sleep(std::time::Duration::from_millis(20));
-            }
-            last = second();
-            let mut c = tool(&bin, &lib, "rtrace");
-            c.args(["-h", "-I", "-u+"]).args(args).arg(&oct);
-            let out = String::from_utf8(check_output(c, Some(SENSOR.as_bytes()))).unwrap();
-            let v: Vec<f64> = out.split_whitespace().map(|t| t.parse().unwrap()).collect();
-            179.0 * (0.265 * v[0] + 0.670 * v[1] + 0.065 * v[2])
-        })
-        .collect();
-    let n = xs.len() as f64;
-    let mean = xs.iter().sum::<f64>() / n;
-    let se = if xs.len() > 1 {
-        (xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0) / n).sqrt()
-    } else {
-        0.0
-    };
-    Some((mean, se))
+    let args: Vec<&str> = ["-h", "-I", "-u+"].iter().chain(args).copied().collect();
+    if samples == 1 {
+        let mut c = tool(&bin, &lib, "rtrace");
+        c.args(&args).arg(&oct);
+        let out = String::from_utf8(check_output(c, Some(SENSOR.as_bytes()))).unwrap();
+        return Some((lux_of_line(&out), 0.0));
+    }
+    let runs = rtrace_lux_runs(
+        &bin,
+        &lib,
+        dir.path(),
+        &oct,
+        SENSOR.as_bytes(),
+        &args,
+        samples,
+    );
+    Some(runs[0])
 }
 
 /// Direct light only (-ab 0): the sensor sees the sun only in the mirror. Closed form:
@@ -148,7 +131,7 @@ fn mirror_light_is_counted_once_with_interreflection() {
         &[
             "-ab", "2", "-aa", "0", "-ad", "2048", "-as", "0", "-lw", "1e-5",
         ],
-        4,
+        32,
     ) else {
         return;
     };
