@@ -157,9 +157,11 @@ impl Bvh {
     ///
     /// `intersect(primitive, t_max_m)` tests one primitive and returns its hit closer than
     /// `t_max_m`; `distance` reads a hit's distance. Box tests go through `boxes`.
-    pub fn closest<H>(
+    /// Generic over the box test, so the software slab test is inlined into the traversal
+    /// (through `dyn BoxTest` every node pair was an indirect call: a fifth of the time).
+    pub fn closest<H, T: BoxTest + ?Sized>(
         &self,
-        boxes: &dyn BoxTest,
+        boxes: &T,
         ray: &Ray,
         t_min_m: f64,
         t_max_m: f64,
@@ -249,6 +251,78 @@ impl Bvh {
     }
 }
 
+impl Bvh {
+    /// Every primitive whose box the ray crosses within `[t_min_m, t_max_m]`, in no
+    /// particular order, handed to `visit` until it returns false: the traversal for shadow
+    /// rays, whose answer (a product of transmissions, or 0 at the first opaque surface)
+    /// does not depend on the order, so one traversal replaces one closest-hit query per
+    /// crossed pane. Box tests go through `boxes`.
+    pub fn visit_crossed<T: BoxTest + ?Sized>(
+        &self,
+        boxes: &T,
+        ray: &Ray,
+        t_min_m: f64,
+        t_max_m: f64,
+        mut visit: impl FnMut(u32) -> bool,
+    ) {
+        let Some(root) = self.nodes.first() else {
+            return;
+        };
+        let query = RayBoxQuery::new(ray, t_min_m, t_max_m);
+        let mut entry = [f64::INFINITY; 2];
+        boxes.hits(&query, std::slice::from_ref(&root.bounds), &mut entry[..1]);
+        if entry[0].is_infinite() {
+            return;
+        }
+        let mut stack = [0u32; 64];
+        let mut depth = 0usize;
+        let mut spill: Vec<u32> = Vec::new();
+        let mut current = 0usize;
+        loop {
+            let node = self.nodes[current];
+            let mut next = None;
+            if node.count > 0 {
+                let start = node.offset as usize;
+                for &p in &self.order[start..start + node.count as usize] {
+                    if !visit(p) {
+                        return;
+                    }
+                }
+            } else {
+                let first = current + 1;
+                let second = node.offset as usize;
+                let pair = [self.nodes[first].bounds, self.nodes[second].bounds];
+                boxes.hits(&query, &pair, &mut entry);
+                match (entry[0].is_finite(), entry[1].is_finite()) {
+                    (true, true) => {
+                        if depth < stack.len() {
+                            stack[depth] = second as u32;
+                            depth += 1;
+                        } else {
+                            spill.push(second as u32);
+                        }
+                        next = Some(first);
+                    }
+                    (true, false) => next = Some(first),
+                    (false, true) => next = Some(second),
+                    (false, false) => {}
+                }
+            }
+            current = match next {
+                Some(n) => n,
+                None => match spill.pop() {
+                    Some(n) => n as usize,
+                    None if depth > 0 => {
+                        depth -= 1;
+                        stack[depth] as usize
+                    }
+                    None => return,
+                },
+            };
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -299,6 +373,51 @@ mod tests {
             );
             assert_eq!(brute.map(|h| h.1), fast.map(|h| h.1));
         }
+    }
+
+    /// The unordered traversal offers exactly the primitives whose boxes the ray crosses.
+    #[test]
+    fn visit_crossed_offers_every_crossed_box() {
+        let mut rng = Rng::for_stream(12, 0);
+        let boxes: Vec<Aabb> = (0..200)
+            .map(|_| {
+                let c = DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 10.0;
+                let h = DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 0.7;
+                Aabb {
+                    min_m: c - h,
+                    max_m: c + h,
+                }
+            })
+            .collect();
+        let bvh = Bvh::build(&boxes);
+        for _ in 0..300 {
+            let o = DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 14.0 - 2.0;
+            let d = (DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) - 0.5).normalize();
+            let ray = Ray::new(o, d);
+            let t_max = 8.0 * rng.uniform();
+            let q = RayBoxQuery::new(&ray, 0.0, t_max);
+            let mut brute: Vec<u32> = (0..boxes.len() as u32)
+                .filter(|&i| SlabTest::entry(&q, &boxes[i as usize]).is_some())
+                .collect();
+            let mut offered = Vec::new();
+            bvh.visit_crossed(&SlabTest, &ray, 0.0, t_max, |p| {
+                if SlabTest::entry(&q, &boxes[p as usize]).is_some() {
+                    offered.push(p);
+                }
+                true
+            });
+            offered.sort();
+            brute.sort();
+            assert_eq!(offered, brute);
+        }
+        // Stopping early stops.
+        let ray = Ray::new(DVec3::splat(-1.0), DVec3::ONE.normalize());
+        let mut n = 0;
+        bvh.visit_crossed(&SlabTest, &ray, 0.0, 1e9, |_| {
+            n += 1;
+            false
+        });
+        assert!(n <= 1);
     }
 
     #[test]

@@ -9,7 +9,7 @@
 //! mirror, smooth or Gaussian highlights) do not count against it, as in RADIANCE, and are
 //! bounded by [`Settings::max_specular_events`] (rtrace's `-lr`). With Russian roulette
 //! (paths from sensors and cameras, [`Settings::russian_roulette`]), a path past its third diffuse bounce continues with
-//! probability min(1, throughput) and is reweighted by its inverse (Russian roulette, Arvo &
+//! probability min(1, throughput / `RUSSIAN_ROULETTE_THROUGHPUT`) and is reweighted by its inverse (Russian roulette, Arvo &
 //! Kirk 1990): unbiased for the given limits, and paths whose remaining contribution is small
 //! stop early. The daylight-coefficient paths ([`escape_sample`]) run to their limits.
 //!
@@ -44,6 +44,14 @@ use std::f64::consts::PI;
 
 /// Diffuse bounces a path always makes before Russian roulette may end it.
 const RUSSIAN_ROULETTE_AFTER: u32 = 3;
+/// Path throughput below which Russian roulette may end a path: it continues with
+/// probability min(1, throughput / this), as rtrace's `-lw` sets the weight below which its
+/// rays play roulette. With 1 (survival = throughput) a path in a room of reflectance 0.5
+/// survived its fourth bounce one time in eight and carried eight times its light: on the
+/// reference room half the variance came from that. 0.25 cut variance × time by 1.3
+/// (measured with 32 seeds over thresholds 1, 0.5, 0.3, 0.2 and 0.15, and roulette from the
+/// 1st to the 4th bounce; see BENCHMARKS.md).
+const RUSSIAN_ROULETTE_THROUGHPUT: f64 = 0.25;
 /// Controls, named after rtrace's.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
@@ -218,22 +226,9 @@ impl<'a> SkyNee<'a> {
     /// Distance from `y` along unit `dir` to the first surface that is neither glass nor
     /// invisible (infinite if none).
     fn opaque_distance(world: &World, y: DVec3, from: Option<u32>, dir: DVec3) -> f64 {
-        let mut ray = Ray::new(y, dir);
-        let mut from = from;
-        let mut travelled = 0.0;
-        for _ in 0..64 {
-            let Some(hit) = world.intersect(&ray, from) else {
-                return f64::INFINITY;
-            };
-            travelled += hit.t_m;
-            match world.material(hit.primitive) {
-                Material::Glass(_) | Material::Invisible => {}
-                _ => return travelled,
-            }
-            ray = Ray::new(ray.at(hit.t_m), dir);
-            from = Some(hit.primitive);
-        }
-        travelled
+        world
+            .first_opaque(&Ray::new(y, dir), from)
+            .map_or(f64::INFINITY, |h| h.t_m)
     }
 
     /// Area density at the point `y` (primitive `primitive`, geometric normal `n_y`) of the
@@ -277,25 +272,13 @@ impl<'a> SkyNee<'a> {
                 continue;
             };
             // Into the room from the portal point, through glass and invisible surfaces.
-            let mut ray = Ray::new(p - s * 1e-7, -s);
-            let mut hit_from = None;
-            let mut found = None;
-            for _ in 0..64 {
-                let Some(hit) = world.intersect(&ray, hit_from) else {
-                    break;
-                };
+            let ray = Ray::new(p - s * 1e-7, -s);
+            let found = world.first_opaque(&ray, None).and_then(|hit| {
                 match world.material(hit.primitive) {
-                    Material::Glass(_) | Material::Invisible => {
-                        ray = Ray::new(ray.at(hit.t_m), -s);
-                        hit_from = Some(hit.primitive);
-                    }
-                    Material::Normal(m) => {
-                        found = Some((ray.at(hit.t_m), hit.normal, hit.primitive, m));
-                        break;
-                    }
-                    _ => break,
+                    Material::Normal(m) => Some((ray.at(hit.t_m), hit.normal, hit.primitive, m)),
+                    _ => None,
                 }
-            }
+            });
             // The sun-cone sample is drawn whatever happens, so the stream stays aligned.
             let l = sample_cone(source, rng);
             let Some((y, n_y, prim_y, m)) = found else {
@@ -632,7 +615,9 @@ fn trace(
                                     && ambient_used + 1 > RUSSIAN_ROULETTE_AFTER
                                     && prob > 0.0
                                 {
-                                    (throughput * f * (PI / prob)).max_element().min(1.0)
+                                    ((throughput * f * (PI / prob)).max_element()
+                                        / RUSSIAN_ROULETTE_THROUGHPUT)
+                                        .min(1.0)
                                 } else {
                                     1.0
                                 }
@@ -656,7 +641,8 @@ fn trace(
                         });
                         let mut survival = 1.0;
                         if roulette && ambient_used > RUSSIAN_ROULETTE_AFTER {
-                            let q = throughput.max_element().min(1.0);
+                            let q =
+                                (throughput.max_element() / RUSSIAN_ROULETTE_THROUGHPUT).min(1.0);
                             if (q).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater)
                                 || rng.uniform() >= q
                             {

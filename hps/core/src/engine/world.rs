@@ -35,6 +35,8 @@ pub struct World {
     materials: Vec<Material>,
     bvh: Bvh,
     box_test: Box<dyn BoxTest + Send>,
+    /// The box test is the software [`SlabTest`]: traversal then calls it directly.
+    software_box_test: bool,
     distant: Vec<DistantEmitter>,
     environment: Option<Environment>,
     /// Surface names, per primitive (for naming portals).
@@ -63,7 +65,9 @@ impl std::fmt::Debug for World {
 impl World {
     /// Prepares a loaded scene for tracing, with the software box test.
     pub fn new(scene: &Scene) -> Result<Self, EngineError> {
-        Self::with_box_test(scene, Box::new(SlabTest))
+        let mut world = Self::with_box_test(scene, Box::new(SlabTest))?;
+        world.software_box_test = true;
+        Ok(world)
     }
 
     /// As [`World::new`], with another box-test implementation (the FPGA unit).
@@ -150,6 +154,7 @@ impl World {
             material_of,
             materials,
             box_test,
+            software_box_test: false,
             distant,
             environment: None,
             names,
@@ -329,38 +334,117 @@ impl World {
 
     /// The closest surface along `ray`, not counting the flat surface `from` the ray leaves.
     pub fn intersect(&self, ray: &Ray, from: Option<u32>) -> Option<Hit> {
-        let curved_from = from.filter(|&p| !self.is_flat(p));
-        self.bvh.closest(
-            self.box_test.as_ref(),
-            ray,
-            0.0,
-            f64::INFINITY,
-            |p, t_max| {
-                if Some(p) == from && curved_from.is_none() {
-                    return None;
-                }
-                let t_min = if Some(p) == curved_from {
-                    CURVED_SELF_HIT_M
-                } else {
-                    0.0
-                };
-                self.primitives[p as usize]
-                    .intersect(ray, t_min, t_max)
-                    .map(|ShapeHit { t_m, normal }| Hit {
-                        t_m,
-                        normal,
-                        primitive: p,
-                    })
-            },
-            |h| h.t_m,
-        )
+        self.closest_where(ray, from, |_| true)
+    }
+
+    /// The closest surface along `ray` (leaving `from`) that is neither glass nor invisible:
+    /// one query where stepping through each pane took one per pane.
+    pub fn first_opaque(&self, ray: &Ray, from: Option<u32>) -> Option<Hit> {
+        self.closest_where(ray, from, |p| {
+            !matches!(self.material(p), Material::Glass(_) | Material::Invisible)
+        })
+    }
+
+    /// The closest hit on a primitive `accept` takes, not counting the flat surface `from`.
+    fn closest_where(
+        &self,
+        ray: &Ray,
+        from: Option<u32>,
+        accept: impl Fn(u32) -> bool,
+    ) -> Option<Hit> {
+        let primitive_hit = |p: u32, t_max: f64| {
+            if !accept(p) {
+                return None;
+            }
+            let t_min = self.self_hit_t_min(p, from)?;
+            self.primitives[p as usize]
+                .intersect(ray, t_min, t_max)
+                .map(|ShapeHit { t_m, normal }| Hit {
+                    t_m,
+                    normal,
+                    primitive: p,
+                })
+        };
+        if self.software_box_test {
+            self.bvh
+                .closest(&SlabTest, ray, 0.0, f64::INFINITY, primitive_hit, |h| h.t_m)
+        } else {
+            self.bvh.closest(
+                self.box_test.as_ref(),
+                ray,
+                0.0,
+                f64::INFINITY,
+                primitive_hit,
+                |h| h.t_m,
+            )
+        }
+    }
+
+    /// Nearest distance at which a ray leaving primitive `from` may hit primitive `p`: None
+    /// for the flat surface it leaves, a small offset on the curved surface it leaves (whose
+    /// far side it may still hit), 0 otherwise.
+    fn self_hit_t_min(&self, p: u32, from: Option<u32>) -> Option<f64> {
+        if Some(p) != from {
+            Some(0.0)
+        } else if self.is_flat(p) {
+            None
+        } else {
+            Some(CURVED_SELF_HIT_M)
+        }
     }
 
     /// What reaches `origin` from a distant source along unit `dir` through the scene: 1 if
     /// nothing is in the way, the product of the transmissions of `glass` and smooth `trans`
     /// surfaces crossed (RADIANCE traces shadow rays through them, glass.c and normal.c), 0 if
     /// anything else blocks it.
+    ///
+    /// One unordered traversal visits every surface the ray crosses (a product does not
+    /// depend on the order) and stops at the first opaque one. A curved surface that
+    /// transmits may be crossed twice, which one intersection per primitive cannot see, so a
+    /// ray that meets one is traced crossing by crossing instead.
     pub fn shadow_transmission(&self, origin: DVec3, from: Option<u32>, dir: DVec3) -> DVec3 {
+        let ray = Ray::new(origin, dir);
+        let mut t = DVec3::ONE;
+        let mut curved_crossing = false;
+        let mut visit = |p: u32| {
+            let Some(t_min) = self.self_hit_t_min(p, from) else {
+                return true;
+            };
+            let Some(hit) = self.primitives[p as usize].intersect(&ray, t_min, f64::INFINITY)
+            else {
+                return true;
+            };
+            let factor = match self.material(p) {
+                Material::Invisible => return true,
+                Material::Glass(g) => glass_fractions(g, hit.normal.dot(dir).abs()).0,
+                Material::Normal(m) => m
+                    .shade(dir, hit.normal, self.is_flat(p))
+                    .shadow_transmission(),
+                Material::Mirror { .. } | Material::Emitter(_) => DVec3::ZERO,
+            };
+            if factor != DVec3::ZERO && !self.is_flat(p) {
+                curved_crossing = true;
+                return false;
+            }
+            t *= factor;
+            t != DVec3::ZERO
+        };
+        if self.software_box_test {
+            self.bvh
+                .visit_crossed(&SlabTest, &ray, 0.0, f64::INFINITY, &mut visit);
+        } else {
+            self.bvh
+                .visit_crossed(self.box_test.as_ref(), &ray, 0.0, f64::INFINITY, &mut visit);
+        }
+        if curved_crossing {
+            self.shadow_transmission_stepwise(origin, from, dir)
+        } else {
+            t
+        }
+    }
+
+    /// [`World::shadow_transmission`] crossing by crossing, one closest-hit query each.
+    fn shadow_transmission_stepwise(&self, origin: DVec3, from: Option<u32>, dir: DVec3) -> DVec3 {
         let mut ray = Ray::new(origin, dir);
         let mut from = from;
         let mut t = DVec3::ONE;
