@@ -68,7 +68,6 @@ pub fn simulate_capture(
     spec: &CaptureSpec,
 ) -> Result<CaptureConfig, WriteCaptureError> {
     use crate::sensor::{FrameRenderer, Noise};
-    use skylux_hps::campaign::{BayerPattern, ExposureEntry};
     let renderer = FrameRenderer {
         camera,
         readout: spec.readout,
@@ -92,6 +91,17 @@ pub fn simulate_capture(
             )
         })
         .collect();
+    write_spec_capture(dir, spec, &frames)
+}
+
+/// Writes `frames` (one per exposure of `spec`, GRBG) as the capture folder `dir`, named
+/// `e0.pgm`, `e1.pgm`, ... as campaign.md lays them out. Returns the capture's configuration.
+pub(crate) fn write_spec_capture(
+    dir: &Path,
+    spec: &CaptureSpec,
+    frames: &[RawFrame],
+) -> Result<CaptureConfig, WriteCaptureError> {
+    use skylux_hps::campaign::{BayerPattern, ExposureEntry};
     let capture = CaptureConfig {
         time: spec.time.clone(),
         bayer: BayerPattern::GRBG,
@@ -109,7 +119,7 @@ pub fn simulate_capture(
             })
             .collect(),
     };
-    write_capture(dir, &capture, &frames)?;
+    write_capture(dir, &capture, frames)?;
     Ok(capture)
 }
 

@@ -23,12 +23,12 @@
 //! weights and `cg` calibrated under D65: each channel gives `rel_c` times its calibrated
 //! signal ([`ChannelResponse`]), and the lux-meters (ideal V(λ)) see the true light.
 
-use crate::capture::{write_capture, CaptureSpec, WriteCaptureError};
+use crate::capture::{CaptureSpec, WriteCaptureError};
 use crate::sensor::spectral::{cie_daylight, ChannelResponse, SpectralData};
 use crate::sensor::{FrameRenderer, Noise};
 use glam::DVec3;
 use skylux_hps::camera::CameraModel;
-use skylux_hps::campaign::{BayerPattern, CaptureConfig, ExposureEntry, RawFrame};
+use skylux_hps::campaign::{BayerPattern, CaptureConfig, RawFrame};
 use skylux_hps::photometry::spectral::{load_d65, SpectralError};
 use std::path::Path;
 
@@ -164,25 +164,7 @@ pub fn simulate_capture_coloured(
             )
         })
         .collect();
-    let capture = CaptureConfig {
-        time: spec.time.clone(),
-        bayer: BayerPattern::GRBG,
-        sensor_temperature_c: None,
-        readout: spec.readout,
-        exposure: spec
-            .exposures_us
-            .iter()
-            .enumerate()
-            .map(|(k, &t)| ExposureEntry {
-                file: format!("e{k}.pgm"),
-                exposure_us: t,
-                gain: spec.gain,
-                offset_ms: 0.0,
-            })
-            .collect(),
-    };
-    write_capture(dir, &capture, &frames)?;
-    Ok(capture)
+    crate::capture::write_spec_capture(dir, spec, &frames)
 }
 
 #[cfg(test)]

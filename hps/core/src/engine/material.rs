@@ -477,11 +477,16 @@ pub fn glass_fractions(g: &Glass, pdot: f64) -> (DVec3, DVec3) {
     let pdot = pdot.clamp(1e-9, 1.0);
     let cos2 = ((1.0 - 1.0 / (n * n)) + pdot * pdot / (n * n)).sqrt();
     let mcolor = g.transmissivity_rgb;
-    let d = DVec3::new(
-        mcolor.x.powf(1.0 / cos2),
-        mcolor.y.powf(1.0 / cos2),
-        mcolor.z.powf(1.0 / cos2),
-    );
+    // Grey glass (the usual case) needs one power, not three.
+    let d = if mcolor.x == mcolor.y && mcolor.y == mcolor.z {
+        DVec3::splat(mcolor.x.powf(1.0 / cos2))
+    } else {
+        DVec3::new(
+            mcolor.x.powf(1.0 / cos2),
+            mcolor.y.powf(1.0 / cos2),
+            mcolor.z.powf(1.0 / cos2),
+        )
+    };
     let r1e = ((pdot - n * cos2) / (pdot + n * cos2)).powi(2);
     let r1m = ((1.0 / pdot - n / cos2) / (1.0 / pdot + n / cos2)).powi(2);
     let mut trans = DVec3::ZERO;

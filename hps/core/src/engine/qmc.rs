@@ -41,9 +41,20 @@ fn nested_scramble(x: u32, seed: u32) -> u32 {
 }
 
 /// The first two dimensions of Sobol's sequence as 32-bit fractions: the van der Corput
-/// sequence and the dimension with direction numbers v_k = v_{k-1} ^ (v_{k-1} >> 1).
+/// sequence and the dimension with direction numbers v_k = v_{k-1} ^ (v_{k-1} >> 1). The
+/// second is linear over GF(2) in the index bits, so it is the XOR of four byte-table
+/// lookups (a bit loop of 32 steps was a third of the time of a two-bounce path).
 fn sobol_2d(index: u32) -> (u32, u32) {
-    let x = index.reverse_bits();
+    let t = &SOBOL_DIM1_BYTES;
+    let y = t[0][(index & 0xff) as usize]
+        ^ t[1][((index >> 8) & 0xff) as usize]
+        ^ t[2][((index >> 16) & 0xff) as usize]
+        ^ t[3][(index >> 24) as usize];
+    (index.reverse_bits(), y)
+}
+
+/// Sobol's second dimension by the definition: XOR of v_k over the set bits k of `index`.
+const fn sobol_dim1_bits(index: u32) -> u32 {
     let mut y = 0u32;
     let mut v = 1u32 << 31;
     let mut i = index;
@@ -54,8 +65,24 @@ fn sobol_2d(index: u32) -> (u32, u32) {
         v ^= v >> 1;
         i >>= 1;
     }
-    (x, y)
+    y
 }
+
+/// `SOBOL_DIM1_BYTES[b][x]`: the second dimension's contribution of byte `b` of the index
+/// holding `x`.
+const SOBOL_DIM1_BYTES: [[u32; 256]; 4] = {
+    let mut t = [[0u32; 256]; 4];
+    let mut b = 0;
+    while b < 4 {
+        let mut x = 0;
+        while x < 256 {
+            t[b][x] = sobol_dim1_bits((x as u32) << (8 * b));
+            x += 1;
+        }
+        b += 1;
+    }
+    t
+};
 
 /// One randomisation of the point set: the scramble seeds and digital shifts of each pair.
 #[derive(Clone, Debug)]
@@ -118,6 +145,15 @@ mod tests {
                 }
                 assert!(seen.iter().all(|&c| c == 1), "pair {k} {nx}x{ny}");
             }
+        }
+    }
+
+    /// The byte tables give the second dimension exactly as the bit-by-bit definition.
+    #[test]
+    fn byte_tables_match_the_definition() {
+        let mut rng = Rng::for_stream(7, 0);
+        for i in (0..4096u32).chain((0..4096).map(|_| (rng.next_u64() >> 32) as u32)) {
+            assert_eq!(sobol_2d(i).1, sobol_dim1_bits(i), "{i}");
         }
     }
 

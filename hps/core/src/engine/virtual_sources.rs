@@ -19,26 +19,12 @@ use super::integrator::sample_cone;
 use super::material::{glass_fractions, Material};
 use super::ray::Ray;
 use super::rng::Rng;
-use super::shapes::Primitive;
 use super::sky::DistantKind;
 use super::world::World;
 use glam::DVec3;
 
 /// Most surfaces a shadow ray passes through on its way to the mirror.
 const MAX_CROSSINGS: usize = 64;
-
-/// The primitives that make virtual sources: polygons with a `mirror` material.
-pub fn mirror_polygons(world: &World) -> impl Iterator<Item = (u32, DVec3, DVec3)> + '_ {
-    (0..world.primitive_count() as u32).filter_map(move |i| {
-        let Material::Mirror { reflectance_rgb } = world.material(i) else {
-            return None;
-        };
-        match world.primitive(i) {
-            Primitive::Polygon(p) => Some((i, p.normal, *reflectance_rgb)),
-            _ => None,
-        }
-    })
-}
 
 /// What a shadow ray from `origin` (leaving surface `from`) along unit `dir` keeps on its way
 /// to the front of primitive `target`: the product of the transmissions crossed and the hit
@@ -101,7 +87,7 @@ pub fn mirrored_lights(
     {
         return total;
     }
-    for (mirror, n, reflectance) in mirror_polygons(world) {
+    for &(mirror, n, reflectance) in world.mirrors() {
         if Some(mirror) == from {
             continue;
         }

@@ -44,6 +44,9 @@ pub struct World {
     /// Polygons that may serve as portals (glass or invisible), with their vertices.
     portal_candidates: Vec<(u32, Vec<DVec3>)>,
     portals: Portals,
+    /// Plane mirrors (primitive, normal, reflectance), for virtual sources: listed once, not
+    /// found by a scan of every primitive at every vertex.
+    mirrors: Vec<(u32, DVec3, DVec3)>,
     /// The radiance-proportional distribution of escape directions, built on first use and
     /// dropped whenever the sources or the environment change.
     sky_distribution: std::sync::OnceLock<Option<SkyDistribution>>,
@@ -160,8 +163,19 @@ impl World {
             names,
             portal_candidates: Vec::new(),
             portals: Portals::default(),
+            mirrors: Vec::new(),
             sky_distribution: std::sync::OnceLock::new(),
         };
+        world.mirrors = (0..world.primitives.len() as u32)
+            .filter_map(
+                |i| match (world.material(i), &world.primitives[i as usize]) {
+                    (Material::Mirror { reflectance_rgb }, Primitive::Polygon(p)) => {
+                        Some((i, p.normal, *reflectance_rgb))
+                    }
+                    _ => None,
+                },
+            )
+            .collect();
         world.portal_candidates = polygon_vertices
             .into_iter()
             .filter(|(p, _)| matches!(world.material(*p), Material::Glass(_) | Material::Invisible))
@@ -326,6 +340,12 @@ impl World {
     /// The geometry of a primitive (virtual sources need the mirrors' planes).
     pub fn primitive(&self, primitive: u32) -> &Primitive {
         &self.primitives[primitive as usize]
+    }
+
+    /// Plane mirrors, the primitives that make virtual sources: (primitive, normal,
+    /// reflectance).
+    pub fn mirrors(&self) -> &[(u32, DVec3, DVec3)] {
+        &self.mirrors
     }
 
     pub fn is_flat(&self, primitive: u32) -> bool {

@@ -19,6 +19,42 @@ pub struct GroupGeometry {
     pub solid_angle_sr: Vec<f32>,
 }
 
+/// The geometry of the last readout asked for. The captures of a campaign share a readout,
+/// so a pass over them computes the geometry once, not once per capture.
+#[derive(Default)]
+pub struct GeometryCache {
+    last: Option<(ReadoutKey, GroupGeometry)>,
+}
+
+/// A readout and frame size: column start, row start, skip, raw width, raw height.
+type ReadoutKey = (u32, u32, u32, usize, usize);
+
+impl GeometryCache {
+    /// The geometry of `raw_width` x `raw_height` frames read out with `readout`.
+    pub fn get(
+        &mut self,
+        camera: &CameraModel,
+        readout: &Readout,
+        raw_width: usize,
+        raw_height: usize,
+    ) -> &GroupGeometry {
+        let key = (
+            readout.col_start,
+            readout.row_start,
+            readout.skip,
+            raw_width,
+            raw_height,
+        );
+        if self.last.as_ref().map(|(k, _)| *k) != Some(key) {
+            self.last = Some((
+                key,
+                GroupGeometry::new(camera, readout, raw_width, raw_height),
+            ));
+        }
+        &self.last.as_ref().expect("just set").1
+    }
+}
+
 impl GroupGeometry {
     /// Geometry of the groups of raw frames of `raw_width` x `raw_height` samples read out
     /// with `readout`.

@@ -10,7 +10,7 @@ mod radiance_sky;
 
 pub use capture::{map_capture, CaptureMap, CaptureMapError};
 pub use exr_file::{read_exr, write_exr, MapFileError, DEVICE_ATTRIBUTE, READOUT_ATTRIBUTE};
-pub use geometry::GroupGeometry;
+pub use geometry::{GeometryCache, GroupGeometry};
 pub use lookup::SkyLookup;
 pub use merge::{
     merge, Exposure, ExposureFrame, GroupParams, GroupedFrame, HdrError, LuminanceMap, MapFlag,

@@ -10,7 +10,7 @@
 use crate::camera::{CameraModel, DeviceConfig};
 use crate::campaign::Campaign;
 use crate::engine::{self, DaylightCoefficients, Settings, World};
-use crate::hdr::{map_capture, GroupGeometry, LuminanceMap, MapFlag};
+use crate::hdr::{map_capture, GeometryCache, GroupGeometry, LuminanceMap, MapFlag};
 use crate::scene::Sensor;
 use crate::sky::SkyPatches;
 use crate::sun::{extract_sun, remove_sun, solar_position, ExtractedSun, SunSearch};
@@ -276,23 +276,10 @@ pub fn capture_terms(
     let sensors = room.sensors.len();
     let mut out = Vec::with_capacity(captures.len());
     // Captures of one campaign share a readout: compute the geometry once per readout.
-    let mut geometry_cache: Option<(ReadoutKey, GroupGeometry)> = None;
+    let mut geometries = GeometryCache::default();
     for (k, c) in captures.iter().enumerate() {
         progress(k, captures.len());
-        let key = (
-            c.readout.col_start,
-            c.readout.row_start,
-            c.readout.skip,
-            c.raw_width,
-            c.raw_height,
-        );
-        if geometry_cache.as_ref().map(|(k, _)| *k) != Some(key) {
-            geometry_cache = Some((
-                key,
-                GroupGeometry::new(&camera, &c.readout, c.raw_width, c.raw_height),
-            ));
-        }
-        let geometry = &geometry_cache.as_ref().expect("just set").1;
+        let geometry = geometries.get(&camera, &c.readout, c.raw_width, c.raw_height);
         let search = SunSearch {
             predicted_direction: Some(c.spa_sun),
             max_offset_deg: 12.0,
@@ -403,9 +390,6 @@ pub fn capture_terms(
     }
     Ok(out)
 }
-
-/// A readout and frame size (col_start, row_start, skip, raw width, raw height).
-type ReadoutKey = (u32, u32, u32, usize, usize);
 
 /// The parameters of the model: the base and every effect the loop may add.
 #[derive(Clone, Debug, PartialEq)]

@@ -20,12 +20,12 @@
 use super::device_model::{CaptureData, ModelError, Room};
 use super::device_model::{CaptureTerms, ModelState};
 use super::effect_vignetting::{correct_terms, minimise_1d, HiddenSun, SkyGeometry};
-use super::effects::{correlation, fit_error, Candidate, Effect, Sample};
+use super::effects::{correlation, fit_error, residual_points, Candidate, Effect, Sample};
 use super::split::FitSet;
 use crate::camera::{CameraModel, DeviceConfig};
 use crate::campaign::Campaign;
 use crate::engine::{DaylightCoefficients, Settings};
-use crate::sky::perez::{PerezConditions, PerezInput, PerezSky};
+use crate::sky::perez::{PerezConditions, PerezSky};
 use chrono::{Datelike, TimeDelta};
 use std::collections::BTreeMap;
 
@@ -89,22 +89,10 @@ pub fn hidden_suns(
 /// through the Perez 1990 model as gendaylit converts (the loop's Perez baseline).
 fn reference_direct_normal_lux(campaign: &Campaign, c: &CaptureData) -> Option<f64> {
     let table = campaign.pyranometer.as_ref()?;
-    let row = table
-        .rows
-        .iter()
-        .filter(|r| (r.time - c.time).abs() <= TimeDelta::minutes(5))
-        .min_by_key(|r| (r.time - c.time).abs())?;
-    let input = match (row.dni_wm2, row.dhi_wm2, row.ghi_wm2) {
-        (Some(dni), Some(dhi), _) => PerezInput::DirectNormalDiffuse {
-            direct_normal_w_m2: dni,
-            diffuse_horizontal_w_m2: dhi,
-        },
-        (None, Some(dhi), Some(ghi)) => PerezInput::GlobalDiffuse {
-            global_horizontal_w_m2: ghi,
-            diffuse_horizontal_w_m2: dhi,
-        },
-        _ => return None,
-    };
+    let row = super::illuminance_loop::nearest_in_time(&table.rows, TimeDelta::minutes(5), |r| {
+        r.time - c.time
+    })?;
+    let input = row.perez_input()?;
     let conditions = PerezConditions {
         day_of_year: c.time.ordinal() as u16,
         ..PerezConditions::gendaylit_ang(c.spa_sun)
@@ -160,16 +148,9 @@ pub fn fit_unseen_sky(
     };
     // Signature: the relative residual follows the unseen sky's share of the weight.
     let current = correct_terms(raw, dc, geometry, state);
-    let mut xy = Vec::new();
-    for s in fit.samples() {
-        let t = &current[s.capture];
-        let p = super::device_model::predict(state, t);
-        for (k, pk) in p.iter().enumerate() {
-            if let Some(m) = s.measured(k, state.clock_offset_s).filter(|m| *m > 0.0) {
-                xy.push((t.unseen_sky_fraction, pk / m - 1.0));
-            }
-        }
-    }
+    let xy = residual_points(state, &current, fit, |_, t| {
+        vec![t.unseen_sky_fraction; t.sky_with_sun_lux.len()]
+    });
     let r = correlation(&xy);
     let hidden_residual: Vec<f64> = fit
         .samples()

@@ -19,7 +19,9 @@
 //! (clear against overcast skies).
 
 use super::device_model::{CaptureTerms, ModelState, Room};
-use super::effects::{correlation, fit_error, fit_linear, Candidate, Effect, FreeLinear, Sample};
+use super::effects::{
+    correlation, fit_error, fit_linear, residual_points, Candidate, Effect, FreeLinear, Sample,
+};
 use super::sky_colour::CaptureColour;
 use super::split::FitSet;
 use std::collections::BTreeMap;
@@ -174,24 +176,14 @@ pub fn fit_spectral(
     }
     let (_, next) = at(best.1);
     // Signature: the relative residual under `state` against the capture's sky colour index.
-    let mut xy = Vec::new();
-    for s in fit.samples() {
-        let t = &terms[s.capture];
-        let Some(c) = t
+    // The sky colour index is per capture (NaN without one: left out).
+    let xy = residual_points(state, terms, fit, |_, t| {
+        let c = t
             .spectral
             .as_ref()
-            .map(|sp| sp.colour.sky_index)
-            .filter(|c| c.is_finite())
-        else {
-            continue;
-        };
-        let p = super::device_model::predict(state, t);
-        for (k, pk) in p.iter().enumerate() {
-            if let Some(m) = s.measured(k, state.clock_offset_s).filter(|m| *m > 0.0) {
-                xy.push((c, pk / m - 1.0));
-            }
-        }
-    }
+            .map_or(f64::NAN, |sp| sp.colour.sky_index);
+        vec![c; t.sky_with_sun_lux.len()]
+    });
     let r = correlation(&xy);
     let mut parameters = BTreeMap::new();
     parameters.insert("slope_per_index".into(), best.1);
@@ -223,23 +215,10 @@ pub fn sky_colours(
 ) -> Result<Vec<CaptureColour>, super::device_model::ModelError> {
     let camera = crate::camera::CameraModel::new(device.clone());
     let patches = room.dc.patches();
-    let mut geometry: Option<(ReadoutKey, crate::hdr::GroupGeometry)> = None;
+    let mut geometries = crate::hdr::GeometryCache::default();
     let mut out = Vec::with_capacity(captures.len());
     for ((c, t), info) in captures.iter().zip(terms).zip(&campaign.captures) {
-        let key = (
-            c.readout.col_start,
-            c.readout.row_start,
-            c.readout.skip,
-            c.raw_width,
-            c.raw_height,
-        );
-        if geometry.as_ref().map(|g| g.0) != Some(key) {
-            geometry = Some((
-                key,
-                crate::hdr::GroupGeometry::new(&camera, &c.readout, c.raw_width, c.raw_height),
-            ));
-        }
-        let g = &geometry.as_ref().expect("just set").1;
+        let g = geometries.get(&camera, &c.readout, c.raw_width, c.raw_height);
         let sun_groups: &[usize] = t.sun.as_ref().map_or(&[], |s| &s.groups);
         out.push(super::sky_colour::capture_colour(
             &info.dir, device, g, &patches, sun_groups,
@@ -247,9 +226,6 @@ pub fn sky_colours(
     }
     Ok(out)
 }
-
-/// A readout and frame size (col_start, row_start, skip, raw width, raw height).
-type ReadoutKey = (u32, u32, u32, usize, usize);
 
 /// Attaches the spectral terms of `colours` to `terms` (after every recomputation of the
 /// terms: the colours come from the raw frames and do not change with the model).

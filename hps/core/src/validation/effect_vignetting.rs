@@ -15,11 +15,11 @@
 //! seen sky as [`SkyPatches::aggregate`] fills it.
 
 use super::device_model::{CaptureData, CaptureTerms, ModelState};
-use super::effects::{correlation, fit_error, Candidate, Effect, Sample};
+use super::effects::{correlation, fit_error, residual_points, Candidate, Effect, Sample};
 use super::split::FitSet;
 use crate::camera::{CameraModel, DeviceConfig};
 use crate::engine::DaylightCoefficients;
-use crate::hdr::{GroupGeometry, MapFlag};
+use crate::hdr::{GeometryCache, MapFlag};
 use crate::sky::SkyPatches;
 use glam::DVec3;
 use std::collections::BTreeMap;
@@ -38,9 +38,6 @@ fn factor(v: f64, a: f64) -> f64 {
 /// A sun beyond the maps' field: per sensor, lux per lux of direct-normal illuminance, and
 /// the reference direct-normal illuminance, lux.
 pub type HiddenSun = (Vec<f64>, f64);
-
-/// A readout and frame size (col_start, row_start, skip, raw width, raw height).
-type ReadoutKey = (u32, u32, u32, usize, usize);
 
 /// Per capture, where the map's light came from in the camera: what the sky effects need
 /// beyond [`CaptureTerms`].
@@ -84,25 +81,12 @@ impl SkyGeometry {
             let c = patches.centre(p);
             camera.off_axis_rad(DVec3::new(c.x, c.y, -c.z)).to_degrees()
         }));
-        let mut cache: Option<(ReadoutKey, GroupGeometry)> = None;
+        let mut geometries = GeometryCache::default();
         let (mut bin_radial2, mut sun_radial2, mut shown, mut sun_deg) =
             (Vec::new(), Vec::new(), Vec::new(), Vec::new());
         let mut lens_fov_deg: f64 = 0.0;
         for (c, t) in captures.iter().zip(terms) {
-            let key = (
-                c.readout.col_start,
-                c.readout.row_start,
-                c.readout.skip,
-                c.raw_width,
-                c.raw_height,
-            );
-            if cache.as_ref().map(|(k, _)| *k) != Some(key) {
-                cache = Some((
-                    key,
-                    GroupGeometry::new(&camera, &c.readout, c.raw_width, c.raw_height),
-                ));
-            }
-            let geometry = &cache.as_ref().expect("just set").1;
+            let geometry = geometries.get(&camera, &c.readout, c.raw_width, c.raw_height);
             let (mut sum, mut omega) = (vec![0.0f64; 2 * n], vec![0.0f64; 2 * n]);
             let mut max_deg: f64 = 0.0;
             for i in 0..c.map.luminance_cd_m2.len().min(geometry.direction.len()) {
@@ -361,19 +345,9 @@ pub fn fit_vignetting(
     // Signature: the relative residual grows (negative: under-read) with the off-axis angle
     // of the light reaching the sensor.
     let current = correct_terms(raw, dc, geometry, state);
-    let mut xy = Vec::new();
-    for s in fit.samples() {
-        let t = &current[s.capture];
-        let p = super::device_model::predict(state, t);
-        let angle = light_off_axis_deg(t, dc, geometry, s.capture);
-        for (k, pk) in p.iter().enumerate() {
-            if let Some(m) = s.measured(k, state.clock_offset_s).filter(|m| *m > 0.0) {
-                if angle[k].is_finite() {
-                    xy.push((angle[k], pk / m - 1.0));
-                }
-            }
-        }
-    }
+    let xy = residual_points(state, &current, fit, |capture, t| {
+        light_off_axis_deg(t, dc, geometry, capture)
+    });
     let r = correlation(&xy);
     let mut parameters = BTreeMap::new();
     parameters.insert("extra_vignetting".into(), v);

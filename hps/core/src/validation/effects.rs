@@ -384,6 +384,32 @@ fn readings<'a>(
     })
 }
 
+/// (x, predicted / measured − 1) for every reading of the fit set under `state`, where
+/// `x(capture, terms)` gives the variable per sensor (readings where it is not finite are left
+/// out): the points whose correlation is an effect's residual signature.
+pub(super) fn residual_points(
+    state: &ModelState,
+    terms: &[CaptureTerms],
+    fit: &FitSet<Sample>,
+    mut x: impl FnMut(usize, &CaptureTerms) -> Vec<f64>,
+) -> Vec<(f64, f64)> {
+    let mut points = Vec::new();
+    for s in fit.samples() {
+        let t = &terms[s.capture];
+        let p = super::device_model::predict(state, t);
+        let xs = x(s.capture, t);
+        for (k, pk) in p.iter().enumerate() {
+            let Some(m) = s.measured(k, state.clock_offset_s).filter(|m| *m > 0.0) else {
+                continue;
+            };
+            if let Some(xk) = xs.get(k).filter(|v| v.is_finite()) {
+                points.push((*xk, pk / m - 1.0));
+            }
+        }
+    }
+    points
+}
+
 /// Widest clock offset the loop scans, seconds.
 pub const CLOCK_SCAN_S: f64 = 300.0;
 

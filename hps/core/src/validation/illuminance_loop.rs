@@ -26,7 +26,7 @@ use super::split::{compare, split, Figure, FitSet, HoldoutSet, Score, SplitPlan}
 use crate::camera::{DeviceConfig, ImagePoint};
 use crate::campaign::Campaign;
 use crate::engine::Settings;
-use crate::sky::perez::{PerezConditions, PerezInput, PerezSky};
+use crate::sky::perez::{PerezConditions, PerezSky};
 use chrono::{Datelike, TimeDelta, Timelike, Utc};
 use std::collections::BTreeMap;
 
@@ -507,20 +507,10 @@ fn perez_predictions(
             outdoor.push(None);
             continue;
         };
-        let input = match (row.dni_wm2, row.dhi_wm2, row.ghi_wm2) {
-            (Some(dni), Some(dhi), _) => PerezInput::DirectNormalDiffuse {
-                direct_normal_w_m2: dni,
-                diffuse_horizontal_w_m2: dhi,
-            },
-            (None, Some(dhi), Some(ghi)) => PerezInput::GlobalDiffuse {
-                global_horizontal_w_m2: ghi,
-                diffuse_horizontal_w_m2: dhi,
-            },
-            _ => {
-                out.push(None);
-                outdoor.push(None);
-                continue;
-            }
+        let Some(input) = row.perez_input() else {
+            out.push(None);
+            outdoor.push(None);
+            continue;
         };
         let conditions = PerezConditions {
             day_of_year: c.time.ordinal() as u16,
@@ -1138,7 +1128,7 @@ pub fn run_loop(
 
 /// The item whose time offset (item minus target) is smallest in magnitude and within
 /// `window`: the one rule by which readings are matched to capture times.
-fn nearest_in_time<'a, T>(
+pub(super) fn nearest_in_time<'a, T>(
     items: impl IntoIterator<Item = &'a T>,
     window: TimeDelta,
     offset: impl Fn(&T) -> TimeDelta,
