@@ -15,11 +15,24 @@
 //! replicate's own randomisation; the replicates are independent, so the standard error is
 //! the spread of their means (the paths within one are not independent, and their spread
 //! would overstate it).
+//!
+//! With [`Settings::path_reuse`] the sensors go in groups of up to [`REUSE_GROUP`]
+//! consecutive ones (a grid's rows are neighbours), and path i of every sensor of a group is
+//! traced together. When a path's first vertex is a Lambertian surface, its estimate of the
+//! radiance there serves every sensor of the group that sees the point: sensor j takes
+//! π L p_j / Σ_k p_k, p_k the area density with which sensor k's cosine-weighted first
+//! direction lands there (the balance heuristic over the group's sensors; Veach 1997 §9.2;
+//! path reuse as in Bekaert, Sbert & Halton 2002, "Accelerating path tracing by re-using
+//! paths"). Sample i of sensor j is then its own path's remaining terms plus its shares of
+//! the group's i-th vertices, so the samples of different i stay independent and the
+//! replicates stay valid. The expensive part of a path, everything past the first vertex,
+//! is thus used by several sensors for one visibility ray each.
 
 use super::error::EngineError;
-use super::integrator::{irradiance_sample, Settings};
+use super::integrator::{irradiance_sample, irradiance_sample_shared, Settings, SharedVertex};
 use super::material::bright;
 use super::qmc::Randomisation;
+use super::ray::Ray;
 use super::rng::Rng;
 use super::world::World;
 use crate::scene::Sensor;
@@ -36,6 +49,11 @@ const BATCH_SAMPLES: u32 = 64;
 /// error known to about ±18 % (a χ² with 15 degrees of freedom), few enough that each
 /// keeps most of the stratification's gain.
 pub const REPLICATES: u32 = 16;
+
+/// Most sensors sharing their paths' first vertices. Each shared vertex costs a visibility
+/// ray per other sensor of the group, so a larger group pays more rays for vertices that
+/// distant sensors rarely see.
+pub const REUSE_GROUP: usize = 8;
 
 /// Offset of the seeds of the point sets' randomisations, so they are not the paths' streams.
 const RANDOMISATION_SEED: u64 = 0x51A7_1F1E_D000_0001;
@@ -78,11 +96,16 @@ pub fn illuminance(
     settings.validate()?;
     let n = settings.samples_per_sensor;
     let batches = n.div_ceil(BATCH_SAMPLES);
-    let total = sensors.len() as u64 * u64::from(batches);
-    let done = std::sync::atomic::AtomicU64::new(0);
-    let jobs: Vec<(usize, u32)> = (0..sensors.len())
-        .flat_map(|s| (0..batches).map(move |b| (s, b)))
+    let group_size = if settings.path_reuse { REUSE_GROUP } else { 1 };
+    let groups: Vec<std::ops::Range<usize>> = (0..sensors.len())
+        .step_by(group_size)
+        .map(|start| start..(start + group_size).min(sensors.len()))
         .collect();
+    let jobs: Vec<(usize, u32)> = (0..groups.len())
+        .flat_map(|g| (0..batches).map(move |b| (g, b)))
+        .collect();
+    let total = jobs.len() as u64;
+    let done = std::sync::atomic::AtomicU64::new(0);
     let replicates = if settings.stratified {
         REPLICATES.min(n)
     } else {
@@ -102,40 +125,78 @@ pub fn illuminance(
     } else {
         Vec::new()
     };
-    let sums: Vec<Sums> = jobs
+    let job_sums: Vec<Vec<Sums>> = jobs
         .par_iter()
-        .map(|&(s, b)| {
-            let sensor = &sensors[s];
-            let mut rng = Rng::for_stream(settings.seed, ((s as u64) << 32) | u64::from(b));
+        .map(|&(g, b)| {
+            let group = groups[g].clone();
+            let members = &sensors[group.clone()];
+            let reuse = members.len() > 1;
+            let mut rngs: Vec<Rng> = group
+                .clone()
+                .map(|s| Rng::for_stream(settings.seed, ((s as u64) << 32) | u64::from(b)))
+                .collect();
             let count = BATCH_SAMPLES.min(n - b * BATCH_SAMPLES);
-            let mut acc = Sums::default();
+            let mut acc = vec![Sums::default(); members.len()];
+            let mut e = vec![DVec3::ZERO; members.len()];
+            let mut shared: Vec<(usize, SharedVertex)> = Vec::with_capacity(members.len());
             for k in 0..count {
                 let i = b * BATCH_SAMPLES + k;
                 let r = i % replicates;
-                if settings.stratified {
-                    let set = &randomisations[s * replicates as usize + r as usize];
-                    let point = set.point(i / replicates, &mut rng);
-                    rng.set_prefix(&point);
+                e.fill(DVec3::ZERO);
+                shared.clear();
+                for (local, (s, sensor)) in group.clone().zip(members).enumerate() {
+                    let rng = &mut rngs[local];
+                    if settings.stratified {
+                        let set = &randomisations[s * replicates as usize + r as usize];
+                        let point = set.point(i / replicates, rng);
+                        rng.set_prefix(&point);
+                    }
+                    if reuse {
+                        let (own, vertex) = irradiance_sample_shared(
+                            world,
+                            sensor.position_m,
+                            sensor.direction,
+                            settings,
+                            rng,
+                        );
+                        e[local] += own;
+                        if let Some(v) = vertex {
+                            shared.push((local, v));
+                        }
+                    } else {
+                        e[local] += irradiance_sample(
+                            world,
+                            sensor.position_m,
+                            sensor.direction,
+                            settings,
+                            rng,
+                        );
+                    }
+                    rng.clear_prefix();
                 }
-                let e = irradiance_sample(
-                    world,
-                    sensor.position_m,
-                    sensor.direction,
-                    settings,
-                    &mut rng,
-                );
-                rng.clear_prefix();
-                let lux = lux_from_irradiance(e);
-                acc.rgb += e;
-                acc.lux += lux;
-                acc.lux2 += lux * lux;
-                acc.replicate_lux[r as usize] += lux;
+                for (from, v) in &shared {
+                    share_vertex(world, members, *from, v, &mut e);
+                }
+                for (a, x) in acc.iter_mut().zip(&e) {
+                    let lux = lux_from_irradiance(*x);
+                    a.rgb += *x;
+                    a.lux += lux;
+                    a.lux2 += lux * lux;
+                    a.replicate_lux[r as usize] += lux;
+                }
             }
             let d = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(d, total);
             acc
         })
         .collect();
+    // Per sensor, its batches' sums in batch order.
+    let mut sums: Vec<Sums> = vec![Sums::default(); sensors.len() * batches as usize];
+    for (&(g, b), per_sensor) in jobs.iter().zip(&job_sums) {
+        for (s, one) in groups[g].clone().zip(per_sensor) {
+            sums[s * batches as usize + b as usize] = *one;
+        }
+    }
     Ok(sensors
         .iter()
         .enumerate()
@@ -167,6 +228,51 @@ pub fn illuminance(
             }
         })
         .collect())
+}
+
+/// Hands the shared vertex `v`, found by the path of sensor `from` of `group`, to every sensor
+/// of the group that sees it directly from the same side: sensor j's irradiance sample `e[j]`
+/// gains π L p_j / Σ_k p_k, where p_k = (cos θ_k / π) cos θ_v / d_k² is the area density at
+/// the vertex of sensor k's cosine-weighted first direction (0 where the vertex is not k's
+/// first hit). Over the group's paths this counts the light of the Lambertian first vertices
+/// once for each sensor in expectation (balance heuristic).
+fn share_vertex(world: &World, group: &[Sensor], from: usize, v: &SharedVertex, e: &mut [DVec3]) {
+    let side = (group[from].position_m - v.position_m).dot(v.normal).signum();
+    let mut density = [0.0f64; REUSE_GROUP];
+    let mut total = 0.0;
+    for (k, sensor) in group.iter().enumerate() {
+        let to = v.position_m - sensor.position_m;
+        let d2 = to.length_squared();
+        if (d2).partial_cmp(&1e-18) != Some(std::cmp::Ordering::Greater) {
+            continue;
+        }
+        let dist = d2.sqrt();
+        let w = to / dist;
+        let cos_k = sensor.direction.normalize_or_zero().dot(w);
+        let cos_v = -w.dot(v.normal) * side;
+        if !(cos_k > 0.0 && cos_v > 0.0) {
+            continue;
+        }
+        // The vertex must be sensor k's first hit along w (the sensor that found it saw it).
+        if k != from {
+            match world.intersect(&Ray::new(sensor.position_m, w), None) {
+                Some(h)
+                    if h.primitive == v.primitive
+                        && (h.t_m - dist).abs() <= 1e-6 * dist.max(1.0) => {}
+                _ => continue,
+            }
+        }
+        density[k] = cos_k / std::f64::consts::PI * cos_v / d2;
+        total += density[k];
+    }
+    if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+        return;
+    }
+    for (x, p) in e.iter_mut().zip(&density) {
+        if *p > 0.0 {
+            *x += std::f64::consts::PI * v.radiance_rgb * (p / total);
+        }
+    }
 }
 
 /// Standard error of the mean `mean` of `n` paths dealt round-robin into independent

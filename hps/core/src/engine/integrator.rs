@@ -81,6 +81,10 @@ pub struct Settings {
     /// unbiased, and the standard error then comes from independent replicates
     /// ([`super::illuminance`]).
     pub stratified: bool,
+    /// Path reuse across sensors ([`super::illuminance`]): the first vertex of each sensor's
+    /// path, when it is a Lambertian surface, also lights the other sensors of its group
+    /// that see it, weighted by the balance heuristic over the group's sensors. Unbiased.
+    pub path_reuse: bool,
 }
 
 impl Default for Settings {
@@ -95,6 +99,7 @@ impl Default for Settings {
             russian_roulette: true,
             sun_portal_sampling: true,
             stratified: true,
+            path_reuse: true,
         }
     }
 }
@@ -131,6 +136,43 @@ pub fn irradiance_sample(
     settings: &Settings,
     rng: &mut Rng,
 ) -> DVec3 {
+    sensor_path(world, position_m, normal, settings, rng, false).0
+}
+
+/// The first vertex of a sensor's path when other sensors may use it (path reuse,
+/// [`super::illuminance`]): a Lambertian surface the sensor sees directly, and the path's
+/// estimate of the radiance it sends back, the same towards every viewer on that side.
+#[derive(Clone, Copy, Debug)]
+pub struct SharedVertex {
+    pub position_m: DVec3,
+    /// The surface's geometric normal there (either side).
+    pub normal: DVec3,
+    pub primitive: u32,
+    pub radiance_rgb: DVec3,
+}
+
+/// [`irradiance_sample`] split for path reuse: the irradiance estimate less what arrives from
+/// a Lambertian first vertex, and that vertex with its radiance estimate. Without the
+/// sun-patch strategy at the sensor (the shared vertex's own sun estimate then counts in
+/// full), so the vertex's estimate does not depend on which sensor found it.
+pub fn irradiance_sample_shared(
+    world: &World,
+    position_m: DVec3,
+    normal: DVec3,
+    settings: &Settings,
+    rng: &mut Rng,
+) -> (DVec3, Option<SharedVertex>) {
+    sensor_path(world, position_m, normal, settings, rng, true)
+}
+
+fn sensor_path(
+    world: &World,
+    position_m: DVec3,
+    normal: DVec3,
+    settings: &Settings,
+    rng: &mut Rng,
+    shared: bool,
+) -> (DVec3, Option<SharedVertex>) {
     let mut e = DVec3::ZERO;
     // Direct: E = L Ω cos θ averaged over the disc (sampled uniformly in solid angle).
     for source in world.distant_sources() {
@@ -150,33 +192,55 @@ pub fn irradiance_sample(
         DVec3::splat(sr * l.dot(normal).max(0.0))
     });
     if settings.ambient_bounces == 0 {
-        return e;
+        return (e, None);
     }
     let nee = SkyNee::new(world, settings);
     let lobe = DiffuseLobe::sensor(normal);
     if let Some(nee) = &nee {
         e += nee.estimate(world, position_m, None, &lobe, rng);
-        e += nee.sun_estimate(world, position_m, None, &lobe, 1.0, 1.0, rng);
+        if !shared {
+            e += nee.sun_estimate(world, position_m, None, &lobe, 1.0, 1.0, rng);
+        }
     }
     // Indirect: cosine-weighted direction, so E = π L(ω) per sample.
     let d = cosine_direction(normal, rng);
     let last = LastDiffuse {
         position_m,
         pdf_sr: lobe.eval(d).1,
+        sun_patch_sampled: !shared,
     };
-    e + PI
-        * trace(
-            world,
-            Ray::new(position_m, d),
-            None,
-            1,
-            settings,
-            rng,
-            &mut |t, dir| t * world.escape_radiance(dir),
-            nee.as_ref(),
-            Some(last),
-            settings.russian_roulette,
-        )
+    let ray = Ray::new(position_m, d);
+    let first = if shared {
+        world.intersect(&ray, None).filter(|h| {
+            matches!(world.material(h.primitive), Material::Normal(m) if m.is_lambertian())
+        })
+    } else {
+        None
+    };
+    let l = trace(
+        world,
+        ray,
+        None,
+        1,
+        settings,
+        rng,
+        &mut |t, dir| t * world.escape_radiance(dir),
+        nee.as_ref(),
+        Some(last),
+        settings.russian_roulette,
+    );
+    match first {
+        Some(h) => (
+            e,
+            Some(SharedVertex {
+                position_m: ray.at(h.t_m),
+                normal: h.normal,
+                primitive: h.primitive,
+                radiance_rgb: l,
+            }),
+        ),
+        None => (e + PI * l, None),
+    }
 }
 
 /// Where the path's last diffuse scattering happened and the density (per steradian) with
@@ -186,6 +250,9 @@ pub fn irradiance_sample(
 struct LastDiffuse {
     position_m: DVec3,
     pdf_sr: f64,
+    /// The vertex also sampled the sun's patch ([`SkyNee::sun_estimate`]), so the next
+    /// vertex's sun estimate shares the light with it by multiple importance sampling.
+    sun_patch_sampled: bool,
 }
 
 /// Next-event estimation of the light beyond the scene (sky and ground `glow`s, environment)
@@ -500,7 +567,7 @@ fn trace(
     // Density × Russian-roulette survival with which the last diffuse vertex chose this
     // segment, while the path has gone straight from it with no crossing: what the sun-patch
     // strategy's weight at the next vertex needs.
-    let mut direct: Option<f64> = last.map(|l| l.pdf_sr);
+    let mut direct: Option<f64> = last.filter(|l| l.sun_patch_sampled).map(|l| l.pdf_sr);
     let mut throughput = DVec3::ONE;
     let mut radiance = DVec3::ZERO;
     let mut specular_events = 0u32;
@@ -638,6 +705,7 @@ fn trace(
                         last = lobe.map(|lobe| LastDiffuse {
                             position_m: p,
                             pdf_sr: lobe.eval(direction).1,
+                            sun_patch_sampled: true,
                         });
                         let mut survival = 1.0;
                         if roulette && ambient_used > RUSSIAN_ROULETTE_AFTER {

@@ -185,6 +185,14 @@ pub struct NormalShading {
 }
 
 impl NormalMaterial {
+    /// Purely diffuse and opaque: its outgoing radiance is the same towards every viewer on
+    /// one side, so a path's estimate of it can serve other sensors
+    /// ([`super::integrator::SharedVertex`]).
+    pub fn is_lambertian(&self) -> bool {
+        self.specularity <= 0.0 && self.kind != NormalKind::Trans
+    }
+
+
     /// m_normal's set-up for a ray in direction `rdir` hitting a surface of front normal
     /// `normal` (`flat` for polygons and rings).
     pub fn shade(&self, rdir: DVec3, normal: DVec3, flat: bool) -> NormalShading {
