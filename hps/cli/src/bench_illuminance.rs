@@ -693,45 +693,67 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
 
     // 3. Our engine, both cores.
     let scene_files = [scene_path.clone(), sky_path.clone()];
-    // (label, portal sampling, sky sampling, sun-patch sampling, stratified)
-    let all_variants: [(&str, bool, bool, bool, bool); 6] = [
+    // (label, portal sampling, sky sampling, sun-patch sampling, stratified, path reuse)
+    let all_variants: [(&str, bool, bool, bool, bool, bool); 8] = [
         (
-            "stratified, portal + sky + sun-patch sampling (MIS, the default)",
+            "stratified, portal + sky + sun-patch sampling (MIS), path reuse: the default",
+            true,
             true,
             true,
             true,
             true,
         ),
         (
-            "stratified, portal + sun-patch sampling",
+            "stratified, portal + sun-patch sampling, path reuse",
             true,
             false,
+            true,
             true,
             true,
         ),
         (
-            "independent samples, portal + sky + sun-patch sampling",
+            "stratified, portal + sun-patch sampling, no path reuse",
+            true,
+            false,
+            true,
+            true,
+            false,
+        ),
+        (
+            "stratified, portal + sky + sun-patch sampling (MIS), no path reuse",
+            true,
             true,
             true,
             true,
             false,
         ),
         (
-            "independent samples, portal + sun-patch sampling",
+            "independent samples, portal + sky + sun-patch sampling, no path reuse",
             true,
-            false,
             true,
-            false,
-        ),
-        (
-            "independent samples, portal sampling only",
             true,
-            false,
             false,
             false,
         ),
         (
-            "independent samples, no next-event estimation of sky or sun patch",
+            "independent samples, portal + sun-patch sampling, no path reuse",
+            true,
+            false,
+            true,
+            false,
+            false,
+        ),
+        (
+            "independent samples, portal sampling only, no path reuse",
+            true,
+            false,
+            false,
+            false,
+            false,
+        ),
+        (
+            "independent samples, no next-event estimation of sky or sun patch, no path reuse",
+            false,
             false,
             false,
             false,
@@ -745,7 +767,7 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
         &[256, 512, 1024, 2048, 4096, 8192, 16384]
     };
     let mut skylux_configs = Vec::new();
-    for &(label, portal, sky_nee, sun_patch, stratified) in our_variants {
+    for &(label, portal, sky_nee, sun_patch, stratified, path_reuse) in our_variants {
         let mut measured = Vec::new();
         for &n in counts {
             let mut estimates = Vec::new();
@@ -762,6 +784,7 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
                     sky_sampling: sky_nee,
                     sun_portal_sampling: sun_patch,
                     stratified,
+                    path_reuse,
                     ..Settings::default()
                 };
                 let result = engine::illuminance(&world, &sensors, &settings, &|_, _| {})?;
