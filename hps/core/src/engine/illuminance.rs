@@ -96,11 +96,11 @@ pub fn illuminance(
     settings.validate()?;
     let n = settings.samples_per_sensor;
     let batches = n.div_ceil(BATCH_SAMPLES);
-    let group_size = if settings.path_reuse { REUSE_GROUP } else { 1 };
-    let groups: Vec<std::ops::Range<usize>> = (0..sensors.len())
-        .step_by(group_size)
-        .map(|start| start..(start + group_size).min(sensors.len()))
-        .collect();
+    let groups = if settings.path_reuse {
+        reuse_groups(sensors, REUSE_GROUP)
+    } else {
+        (0..sensors.len()).map(|s| vec![s]).collect()
+    };
     let jobs: Vec<(usize, u32)> = (0..groups.len())
         .flat_map(|g| (0..batches).map(move |b| (g, b)))
         .collect();
@@ -128,12 +128,12 @@ pub fn illuminance(
     let job_sums: Vec<Vec<Sums>> = jobs
         .par_iter()
         .map(|&(g, b)| {
-            let group = groups[g].clone();
-            let members = &sensors[group.clone()];
+            let group = &groups[g];
+            let members: Vec<&Sensor> = group.iter().map(|&s| &sensors[s]).collect();
             let reuse = members.len() > 1;
             let mut rngs: Vec<Rng> = group
-                .clone()
-                .map(|s| Rng::for_stream(settings.seed, ((s as u64) << 32) | u64::from(b)))
+                .iter()
+                .map(|&s| Rng::for_stream(settings.seed, ((s as u64) << 32) | u64::from(b)))
                 .collect();
             let count = BATCH_SAMPLES.min(n - b * BATCH_SAMPLES);
             let mut acc = vec![Sums::default(); members.len()];
@@ -144,7 +144,7 @@ pub fn illuminance(
                 let r = i % replicates;
                 e.fill(DVec3::ZERO);
                 shared.clear();
-                for (local, (s, sensor)) in group.clone().zip(members).enumerate() {
+                for (local, (&s, sensor)) in group.iter().zip(&members).enumerate() {
                     let rng = &mut rngs[local];
                     if settings.stratified {
                         let set = &randomisations[s * replicates as usize + r as usize];
@@ -175,7 +175,7 @@ pub fn illuminance(
                     rng.clear_prefix();
                 }
                 for (from, v) in &shared {
-                    share_vertex(world, members, *from, v, &mut e);
+                    share_vertex(world, &members, *from, v, &mut e);
                 }
                 for (a, x) in acc.iter_mut().zip(&e) {
                     let lux = lux_from_irradiance(*x);
@@ -193,7 +193,7 @@ pub fn illuminance(
     // Per sensor, its batches' sums in batch order.
     let mut sums: Vec<Sums> = vec![Sums::default(); sensors.len() * batches as usize];
     for (&(g, b), per_sensor) in jobs.iter().zip(&job_sums) {
-        for (s, one) in groups[g].clone().zip(per_sensor) {
+        for (&s, one) in groups[g].iter().zip(per_sensor) {
             sums[s * batches as usize + b as usize] = *one;
         }
     }
@@ -230,14 +230,45 @@ pub fn illuminance(
         .collect())
 }
 
+/// Sensors in groups of at most `size` neighbours, in a fixed order: the first sensor not yet
+/// placed with the `size − 1` unplaced ones nearest to it. (Consecutive lines of a file are
+/// not always neighbours: a grid's row ends next to the next row's start.)
+fn reuse_groups(sensors: &[Sensor], size: usize) -> Vec<Vec<usize>> {
+    let mut placed = vec![false; sensors.len()];
+    let mut groups = Vec::new();
+    for first in 0..sensors.len() {
+        if placed[first] {
+            continue;
+        }
+        let at = sensors[first].position_m;
+        let mut others: Vec<usize> = (first + 1..sensors.len()).filter(|&s| !placed[s]).collect();
+        others.sort_by(|&a, &b| {
+            let (da, db) = (
+                sensors[a].position_m.distance_squared(at),
+                sensors[b].position_m.distance_squared(at),
+            );
+            da.total_cmp(&db).then(a.cmp(&b))
+        });
+        let mut group = vec![first];
+        group.extend(others.into_iter().take(size.saturating_sub(1)));
+        for &s in &group {
+            placed[s] = true;
+        }
+        groups.push(group);
+    }
+    groups
+}
+
 /// Hands the shared vertex `v`, found by the path of sensor `from` of `group`, to every sensor
 /// of the group that sees it directly from the same side: sensor j's irradiance sample `e[j]`
 /// gains π L p_j / Σ_k p_k, where p_k = (cos θ_k / π) cos θ_v / d_k² is the area density at
 /// the vertex of sensor k's cosine-weighted first direction (0 where the vertex is not k's
 /// first hit). Over the group's paths this counts the light of the Lambertian first vertices
 /// once for each sensor in expectation (balance heuristic).
-fn share_vertex(world: &World, group: &[Sensor], from: usize, v: &SharedVertex, e: &mut [DVec3]) {
-    let side = (group[from].position_m - v.position_m).dot(v.normal).signum();
+fn share_vertex(world: &World, group: &[&Sensor], from: usize, v: &SharedVertex, e: &mut [DVec3]) {
+    let side = (group[from].position_m - v.position_m)
+        .dot(v.normal)
+        .signum();
     let mut density = [0.0f64; REUSE_GROUP];
     let mut total = 0.0;
     for (k, sensor) in group.iter().enumerate() {
@@ -295,4 +326,47 @@ fn replicate_stderr(sums: &[f64], n: u32, mean: f64) -> f64 {
         .sum();
     let rf = f64::from(r);
     (rf / (rf - 1.0) * ss).sqrt() / f64::from(n)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A 20 × 20 grid in raster order (a row's end is nowhere near the next row's start)
+    /// goes into groups of at most 8 that hold every point once, and nearly all groups are
+    /// compact: every member within 0.8 m of the group's first point (its 7 nearest on a
+    /// 0.145 × 0.32 m grid are within 0.5 m; only the last, leftover groups may straggle).
+    #[test]
+    fn reuse_groups_are_neighbourhoods() {
+        let text: String = (0..400)
+            .map(|i| {
+                format!(
+                    "{} {} 0.8 0 0 1\n",
+                    0.0725 + 0.145 * (i % 20) as f64,
+                    0.16 + 0.32 * (i / 20) as f64
+                )
+            })
+            .collect();
+        let sensors = crate::scene::parse_sensors("grid.pts", text.as_bytes()).unwrap();
+        let groups = reuse_groups(&sensors, REUSE_GROUP);
+        let mut seen = vec![0; sensors.len()];
+        let mut compact = 0;
+        for g in &groups {
+            assert!(!g.is_empty() && g.len() <= REUSE_GROUP);
+            for &s in g {
+                seen[s] += 1;
+            }
+            let at = sensors[g[0]].position_m;
+            if g.iter().all(|&s| sensors[s].position_m.distance(at) < 0.8) {
+                compact += 1;
+            }
+        }
+        assert!(seen.iter().all(|&c| c == 1));
+        assert_eq!(groups.len(), 50);
+        assert!(
+            compact >= 45,
+            "{compact} of {} groups compact",
+            groups.len()
+        );
+    }
 }

@@ -211,9 +211,9 @@ fn sensor_path(
     };
     let ray = Ray::new(position_m, d);
     let first = if shared {
-        world.intersect(&ray, None).filter(|h| {
-            matches!(world.material(h.primitive), Material::Normal(m) if m.is_lambertian())
-        })
+        world.intersect(&ray, None).filter(
+            |h| matches!(world.material(h.primitive), Material::Normal(m) if m.is_lambertian()),
+        )
     } else {
         None
     };

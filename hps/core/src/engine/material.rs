@@ -192,7 +192,6 @@ impl NormalMaterial {
         self.specularity <= 0.0 && self.kind != NormalKind::Trans
     }
 
-
     /// m_normal's set-up for a ray in direction `rdir` hitting a surface of front normal
     /// `normal` (`flat` for polygons and rings).
     pub fn shade(&self, rdir: DVec3, normal: DVec3, flat: bool) -> NormalShading {
