@@ -59,6 +59,22 @@ pub struct CaptureSpec {
     pub footprint: crate::sensor::Footprint,
 }
 
+impl CaptureSpec {
+    /// The frame renderer for this capture's readout through `camera`.
+    pub fn renderer<'a>(
+        &self,
+        camera: &'a skylux_hps::camera::CameraModel,
+    ) -> crate::sensor::FrameRenderer<'a> {
+        crate::sensor::FrameRenderer {
+            camera,
+            readout: self.readout,
+            raw_width: self.raw_width,
+            raw_height: self.raw_height,
+            footprint: self.footprint,
+        }
+    }
+}
+
 /// Renders one HDR capture of `field` through `camera` with the sensor's noise and writes it
 /// to `dir` in the campaign format. Returns what was written.
 pub fn simulate_capture(
@@ -67,14 +83,8 @@ pub fn simulate_capture(
     field: &(dyn Fn(glam::DVec3) -> f64 + Sync),
     spec: &CaptureSpec,
 ) -> Result<CaptureConfig, WriteCaptureError> {
-    use crate::sensor::{FrameRenderer, Noise};
-    let renderer = FrameRenderer {
-        camera,
-        readout: spec.readout,
-        raw_width: spec.raw_width,
-        raw_height: spec.raw_height,
-        footprint: spec.footprint,
-    };
+    use crate::sensor::Noise;
+    let renderer = spec.renderer(camera);
     let scene = renderer.scene(field);
     let frames: Vec<RawFrame> = spec
         .exposures_us

@@ -25,7 +25,7 @@
 
 use crate::capture::{CaptureSpec, WriteCaptureError};
 use crate::sensor::spectral::{cie_daylight, ChannelResponse, SpectralData};
-use crate::sensor::{FrameRenderer, Noise};
+use crate::sensor::Noise;
 use glam::DVec3;
 use skylux_hps::camera::CameraModel;
 use skylux_hps::campaign::{BayerPattern, CaptureConfig, RawFrame};
@@ -135,13 +135,7 @@ pub fn simulate_capture_coloured(
     spec: &CaptureSpec,
     overhead_us: f64,
 ) -> Result<CaptureConfig, WriteCaptureError> {
-    let renderer = FrameRenderer {
-        camera,
-        readout: spec.readout,
-        raw_width: spec.raw_width,
-        raw_height: spec.raw_height,
-        footprint: spec.footprint,
-    };
+    let renderer = spec.renderer(camera);
     let gain_of = |d: DVec3, c: usize| match colour.cct_k(d) {
         Some(t) => responses.at(t).relative[c],
         None => 1.0,
@@ -208,7 +202,7 @@ mod tests {
     #[test]
     fn channel_scenes_reduce_to_the_grey_frame() {
         let camera = CameraModel::new(skylux_hps::camera::DeviceConfig::default());
-        let renderer = FrameRenderer {
+        let renderer = crate::sensor::FrameRenderer {
             camera: &camera,
             readout: skylux_hps::campaign::Readout {
                 col_start: 1200,

@@ -481,6 +481,17 @@ fn portal_and_sky_sampling_agree_with_plain_sampling_in_a_room() {
     }
 }
 
+/// Sensor `s` over runs with different seeds: the mean illuminance, the observed variance of
+/// the runs' estimates and the mean variance they report (their squared standard errors).
+fn spread_over_seeds(runs: &[Vec<engine::SensorIlluminance>], s: usize) -> (f64, f64, f64) {
+    let n = runs.len() as f64;
+    let x: Vec<f64> = runs.iter().map(|r| r[s].illuminance_lux).collect();
+    let mean = x.iter().sum::<f64>() / n;
+    let observed = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0);
+    let reported = runs.iter().map(|r| r[s].stderr_lux.powi(2)).sum::<f64>() / n;
+    (mean, observed, reported)
+}
+
 /// (g) The standard error the engine reports is the spread it really has, with stratified
 /// samples (from independent replicates) and with independent ones (from the paths'
 /// variance): in the window room of (f) with the same Perez sky plus a sun shining in, at
@@ -518,10 +529,7 @@ fn reported_standard_error_matches_the_spread_over_seeds() {
             })
             .collect();
         for s in 0..sensors.len() {
-            let x: Vec<f64> = runs.iter().map(|r| r[s].illuminance_lux).collect();
-            let mean = x.iter().sum::<f64>() / seeds as f64;
-            let observed = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (seeds - 1) as f64;
-            let reported = runs.iter().map(|r| r[s].stderr_lux.powi(2)).sum::<f64>() / seeds as f64;
+            let (mean, observed, reported) = spread_over_seeds(&runs, s);
             let ratio = observed / reported;
             println!(
                 "stratified {stratified}, sensor {s}: {mean:.1} lux, observed sd {:.2} lux, \
@@ -607,10 +615,7 @@ fn path_reuse_is_unbiased_and_cuts_the_variance() {
         .map(|seed| run(settings(true, 256, 900 + seed)))
         .collect();
     for s in 0..sensors.len() {
-        let x: Vec<f64> = runs.iter().map(|r| r[s].illuminance_lux).collect();
-        let mean = x.iter().sum::<f64>() / seeds as f64;
-        let observed = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (seeds - 1) as f64;
-        let reported = runs.iter().map(|r| r[s].stderr_lux.powi(2)).sum::<f64>() / seeds as f64;
+        let (_, observed, reported) = spread_over_seeds(&runs, s);
         let ratio = observed / reported;
         println!("sensor {s}: observed / reported variance {ratio:.2}");
         assert!(

@@ -330,29 +330,40 @@ mod tests {
     use crate::engine::slab::SlabTest;
     use glam::DVec3;
 
-    /// Random small boxes standing in for primitives: the BVH must find exactly the closest
-    /// hit a brute-force loop finds.
-    #[test]
-    fn matches_brute_force() {
-        let mut rng = Rng::for_stream(11, 0);
-        let boxes: Vec<Aabb> = (0..300)
+    /// `n` boxes with centres in a 10 m cube and half-sizes up to `half_m`, standing in for
+    /// primitives.
+    fn random_boxes(rng: &mut Rng, n: usize, half_m: f64) -> Vec<Aabb> {
+        (0..n)
             .map(|_| {
                 let c = DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 10.0;
-                let h = DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 0.5;
+                let h = DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) * half_m;
                 Aabb {
                     min_m: c - h,
                     max_m: c + h,
                 }
             })
-            .collect();
+            .collect()
+    }
+
+    /// A ray from a point in a 14 m cube around the boxes, in a random direction.
+    fn random_ray(rng: &mut Rng) -> Ray {
+        let o = DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 14.0 - 2.0;
+        let d = (DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) - 0.5).normalize();
+        Ray::new(o, d)
+    }
+
+    /// Random small boxes standing in for primitives: the BVH must find exactly the closest
+    /// hit a brute-force loop finds.
+    #[test]
+    fn matches_brute_force() {
+        let mut rng = Rng::for_stream(11, 0);
+        let boxes = random_boxes(&mut rng, 300, 0.5);
         let bvh = Bvh::build(&boxes);
         let mut sorted = bvh.primitive_order().to_vec();
         sorted.sort();
         assert_eq!(sorted, (0..300).collect::<Vec<u32>>());
         for _ in 0..500 {
-            let o = DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 14.0 - 2.0;
-            let d = (DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) - 0.5).normalize();
-            let ray = Ray::new(o, d);
+            let ray = random_ray(&mut rng);
             let q = RayBoxQuery::new(&ray, 0.0, 1e9);
             let brute = boxes
                 .iter()
@@ -379,21 +390,10 @@ mod tests {
     #[test]
     fn visit_crossed_offers_every_crossed_box() {
         let mut rng = Rng::for_stream(12, 0);
-        let boxes: Vec<Aabb> = (0..200)
-            .map(|_| {
-                let c = DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 10.0;
-                let h = DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 0.7;
-                Aabb {
-                    min_m: c - h,
-                    max_m: c + h,
-                }
-            })
-            .collect();
+        let boxes = random_boxes(&mut rng, 200, 0.7);
         let bvh = Bvh::build(&boxes);
         for _ in 0..300 {
-            let o = DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 14.0 - 2.0;
-            let d = (DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) - 0.5).normalize();
-            let ray = Ray::new(o, d);
+            let ray = random_ray(&mut rng);
             let t_max = 8.0 * rng.uniform();
             let q = RayBoxQuery::new(&ray, 0.0, t_max);
             let mut brute: Vec<u32> = (0..boxes.len() as u32)

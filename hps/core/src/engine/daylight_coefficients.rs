@@ -72,6 +72,21 @@ impl DaylightCoefficients {
             .collect())
     }
 
+    /// Illuminance per sensor, lux, from the bins whose luminance is known: a bin with a
+    /// non-finite luminance (one the camera did not see) adds nothing.
+    pub fn apply_seen(&self, luminance_cd_m2: &[f64]) -> Vec<f64> {
+        (0..self.sensors.len())
+            .map(|s| {
+                self.row(s)
+                    .iter()
+                    .zip(luminance_cd_m2)
+                    .filter(|(_, l)| l.is_finite())
+                    .map(|(c, l)| c * l)
+                    .sum()
+            })
+            .collect()
+    }
+
     /// As [`Self::apply`], into `out`, with the sensors shared among the rayon threads:
     /// the per-capture update of a daemon (400 sensors × 2305 patches is ~1 M multiply-adds).
     pub fn apply_into(&self, luminance_cd_m2: &[f64], out: &mut [f64]) -> Result<(), EngineError> {

@@ -9,7 +9,7 @@
 
 use crate::camera::{CameraModel, DeviceConfig};
 use crate::campaign::Campaign;
-use crate::engine::{self, DaylightCoefficients, Settings, World};
+use crate::engine::{self, DaylightCoefficients, EngineError, Settings, World};
 use crate::hdr::{map_capture, GeometryCache, GroupGeometry, LuminanceMap, MapFlag};
 use crate::scene::Sensor;
 use crate::sky::SkyPatches;
@@ -115,6 +115,17 @@ impl Room {
             dc,
             settings,
         })
+    }
+
+    /// Per sensor, lux per lux of direct-normal illuminance from a sun in unit direction
+    /// `sun` (with standard errors), at the room's settings with 64 to 2048 paths per sensor
+    /// (one direction needs fewer than the whole sky's coefficients).
+    pub fn sun_coefficients(&mut self, sun: DVec3) -> Result<Vec<(f64, f64)>, EngineError> {
+        let settings = Settings {
+            samples_per_sensor: self.settings.samples_per_sensor.clamp(64, 2048),
+            ..self.settings
+        };
+        engine::sun_coefficients(&mut self.world, &self.sensors, sun, &settings)
     }
 }
 
@@ -305,19 +316,6 @@ pub fn capture_terms(
             }
             None => (with_sun.clone(), horizontal_map),
         };
-        let apply = |lum: &[f64]| -> Vec<f64> {
-            (0..sensors)
-                .map(|s| {
-                    room.dc
-                        .row(s)
-                        .iter()
-                        .zip(lum)
-                        .filter(|(_, l)| l.is_finite())
-                        .map(|(c, l)| c * l)
-                        .sum()
-                })
-                .collect()
-        };
         let unseen_ground: Vec<f64> = (0..sensors)
             .map(|s| {
                 (0..n)
@@ -335,16 +333,7 @@ pub fn capture_terms(
         });
         let (sun_lux_per_dn_lux, sun_dn_lux) = match &sun {
             Some(s) => {
-                let settings = Settings {
-                    samples_per_sensor: room.settings.samples_per_sensor.clamp(64, 2048),
-                    ..room.settings
-                };
-                let k = engine::sun_coefficients(
-                    &mut room.world,
-                    &room.sensors,
-                    s.direction,
-                    &settings,
-                )?;
+                let k = room.sun_coefficients(s.direction)?;
                 (
                     k.into_iter().map(|(c, _)| c).collect(),
                     s.direct_normal_illuminance_lux,
@@ -365,8 +354,8 @@ pub fn capture_terms(
             .filter(|f| **f == MapFlag::OverRange)
             .count();
         out.push(CaptureTerms {
-            sky_with_sun_lux: apply(&with_sun),
-            sky_without_sun_lux: apply(&without_sun),
+            sky_with_sun_lux: room.dc.apply_seen(&with_sun),
+            sky_without_sun_lux: room.dc.apply_seen(&without_sun),
             sun_lux_per_dn_lux,
             sun_dn_lux,
             unseen_ground_lux_per_cd_m2: unseen_ground,

@@ -24,7 +24,7 @@ use super::effects::{correlation, fit_error, residual_points, Candidate, Effect,
 use super::split::FitSet;
 use crate::camera::{CameraModel, DeviceConfig};
 use crate::campaign::Campaign;
-use crate::engine::{DaylightCoefficients, Settings};
+use crate::engine::DaylightCoefficients;
 use crate::sky::perez::{PerezConditions, PerezSky};
 use chrono::{Datelike, TimeDelta};
 use std::collections::BTreeMap;
@@ -71,15 +71,7 @@ pub fn hidden_suns(
             out.push(None);
             continue;
         };
-        let k = crate::engine::sun_coefficients(
-            &mut room.world,
-            &room.sensors,
-            c.spa_sun,
-            &Settings {
-                samples_per_sensor: room.settings.samples_per_sensor.clamp(64, 2048),
-                ..room.settings
-            },
-        )?;
+        let k = room.sun_coefficients(c.spa_sun)?;
         out.push(Some((k.into_iter().map(|(c, _)| c).collect(), dn)));
     }
     Ok(out)

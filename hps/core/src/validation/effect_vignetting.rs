@@ -219,20 +219,8 @@ pub fn correct_capture(
     if sun_radial2.is_finite() {
         out.sun_dn_lux = raw.sun_dn_lux / factor(v, sun_radial2);
     }
-    let apply = |lum: &[f64]| -> Vec<f64> {
-        (0..raw.sky_with_sun_lux.len())
-            .map(|s| {
-                dc.row(s)
-                    .iter()
-                    .zip(lum)
-                    .filter(|(_, l)| l.is_finite())
-                    .map(|(c, l)| c * l)
-                    .sum()
-            })
-            .collect()
-    };
-    out.sky_with_sun_lux = apply(&out.bins_with_sun_cd_m2);
-    out.sky_without_sun_lux = apply(&out.bins_without_sun_cd_m2);
+    out.sky_with_sun_lux = dc.apply_seen(&out.bins_with_sun_cd_m2);
+    out.sky_without_sun_lux = dc.apply_seen(&out.bins_without_sun_cd_m2);
     out
 }
 

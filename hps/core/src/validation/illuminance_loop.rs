@@ -533,16 +533,9 @@ fn perez_predictions(
             .map_err(|e| LoopError::Data(e.to_string()))?;
         let dn = sky.direct_normal_illuminance_lux();
         if dn > 0.0 && c.spa_sun.z > 0.0 {
-            let k = crate::engine::sun_coefficients(
-                &mut room.world,
-                &room.sensors,
-                c.spa_sun,
-                &Settings {
-                    samples_per_sensor: room.settings.samples_per_sensor.clamp(64, 2048),
-                    ..room.settings
-                },
-            )
-            .map_err(|e| LoopError::Data(e.to_string()))?;
+            let k = room
+                .sun_coefficients(c.spa_sun)
+                .map_err(|e| LoopError::Data(e.to_string()))?;
             for (ei, (ki, _)) in e.iter_mut().zip(k) {
                 *ei += ki * dn;
             }
