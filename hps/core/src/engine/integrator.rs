@@ -8,10 +8,11 @@
 //! of diffuse (ambient) bounces including the one from the sensor; specular events (glass,
 //! mirror, smooth or Gaussian highlights) do not count against it, as in RADIANCE, and are
 //! bounded by [`Settings::max_specular_events`] (rtrace's `-lr`). With Russian roulette
-//! (paths from sensors and cameras, [`Settings::russian_roulette`]), a path past its third diffuse bounce continues with
-//! probability min(1, throughput / `RUSSIAN_ROULETTE_THROUGHPUT`) and is reweighted by its inverse (Russian roulette, Arvo &
-//! Kirk 1990): unbiased for the given limits, and paths whose remaining contribution is small
-//! stop early. The daylight-coefficient paths ([`escape_sample`]) run to their limits.
+//! (paths from sensors and cameras, [`Settings::russian_roulette`]), a path past its third
+//! diffuse bounce continues with probability min(1, throughput /
+//! `RUSSIAN_ROULETTE_THROUGHPUT`) and is reweighted by its inverse (Arvo & Kirk 1990):
+//! unbiased for the given limits, and paths whose remaining contribution is small stop
+//! early. The daylight-coefficient paths ([`escape_sample`]) run to their limits.
 //!
 //! Sky light is found three ways at every vertex that may scatter diffusely (the sensor
 //! itself and each diffuse vertex within `-ab`): by the sampled continuation leaving the
@@ -32,13 +33,15 @@
 //! measure ([`Settings::sun_portal_sampling`]).
 
 use super::error::EngineError;
-use super::material::{basis, cosine_direction, glass_fractions, DiffuseLobe, Material, Scatter};
+use super::material::{DiffuseLobe, Interaction, Scatter, Shading};
 use super::portal::Portals;
 use super::ray::Ray;
 use super::rng::Rng;
-use super::sky::{DistantEmitter, DistantKind};
+use super::sampling::{cosine_direction, sample_cone};
+use super::sky::DistantKind;
 use super::sky_sampling::SkyDistribution;
-use super::world::World;
+use super::virtual_sources::mirrored_lights;
+use super::world::{Hit, World};
 use glam::DVec3;
 use std::f64::consts::PI;
 
@@ -46,11 +49,8 @@ use std::f64::consts::PI;
 const RUSSIAN_ROULETTE_AFTER: u32 = 3;
 /// Path throughput below which Russian roulette may end a path: it continues with
 /// probability min(1, throughput / this), as rtrace's `-lw` sets the weight below which its
-/// rays play roulette. With 1 (survival = throughput) a path in a room of reflectance 0.5
-/// survived its fourth bounce one time in eight and carried eight times its light: on the
-/// reference room half the variance came from that. 0.25 cut variance × time by 1.3
-/// (measured with 32 seeds over thresholds 1, 0.5, 0.3, 0.2 and 0.15, and roulette from the
-/// 1st to the 4th bounce; see BENCHMARKS.md).
+/// rays play roulette. Below 1, so that a path that survives a deep bounce does not carry
+/// many times its light, which dominated the variance (BENCHMARKS.md).
 const RUSSIAN_ROULETTE_THROUGHPUT: f64 = 0.25;
 /// Controls, named after rtrace's.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -117,16 +117,6 @@ impl Settings {
     }
 }
 
-/// A direction uniformly distributed in the cone of a distant source (pdf 1/Ω).
-pub(crate) fn sample_cone(source: &DistantEmitter, rng: &mut Rng) -> DVec3 {
-    let cos_theta = 1.0 - rng.uniform() * (1.0 - source.cos_half_angle);
-    let sin_theta = (1.0 - cos_theta * cos_theta).max(0.0).sqrt();
-    let phi = 2.0 * PI * rng.uniform();
-    let (u, v) = basis(source.direction);
-    (u * (sin_theta * phi.cos()) + v * (sin_theta * phi.sin()) + source.direction * cos_theta)
-        .normalize()
-}
-
 /// One estimate of the irradiance (W/m² per RGB channel) at `position_m` on a surface facing
 /// unit `normal`, as rtrace -I defines it: ∫ L(ω) cos θ dω over the hemisphere.
 pub fn irradiance_sample(
@@ -188,7 +178,7 @@ fn sensor_path(
         }
     }
     // The sun via plane mirrors (virtual sources).
-    e += super::virtual_sources::mirrored_lights(world, position_m, None, rng, &mut |l, sr| {
+    e += mirrored_lights(world, position_m, None, rng, &mut |l, sr| {
         DVec3::splat(sr * l.dot(normal).max(0.0))
     });
     if settings.ambient_bounces == 0 {
@@ -211,9 +201,9 @@ fn sensor_path(
     };
     let ray = Ray::new(position_m, d);
     let first = if shared {
-        world.intersect(&ray, None).filter(
-            |h| matches!(world.material(h.primitive), Material::Normal(m) if m.is_lambertian()),
-        )
+        world
+            .intersect(&ray, None)
+            .filter(|h| world.material(h.primitive).is_lambertian())
     } else {
         None
     };
@@ -341,10 +331,9 @@ impl<'a> SkyNee<'a> {
             // Into the room from the portal point, through glass and invisible surfaces.
             let ray = Ray::new(p - s * 1e-7, -s);
             let found = world.first_opaque(&ray, None).and_then(|hit| {
-                match world.material(hit.primitive) {
-                    Material::Normal(m) => Some((ray.at(hit.t_m), hit.normal, hit.primitive, m)),
-                    _ => None,
-                }
+                let m = world.material(hit.primitive);
+                m.is_shaded()
+                    .then(|| (ray.at(hit.t_m), hit.normal, hit.primitive, m))
             });
             // The sun-cone sample is drawn whatever happens, so the stream stays aligned.
             let l = sample_cone(source, rng);
@@ -366,7 +355,9 @@ impl<'a> SkyNee<'a> {
             if (cos_y).partial_cmp(&1e-9) != Some(std::cmp::Ordering::Greater) {
                 continue;
             }
-            let shading = m.shade(w, n_y, world.is_flat(prim_y));
+            let Some(shading) = m.shading(w, n_y, world.is_flat(prim_y)) else {
+                continue;
+            };
             let c = shading.source_coefficient(l, source.solid_angle_sr);
             if c == DVec3::ZERO {
                 continue;
@@ -546,6 +537,45 @@ pub(crate) fn trace_radiance(
     )
 }
 
+/// Most invisible surfaces a path passes before it is taken as lost.
+pub(crate) const MAX_CROSSINGS: u32 = 1000;
+
+/// What the path does after a vertex.
+enum Next {
+    /// Goes on from the vertex in this direction after a crossing or a specular event.
+    Straight(DVec3),
+    /// Goes on from the vertex in this direction after a diffuse bounce.
+    Bounce(DVec3),
+    /// Ends.
+    End,
+}
+
+/// What stays fixed while one path is traced.
+struct Tracer<'a, 'e> {
+    world: &'a World,
+    settings: &'a Settings,
+    nee: Option<&'a SkyNee<'a>>,
+    roulette: bool,
+    escape: &'e mut dyn FnMut(DVec3, DVec3) -> DVec3,
+}
+
+/// The state of one path as [`trace`] follows it.
+struct PathState {
+    ray: Ray,
+    from: Option<u32>,
+    ambient_used: u32,
+    throughput: DVec3,
+    radiance: DVec3,
+    specular_events: u32,
+    /// Invisible surfaces passed without scattering; bounded too.
+    crossings: u32,
+    last: Option<LastDiffuse>,
+    /// Density × Russian-roulette survival with which the last diffuse vertex chose this
+    /// segment, while the path has gone straight from it with no crossing: what the sun-patch
+    /// strategy's weight at the next vertex needs.
+    direct: Option<f64>,
+}
+
 /// Radiance arriving back along `ray`, for a path that has already made `ambient_used`
 /// diffuse bounces; a ray that leaves the scene with path throughput `t` in direction `d`
 /// adds `escape(t, d)`. With `nee`, every vertex that may scatter diffusely also estimates
@@ -554,202 +584,253 @@ pub(crate) fn trace_radiance(
 #[allow(clippy::too_many_arguments)]
 fn trace(
     world: &World,
-    mut ray: Ray,
-    mut from: Option<u32>,
-    mut ambient_used: u32,
+    ray: Ray,
+    from: Option<u32>,
+    ambient_used: u32,
     settings: &Settings,
     rng: &mut Rng,
     escape: &mut dyn FnMut(DVec3, DVec3) -> DVec3,
     nee: Option<&SkyNee>,
-    mut last: Option<LastDiffuse>,
+    last: Option<LastDiffuse>,
     roulette: bool,
 ) -> DVec3 {
-    // Density × Russian-roulette survival with which the last diffuse vertex chose this
-    // segment, while the path has gone straight from it with no crossing: what the sun-patch
-    // strategy's weight at the next vertex needs.
-    let mut direct: Option<f64> = last.filter(|l| l.sun_patch_sampled).map(|l| l.pdf_sr);
-    let mut throughput = DVec3::ONE;
-    let mut radiance = DVec3::ZERO;
-    let mut specular_events = 0u32;
-    // Invisible surfaces are passed without scattering; bound them too.
-    let mut crossings = 0u32;
+    let mut tracer = Tracer {
+        world,
+        settings,
+        nee,
+        roulette,
+        escape,
+    };
+    let mut path = PathState {
+        ray,
+        from,
+        ambient_used,
+        throughput: DVec3::ONE,
+        radiance: DVec3::ZERO,
+        specular_events: 0,
+        crossings: 0,
+        last,
+        direct: last.filter(|l| l.sun_patch_sampled).map(|l| l.pdf_sr),
+    };
     loop {
-        let Some(hit) = world.intersect(&ray, from) else {
-            let weight = match (nee, &last) {
-                (Some(nee), Some(last)) => nee.continuation_weight(last, ray.direction),
+        let Some(hit) = world.intersect(&path.ray, path.from) else {
+            return tracer.escape(&path);
+        };
+        let p = path.ray.at(hit.t_m);
+        path.from = Some(hit.primitive);
+        let d = path.ray.direction;
+        let flat = world.is_flat(hit.primitive);
+        let next = match world
+            .material(hit.primitive)
+            .interact(d, hit.normal, flat, false)
+        {
+            Interaction::PassThrough => path.cross(d),
+            Interaction::Emits(l) => {
+                path.radiance += path.throughput * l;
+                Next::End
+            }
+            Interaction::Absorbed => Next::End,
+            Interaction::Specular(step) => path.specular(settings, |rng| step.sample(rng), rng),
+            Interaction::Shaded(shading) => tracer.shade(&mut path, &hit, p, &shading, rng),
+        };
+        match next {
+            Next::End => return path.radiance,
+            Next::Bounce(direction) => path.ray = Ray::new(p, direction),
+            Next::Straight(next) => {
+                if path.throughput.max_element() <= 0.0 {
+                    return path.radiance;
+                }
+                if next != d {
+                    // Turned by a specular event: no next-event strategy produces this path.
+                    path.last = None;
+                }
+                // Any crossing or specular event: the next vertex is not reached directly.
+                path.direct = None;
+                path.ray = Ray::new(p, next);
+            }
+        }
+    }
+}
+
+impl PathState {
+    /// Passes an invisible surface.
+    fn cross(&mut self, d: DVec3) -> Next {
+        self.crossings += 1;
+        if self.crossings > MAX_CROSSINGS {
+            Next::End
+        } else {
+            Next::Straight(d)
+        }
+    }
+
+    /// A specular event, counted against `-lr` before `sample` draws it.
+    fn specular(
+        &mut self,
+        settings: &Settings,
+        sample: impl FnOnce(&mut Rng) -> Scatter,
+        rng: &mut Rng,
+    ) -> Next {
+        self.specular_events += 1;
+        if self.specular_events > settings.max_specular_events {
+            return Next::End;
+        }
+        match sample(rng) {
+            Scatter::Specular { direction, weight } | Scatter::Diffuse { direction, weight } => {
+                self.throughput *= weight;
+                Next::Straight(direction)
+            }
+            Scatter::Absorbed => Next::End,
+        }
+    }
+}
+
+impl Tracer<'_, '_> {
+    /// The path leaves the scene: what it collects there, weighted against the next-event
+    /// strategies of its last diffuse vertex.
+    fn escape(&mut self, path: &PathState) -> DVec3 {
+        let d = path.ray.direction;
+        let weight = match (self.nee, &path.last) {
+            (Some(nee), Some(last)) => nee.continuation_weight(last, d),
+            _ => 1.0,
+        };
+        path.radiance + (self.escape)(path.throughput * weight, d)
+    }
+
+    /// A vertex on a shaded surface: direct light from the sun, its mirror images and the sky
+    /// by next-event estimation, then the continuation sampled from the shading.
+    fn shade(
+        &mut self,
+        path: &mut PathState,
+        hit: &Hit,
+        p: DVec3,
+        shading: &Shading,
+        rng: &mut Rng,
+    ) -> Next {
+        self.sun(path, hit, p, shading, rng);
+        path.radiance += path.throughput
+            * mirrored_lights(self.world, p, path.from, rng, &mut |l, sr| {
+                shading.source_coefficient(l, sr)
+            });
+        let allow_diffuse = path.ambient_used < self.settings.ambient_bounces;
+        let lobe = self.sky(path, p, shading, allow_diffuse, rng);
+        match shading.sample(allow_diffuse, rng) {
+            Scatter::Absorbed => Next::End,
+            Scatter::Diffuse { direction, weight } => {
+                self.bounce(path, p, direction, weight, lobe, rng)
+            }
+            Scatter::Specular { direction, weight } => path.specular(
+                self.settings,
+                |_| Scatter::Specular { direction, weight },
+                rng,
+            ),
+        }
+    }
+
+    /// Next-event estimation of every distant `light` at the vertex; reached straight from a
+    /// diffuse vertex, the sun-patch strategy there could have produced this vertex too, so
+    /// the estimate is weighted by the balance heuristic in area measure.
+    fn sun(&self, path: &mut PathState, hit: &Hit, p: DVec3, shading: &Shading, rng: &mut Rng) {
+        let d = path.ray.direction;
+        let p_direct = match (self.nee, path.direct) {
+            (Some(nee), Some(pdf)) if nee.sun_portals.is_some() => {
+                Some(pdf * hit.normal.dot(d).abs() / (hit.t_m * hit.t_m))
+            }
+            _ => None,
+        };
+        for source in self.world.distant_sources() {
+            if source.kind != DistantKind::Light {
+                continue;
+            }
+            let l = sample_cone(source, rng);
+            let c = shading.source_coefficient(l, source.solid_angle_sr);
+            if c == DVec3::ZERO {
+                continue;
+            }
+            let t = self.world.shadow_transmission(p, path.from, l);
+            if t == DVec3::ZERO {
+                continue;
+            }
+            let w = match (self.nee, p_direct) {
+                (Some(nee), Some(p_a)) if p_a > 0.0 => {
+                    let p_b = nee.sun_patch_pdf(
+                        self.world,
+                        p,
+                        hit.normal,
+                        hit.primitive,
+                        source.direction,
+                    );
+                    p_a / (p_a + p_b)
+                }
                 _ => 1.0,
             };
-            return radiance + escape(throughput * weight, ray.direction);
-        };
-        let p = ray.at(hit.t_m);
-        from = Some(hit.primitive);
-        let d = ray.direction;
-        let next = match world.material(hit.primitive) {
-            Material::Invisible => {
-                crossings += 1;
-                if crossings > 1000 {
-                    return radiance;
-                }
-                d
-            }
-            Material::Emitter(e) => {
-                // Light leaves the front only (source.c m_light: `r->rod < 0` is black).
-                if e.illuminates && d.dot(hit.normal) < 0.0 {
-                    radiance += throughput * e.radiance(d);
-                }
-                return radiance;
-            }
-            Material::Mirror { reflectance_rgb } => {
-                // The back is black (RADIANCE m_mirror.c: `r->rod < 0` returns no light).
-                if d.dot(hit.normal) > 0.0 {
-                    return radiance;
-                }
-                specular_events += 1;
-                if specular_events > settings.max_specular_events {
-                    return radiance;
-                }
-                throughput *= *reflectance_rgb;
-                d - 2.0 * d.dot(hit.normal) * hit.normal
-            }
-            Material::Glass(g) => {
-                specular_events += 1;
-                if specular_events > settings.max_specular_events {
-                    return radiance;
-                }
-                let (t, r) = glass_fractions(g, d.dot(hit.normal).abs());
-                let (bt, br) = (super::material::bright(t), super::material::bright(r));
-                if bt + br <= 0.0 || (bt + br).is_nan() {
-                    return radiance;
-                }
-                // Choose transmission or reflection in proportion to brightness.
-                if rng.uniform() * (bt + br) < bt {
-                    throughput *= t * ((bt + br) / bt);
-                    d
-                } else {
-                    throughput *= r * ((bt + br) / br);
-                    d - 2.0 * d.dot(hit.normal) * hit.normal
-                }
-            }
-            Material::Normal(m) => {
-                let shading = m.shade(d, hit.normal, world.is_flat(hit.primitive));
-                // Reached straight from a diffuse vertex: the sun-patch strategy there could
-                // have produced this vertex too (balance heuristic, area densities).
-                let p_direct = match (nee, direct) {
-                    (Some(nee), Some(pdf)) if nee.sun_portals.is_some() => {
-                        Some(pdf * hit.normal.dot(d).abs() / (hit.t_m * hit.t_m))
-                    }
-                    _ => None,
-                };
-                for source in world.distant_sources() {
-                    if source.kind != DistantKind::Light {
-                        continue;
-                    }
-                    let l = sample_cone(source, rng);
-                    let c = shading.source_coefficient(l, source.solid_angle_sr);
-                    if c != DVec3::ZERO {
-                        let t = world.shadow_transmission(p, from, l);
-                        if t == DVec3::ZERO {
-                            continue;
-                        }
-                        let w = match (nee, p_direct) {
-                            (Some(nee), Some(p_a)) if p_a > 0.0 => {
-                                let p_b = nee.sun_patch_pdf(
-                                    world,
-                                    p,
-                                    hit.normal,
-                                    hit.primitive,
-                                    source.direction,
-                                );
-                                p_a / (p_a + p_b)
-                            }
-                            _ => 1.0,
-                        };
-                        radiance += throughput * c * source.radiance(l) * t * w;
-                    }
-                }
-                radiance += throughput
-                    * super::virtual_sources::mirrored_lights(world, p, from, rng, &mut |l, sr| {
-                        shading.source_coefficient(l, sr)
-                    });
-                let allow_diffuse = ambient_used < settings.ambient_bounces;
-                let lobe = match nee {
-                    Some(nee) => shading.diffuse_lobe(allow_diffuse).inspect(|lobe| {
-                        radiance += throughput * nee.estimate(world, p, from, lobe, rng);
-                        if nee.sun_portals.is_some() {
-                            // The continuation's Russian-roulette survival, per side.
-                            let q = |f: DVec3, prob: f64| {
-                                if roulette
-                                    && ambient_used + 1 > RUSSIAN_ROULETTE_AFTER
-                                    && prob > 0.0
-                                {
-                                    ((throughput * f * (PI / prob)).max_element()
-                                        / RUSSIAN_ROULETTE_THROUGHPUT)
-                                        .min(1.0)
-                                } else {
-                                    1.0
-                                }
-                            };
-                            let q_front = q(lobe.front_rgb, lobe.front_probability);
-                            let q_back = q(lobe.back_rgb, lobe.back_probability);
-                            radiance += throughput
-                                * nee.sun_estimate(world, p, from, lobe, q_front, q_back, rng);
-                        }
-                    }),
-                    None => None,
-                };
-                match shading.sample(allow_diffuse, rng) {
-                    Scatter::Absorbed => return radiance,
-                    Scatter::Diffuse { direction, weight } => {
-                        ambient_used += 1;
-                        throughput *= weight;
-                        last = lobe.map(|lobe| LastDiffuse {
-                            position_m: p,
-                            pdf_sr: lobe.eval(direction).1,
-                            sun_patch_sampled: true,
-                        });
-                        let mut survival = 1.0;
-                        if roulette && ambient_used > RUSSIAN_ROULETTE_AFTER {
-                            let q =
-                                (throughput.max_element() / RUSSIAN_ROULETTE_THROUGHPUT).min(1.0);
-                            if (q).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater)
-                                || rng.uniform() >= q
-                            {
-                                return radiance;
-                            }
-                            throughput /= q;
-                            survival = q;
-                        }
-                        // Every diffuse vertex samples the sun patch (at the sensor and every
-                        // bounce: limited to the first two, the deep sensors of the reference
-                        // room had 2.3 times the variance at equal paths, for some 15 % less
-                        // time per path), so the next vertex weights its sun.
-                        direct = last.map(|l| l.pdf_sr * survival);
-                        if throughput.max_element() <= 0.0 {
-                            return radiance;
-                        }
-                        ray = Ray::new(p, direction);
-                        continue;
-                    }
-                    Scatter::Specular { direction, weight } => {
-                        specular_events += 1;
-                        if specular_events > settings.max_specular_events {
-                            return radiance;
-                        }
-                        throughput *= weight;
-                        direction
-                    }
-                }
-            }
-        };
-        if throughput.max_element() <= 0.0 {
-            return radiance;
+            path.radiance += path.throughput * c * source.radiance(l) * t * w;
         }
-        if next != d {
-            // Turned by a specular event: no next-event strategy produces this path.
-            last = None;
+    }
+
+    /// Next-event estimation of the sky and of the sun's patch at a vertex that may scatter
+    /// diffusely; returns the diffuse lobe the continuation's weights need.
+    fn sky(
+        &self,
+        path: &mut PathState,
+        p: DVec3,
+        shading: &Shading,
+        allow_diffuse: bool,
+        rng: &mut Rng,
+    ) -> Option<DiffuseLobe> {
+        let nee = self.nee?;
+        let lobe = shading.diffuse_lobe(allow_diffuse)?;
+        path.radiance += path.throughput * nee.estimate(self.world, p, path.from, &lobe, rng);
+        if nee.sun_portals.is_some() {
+            let q_front = self.survival(path, lobe.front_rgb, lobe.front_probability);
+            let q_back = self.survival(path, lobe.back_rgb, lobe.back_probability);
+            path.radiance += path.throughput
+                * nee.sun_estimate(self.world, p, path.from, &lobe, q_front, q_back, rng);
         }
-        // Any crossing or specular event: the next vertex is not reached directly.
-        direct = None;
-        ray = Ray::new(p, next);
+        Some(lobe)
+    }
+
+    /// The Russian-roulette survival of a continuation through the lobe side of value `f`
+    /// chosen with probability `prob`.
+    fn survival(&self, path: &PathState, f: DVec3, prob: f64) -> f64 {
+        if self.roulette && path.ambient_used + 1 > RUSSIAN_ROULETTE_AFTER && prob > 0.0 {
+            ((path.throughput * f * (PI / prob)).max_element() / RUSSIAN_ROULETTE_THROUGHPUT)
+                .min(1.0)
+        } else {
+            1.0
+        }
+    }
+
+    /// A diffuse bounce in unit `direction` with weight `weight`, then Russian roulette.
+    fn bounce(
+        &self,
+        path: &mut PathState,
+        p: DVec3,
+        direction: DVec3,
+        weight: DVec3,
+        lobe: Option<DiffuseLobe>,
+        rng: &mut Rng,
+    ) -> Next {
+        path.ambient_used += 1;
+        path.throughput *= weight;
+        path.last = lobe.map(|lobe| LastDiffuse {
+            position_m: p,
+            pdf_sr: lobe.eval(direction).1,
+            sun_patch_sampled: true,
+        });
+        let mut survival = 1.0;
+        if self.roulette && path.ambient_used > RUSSIAN_ROULETTE_AFTER {
+            let q = (path.throughput.max_element() / RUSSIAN_ROULETTE_THROUGHPUT).min(1.0);
+            if (q).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) || rng.uniform() >= q {
+                return Next::End;
+            }
+            path.throughput /= q;
+            survival = q;
+        }
+        // Every diffuse vertex samples the sun patch, so the next vertex weights its sun.
+        path.direct = path.last.map(|l| l.pdf_sr * survival);
+        if path.throughput.max_element() <= 0.0 {
+            return Next::End;
+        }
+        Next::Bounce(direction)
     }
 }

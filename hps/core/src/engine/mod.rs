@@ -30,6 +30,7 @@ pub mod radiance;
 pub mod ray;
 pub mod render;
 pub mod rng;
+pub mod sampling;
 pub mod shapes;
 pub mod sky;
 pub mod sky_sampling;

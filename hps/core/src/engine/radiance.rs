@@ -14,16 +14,13 @@
 //!
 //! A mirror seen from its back is black, as in RADIANCE (mirror.c `m_mirror`: `r->rod < 0`).
 
-use super::integrator::{trace_radiance, Settings};
-use super::material::{bright, glass_fractions, Material};
+use super::integrator::{trace_radiance, Settings, MAX_CROSSINGS};
+use super::material::{Interaction, Scatter};
 use super::ray::Ray;
 use super::rng::Rng;
 use super::sky::{source_seen, DistantKind};
 use super::world::World;
 use glam::DVec3;
-
-/// Most invisible surfaces a ray passes before it is taken as lost (as the integrator).
-const MAX_CROSSINGS: u32 = 1000;
 
 /// What a ray leaving the scene along unit `d` sees when it descends from no ambient or
 /// specular (normal.c) ray: a distant `light` containing `d`, else what any path sees.
@@ -49,54 +46,35 @@ pub fn ray_radiance(world: &World, ray: Ray, settings: &Settings, rng: &mut Rng)
         };
         let d = ray.direction;
         let p = ray.at(hit.t_m);
-        let next = match world.material(hit.primitive) {
-            Material::Invisible => {
+        let flat = world.is_flat(hit.primitive);
+        let next = match world
+            .material(hit.primitive)
+            .interact(d, hit.normal, flat, true)
+        {
+            Interaction::PassThrough => {
                 crossings += 1;
                 if crossings > MAX_CROSSINGS {
                     return DVec3::ZERO;
                 }
                 d
             }
-            Material::Emitter(e) => {
-                // Light leaves the front only (source.c m_light); a primary ray sees even a
-                // glow that does not illuminate.
-                return if d.dot(hit.normal) < 0.0 {
-                    throughput * e.radiance(d)
-                } else {
-                    DVec3::ZERO
-                };
-            }
-            Material::Mirror { reflectance_rgb } => {
-                if d.dot(hit.normal) > 0.0 {
-                    return DVec3::ZERO; // back is black
-                }
+            Interaction::Emits(l) => return throughput * l,
+            Interaction::Absorbed => return DVec3::ZERO,
+            Interaction::Specular(step) => {
                 specular_events += 1;
                 if specular_events > settings.max_specular_events {
                     return DVec3::ZERO;
                 }
-                throughput *= *reflectance_rgb;
-                d - 2.0 * d.dot(hit.normal) * hit.normal
-            }
-            Material::Glass(g) => {
-                specular_events += 1;
-                if specular_events > settings.max_specular_events {
-                    return DVec3::ZERO;
-                }
-                let (t, r) = glass_fractions(g, d.dot(hit.normal).abs());
-                let (bt, br) = (bright(t), bright(r));
-                if bt + br <= 0.0 || (bt + br).is_nan() {
-                    return DVec3::ZERO;
-                }
-                // Transmission or reflection in proportion to brightness, as the integrator.
-                if rng.uniform() * (bt + br) < bt {
-                    throughput *= t * ((bt + br) / bt);
-                    d
-                } else {
-                    throughput *= r * ((bt + br) / br);
-                    d - 2.0 * d.dot(hit.normal) * hit.normal
+                match step.sample(rng) {
+                    Scatter::Specular { direction, weight }
+                    | Scatter::Diffuse { direction, weight } => {
+                        throughput *= weight;
+                        direction
+                    }
+                    Scatter::Absorbed => return DVec3::ZERO,
                 }
             }
-            Material::Normal(_) => {
+            Interaction::Shaded(_) => {
                 // The integrator shades this surface: trace again from where the ray started
                 // (one repeated intersection, which keeps the shading code in one place).
                 return throughput * trace_radiance(world, ray, from, settings, rng);

@@ -2,6 +2,9 @@
 
 use glam::DVec3;
 
+/// RADIANCE's `FTINY` (fvect.h): the tolerance its vector and shading code compares with.
+pub const FTINY: f64 = 1e-6;
+
 /// A ray in the world frame (metres); `direction` is a unit vector.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray {

@@ -15,10 +15,11 @@
 //! from the sun via a mirror reaches diffuse surfaces through the virtual source only. One
 //! reflection is followed (RADIANCE's default `-dr 2` also follows mirror-to-mirror).
 
-use super::integrator::sample_cone;
-use super::material::{glass_fractions, Material};
+use super::material::scattering::reflect;
+use super::material::ShadowCrossing;
 use super::ray::Ray;
 use super::rng::Rng;
+use super::sampling::sample_cone;
 use super::sky::DistantKind;
 use super::world::World;
 use glam::DVec3;
@@ -46,15 +47,14 @@ fn transmission_to(
         if hit.primitive == target {
             return (hit.normal.dot(dir) < 0.0).then_some((t, p));
         }
-        match world.material(hit.primitive) {
-            Material::Invisible => {}
-            Material::Glass(g) => t *= glass_fractions(g, hit.normal.dot(dir).abs()).0,
-            Material::Normal(m) => {
-                t *= m
-                    .shade(dir, hit.normal, world.is_flat(hit.primitive))
-                    .shadow_transmission()
-            }
-            Material::Mirror { .. } | Material::Emitter(_) => return None,
+        let flat = world.is_flat(hit.primitive);
+        match world
+            .material(hit.primitive)
+            .shadow_crossing(dir, hit.normal, flat)
+        {
+            ShadowCrossing::PassThrough => {}
+            ShadowCrossing::Transmits(factor) => t *= factor,
+            ShadowCrossing::Opaque => return None,
         }
         if t == DVec3::ZERO {
             return None;
@@ -102,7 +102,7 @@ pub fn mirrored_lights(
             if ln <= 0.0 {
                 continue;
             }
-            let virtual_dir = l - 2.0 * ln * n;
+            let virtual_dir = reflect(l, n);
             let c = coefficient(virtual_dir, source.solid_angle_sr);
             if c == DVec3::ZERO {
                 continue;

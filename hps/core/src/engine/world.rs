@@ -2,9 +2,10 @@
 
 use super::bvh::Bvh;
 use super::error::EngineError;
-use super::material::{glass_fractions, Emitter, Material, NormalMaterial};
+use super::material::{Emitter, Material, ShadowCrossing};
 use super::portal::Portals;
-use super::ray::Ray;
+use super::ray::{Ray, FTINY};
+use super::sampling::basis;
 use super::shapes::{PreparedCone, PreparedPolygon, Primitive, ShapeHit};
 use super::sky::{source_seen, DistantEmitter, DistantKind, SkyFunction};
 use super::sky_sampling::SkyDistribution;
@@ -14,7 +15,7 @@ use glam::DVec3;
 
 /// Distance under which a ray leaving a curved surface ignores it (RADIANCE's `FTINY`, in
 /// metres); flat surfaces are excluded by identity instead.
-const CURVED_SELF_HIT_M: f64 = 1e-6;
+const CURVED_SELF_HIT_M: f64 = FTINY;
 /// Most surfaces a shadow ray passes through (glass panes, invisible surfaces) before it is
 /// taken as blocked: a guard against a pathological stack of coincident panes.
 const MAX_SHADOW_CROSSINGS: usize = 64;
@@ -96,7 +97,7 @@ impl World {
                     ModifierKind::Glow(g) => (
                         DistantKind::Glow,
                         g.radiance_w_sr_m2,
-                        g.max_radius_m >= -1e-6,
+                        Emitter::glow_illuminates(g.max_radius_m),
                     ),
                     other => {
                         return Err(EngineError::Unsupported {
@@ -129,7 +130,7 @@ impl World {
             let index = match material_index.get(&key) {
                 Some(&i) => i,
                 None => {
-                    let prepared = prepare_material(scene, surface, material, patterns)?;
+                    let prepared = Material::from_modifier(surface, material, patterns)?;
                     materials.push(prepared);
                     let i = (materials.len() - 1) as u32;
                     material_index.insert(key, i);
@@ -167,18 +168,17 @@ impl World {
             sky_distribution: std::sync::OnceLock::new(),
         };
         world.mirrors = (0..world.primitives.len() as u32)
-            .filter_map(
-                |i| match (world.material(i), &world.primitives[i as usize]) {
-                    (Material::Mirror { reflectance_rgb }, Primitive::Polygon(p)) => {
-                        Some((i, p.normal, *reflectance_rgb))
-                    }
+            .filter_map(|i| {
+                let reflectance = world.material(i).virtual_source_reflectance()?;
+                match &world.primitives[i as usize] {
+                    Primitive::Polygon(p) => Some((i, p.normal, reflectance)),
                     _ => None,
-                },
-            )
+                }
+            })
             .collect();
         world.portal_candidates = polygon_vertices
             .into_iter()
-            .filter(|(p, _)| matches!(world.material(*p), Material::Glass(_) | Material::Invisible))
+            .filter(|(p, _)| world.material(*p).is_clear())
             .collect();
         let found: Vec<(u32, Vec<DVec3>)> = world
             .portal_candidates
@@ -198,7 +198,7 @@ impl World {
             return false;
         };
         let centre = vertices.iter().copied().sum::<DVec3>() / vertices.len() as f64;
-        let (u, v) = super::material::basis(poly.normal);
+        let (u, v) = basis(poly.normal);
         for side in [1.0, -1.0] {
             let n = poly.normal * side;
             let mut dirs = vec![n];
@@ -360,9 +360,7 @@ impl World {
     /// The closest surface along `ray` (leaving `from`) that is neither glass nor invisible:
     /// one query where stepping through each pane took one per pane.
     pub fn first_opaque(&self, ray: &Ray, from: Option<u32>) -> Option<Hit> {
-        self.closest_where(ray, from, |p| {
-            !matches!(self.material(p), Material::Glass(_) | Material::Invisible)
-        })
+        self.closest_where(ray, from, |p| !self.material(p).is_clear())
     }
 
     /// The closest hit on a primitive `accept` takes, not counting the flat surface `from`.
@@ -434,13 +432,13 @@ impl World {
             else {
                 return true;
             };
-            let factor = match self.material(p) {
-                Material::Invisible => return true,
-                Material::Glass(g) => glass_fractions(g, hit.normal.dot(dir).abs()).0,
-                Material::Normal(m) => m
-                    .shade(dir, hit.normal, self.is_flat(p))
-                    .shadow_transmission(),
-                Material::Mirror { .. } | Material::Emitter(_) => DVec3::ZERO,
+            let factor = match self
+                .material(p)
+                .shadow_crossing(dir, hit.normal, self.is_flat(p))
+            {
+                ShadowCrossing::PassThrough => return true,
+                ShadowCrossing::Transmits(factor) => factor,
+                ShadowCrossing::Opaque => DVec3::ZERO,
             };
             if factor != DVec3::ZERO && !self.is_flat(p) {
                 curved_crossing = true;
@@ -472,15 +470,14 @@ impl World {
             let Some(hit) = self.intersect(&ray, from) else {
                 return t;
             };
-            match self.material(hit.primitive) {
-                Material::Invisible => {}
-                Material::Glass(g) => t *= glass_fractions(g, hit.normal.dot(dir).abs()).0,
-                Material::Normal(m) => {
-                    t *= m
-                        .shade(dir, hit.normal, self.is_flat(hit.primitive))
-                        .shadow_transmission()
-                }
-                Material::Mirror { .. } | Material::Emitter(_) => return DVec3::ZERO,
+            let flat = self.is_flat(hit.primitive);
+            match self
+                .material(hit.primitive)
+                .shadow_crossing(dir, hit.normal, flat)
+            {
+                ShadowCrossing::PassThrough => {}
+                ShadowCrossing::Transmits(factor) => t *= factor,
+                ShadowCrossing::Opaque => return DVec3::ZERO,
             }
             if t == DVec3::ZERO {
                 return t;
@@ -513,59 +510,4 @@ fn resolve<'a>(
         next = m.modifier;
     }
     Ok((material, patterns))
-}
-
-fn prepare_material(
-    scene: &Scene,
-    surface: &Surface,
-    material: Option<&Modifier>,
-    patterns: Vec<SkyFunction>,
-) -> Result<Material, EngineError> {
-    let Some(m) = material else {
-        return Ok(Material::Invisible);
-    };
-    let _ = scene;
-    let emitter = matches!(m.kind, ModifierKind::Light(_) | ModifierKind::Glow(_));
-    if !patterns.is_empty() && !emitter {
-        return Err(EngineError::Unsupported {
-            at: surface.origin.clone(),
-            what: format!(
-                "surface `{}`: a brightfunc pattern on a {} material; patterns are traced on \
-                 light and glow only",
-                surface.name,
-                m.kind.type_name()
-            ),
-        });
-    }
-    Ok(match &m.kind {
-        ModifierKind::Plastic(p) => Material::Normal(NormalMaterial::from(p)),
-        ModifierKind::Metal(p) => Material::Normal(NormalMaterial::from(p)),
-        ModifierKind::Trans(p) => Material::Normal(NormalMaterial::from(p)),
-        ModifierKind::Glass(g) => Material::Glass(g.clone()),
-        ModifierKind::Mirror(mirror) => {
-            if mirror.alternate_material.is_some() {
-                return Err(EngineError::Unsupported {
-                    at: m.origin.clone(),
-                    what: format!(
-                        "mirror `{}` with an alternate material is not traced yet",
-                        m.name
-                    ),
-                });
-            }
-            Material::Mirror {
-                reflectance_rgb: mirror.reflectance_rgb,
-            }
-        }
-        ModifierKind::Light(l) => Material::Emitter(Emitter {
-            radiance_w_sr_m2: l.radiance_w_sr_m2,
-            patterns,
-            illuminates: true,
-        }),
-        ModifierKind::Glow(g) => Material::Emitter(Emitter {
-            radiance_w_sr_m2: g.radiance_w_sr_m2,
-            patterns,
-            illuminates: g.max_radius_m >= -1e-6,
-        }),
-        ModifierKind::Brightfunc(_) => unreachable!("patterns are not materials"),
-    })
 }

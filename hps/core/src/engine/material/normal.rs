@@ -1,60 +1,20 @@
-//! How surfaces scatter light, as RADIANCE shades them, so that our estimates converge to
-//! what `rtrace` computes.
-//!
-//! - `plastic`, `metal`, `trans`: src/rt/normal.c (`m_normal`, `dirnorm`, `gaussamp`): a
-//!   Lambertian part, an isotropic Gaussian (Ward 1992) specular part with RADIANCE's Fresnel
-//!   estimate for smooth surfaces, and for `trans` diffuse and specular transmission.
-//! - `glass`: src/rt/glass.c (`m_glass`): one thin pane, with the angle-dependent
-//!   transmission and reflection of the two interfaces and the internal reflections summed.
-//! - `mirror`: src/rt/mirror.c: a pure specular reflector of the given colour.
-//!
-//! Surfaces are two-sided (RADIANCE's default `-bv+`): hitting the back of a surface shades
-//! it with the normal turned towards the ray (`flipsurface`).
+//! RADIANCE's normal materials, `plastic`, `metal` and `trans` (src/rt/normal.c: `m_normal`,
+//! `dirnorm`, `gaussamp`): a Lambertian part, an isotropic Gaussian (Ward 1992) specular part
+//! with RADIANCE's Fresnel estimate for smooth surfaces, and for `trans` diffuse and specular
+//! transmission.
 
-use super::rng::Rng;
-use super::sky::SkyFunction;
-use crate::scene::{Glass, Metal, Plastic, Trans};
+use super::scattering::{bright, fresne, DiffuseLobe, Scatter};
+use crate::engine::ray::FTINY;
+use crate::engine::rng::Rng;
+use crate::engine::sampling::{basis, cosine_direction};
+use crate::scene::{Metal, Plastic, Trans};
 use glam::DVec3;
 use std::f64::consts::PI;
 
-/// RADIANCE's `FTINY` (fvect.h).
-pub const FTINY: f64 = 1e-6;
 /// Most tries at a Gaussian specular direction above the surface (normal.c `MAXITER`).
 const MAXITER: usize = 10;
 /// Smallest specularity given the Fresnel estimate (normal.c `FRESTHRESH`).
 const FRESTHRESH: f64 = 0.017999;
-
-/// Estimate of the Fresnel function, normal.c `FRESNE(ci)`.
-fn fresne(ci: f64) -> f64 {
-    (-5.85 * ci).exp() - 0.00287989916
-}
-
-/// RADIANCE's `bright()` (color.h, the `CIE_` luminance weights of the default primaries):
-/// 0.265 R + 0.670 G + 0.065 B.
-pub fn bright(c: DVec3) -> f64 {
-    0.265 * c.x + 0.670 * c.y + 0.065 * c.z
-}
-
-/// An orthonormal basis (u, v) around unit `n` (Duff et al., "Building an orthonormal basis,
-/// revisited", JCGT 2017).
-pub fn basis(n: DVec3) -> (DVec3, DVec3) {
-    let sign = 1f64.copysign(n.z);
-    let a = -1.0 / (sign + n.z);
-    let b = n.x * n.y * a;
-    (
-        DVec3::new(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x),
-        DVec3::new(b, sign + n.y * n.y * a, -n.y),
-    )
-}
-
-/// A cosine-distributed direction about unit `n` (Malley's method; pdf cos θ / π).
-pub fn cosine_direction(n: DVec3, rng: &mut Rng) -> DVec3 {
-    let (u, v) = basis(n);
-    let r2 = rng.uniform();
-    let phi = 2.0 * PI * rng.uniform();
-    let r = r2.sqrt();
-    (u * (r * phi.cos()) + v * (r * phi.sin()) + n * (1.0 - r2).max(0.0).sqrt()).normalize()
-}
 
 /// Which kind of normal material: they differ only in the colour of the specular part and
 /// in transmission.
@@ -116,53 +76,6 @@ impl From<&Trans> for NormalMaterial {
     }
 }
 
-/// What a sampled scattering event does to the path.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Scatter {
-    /// The path ends here.
-    Absorbed,
-    /// Diffuse reflection or transmission: an ambient bounce in RADIANCE's terms (`-ab`).
-    Diffuse { direction: DVec3, weight: DVec3 },
-    /// Specular reflection or transmission (smooth or Gaussian): not an ambient bounce.
-    Specular { direction: DVec3, weight: DVec3 },
-}
-
-/// The diffuse (Lambertian) scattering at a vertex: for a direction ω on the `normal` side
-/// the integrand is `front_rgb` |cos θ| L(ω), and the vertex's own sampling produces ω with
-/// density `front_probability` |cos θ| / π; likewise behind with the `back_` values. A
-/// sensor is the lobe with front 1 and probability 1 (E = ∫ L cos θ dω).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct DiffuseLobe {
-    pub normal: DVec3,
-    pub front_rgb: DVec3,
-    pub back_rgb: DVec3,
-    pub front_probability: f64,
-    pub back_probability: f64,
-}
-
-impl DiffuseLobe {
-    /// The lobe of a sensor facing unit `normal`.
-    pub fn sensor(normal: DVec3) -> Self {
-        Self {
-            normal,
-            front_rgb: DVec3::ONE,
-            back_rgb: DVec3::ZERO,
-            front_probability: 1.0,
-            back_probability: 0.0,
-        }
-    }
-
-    /// (value × |cos θ|, density of the vertex's own sampling) for unit direction `d`.
-    pub fn eval(&self, d: DVec3) -> (DVec3, f64) {
-        let c = self.normal.dot(d);
-        if c > 0.0 {
-            (self.front_rgb * c, self.front_probability * c / PI)
-        } else {
-            (self.back_rgb * -c, self.back_probability * -c / PI)
-        }
-    }
-}
-
 /// The state of m_normal's `NORMDAT` at one hit.
 #[derive(Clone, Debug)]
 pub struct NormalShading {
@@ -186,8 +99,7 @@ pub struct NormalShading {
 
 impl NormalMaterial {
     /// Purely diffuse and opaque: its outgoing radiance is the same towards every viewer on
-    /// one side, so a path's estimate of it can serve other sensors
-    /// ([`super::integrator::SharedVertex`]).
+    /// one side, so a path's estimate of it can serve other sensors (path reuse).
     pub fn is_lambertian(&self) -> bool {
         self.specularity <= 0.0 && self.kind != NormalKind::Trans
     }
@@ -474,107 +386,9 @@ impl NormalShading {
     }
 }
 
-/// Transmitted and reflected fractions of RADIANCE's thin `glass` for a ray at cosine of
-/// incidence `pdot` (glass.c `m_glass`): per channel with d = tn^(1/cos θt),
-/// cos θt = sqrt(1 − (1 − pdot²)/n²),
-/// T = ½ Σ_{s,p} (1 − r)² d / (1 − r² d²),  R = ½ Σ_{s,p} r (1 + (1 − 2r) d²) / (1 − r² d²),
-/// with r the single-interface Fresnel reflectances r1e, r1m.
-pub fn glass_fractions(g: &Glass, pdot: f64) -> (DVec3, DVec3) {
-    let n = g.refractive_index;
-    let pdot = pdot.clamp(1e-9, 1.0);
-    let cos2 = ((1.0 - 1.0 / (n * n)) + pdot * pdot / (n * n)).sqrt();
-    let mcolor = g.transmissivity_rgb;
-    // Grey glass (the usual case) needs one power, not three.
-    let d = if mcolor.x == mcolor.y && mcolor.y == mcolor.z {
-        DVec3::splat(mcolor.x.powf(1.0 / cos2))
-    } else {
-        DVec3::new(
-            mcolor.x.powf(1.0 / cos2),
-            mcolor.y.powf(1.0 / cos2),
-            mcolor.z.powf(1.0 / cos2),
-        )
-    };
-    let r1e = ((pdot - n * cos2) / (pdot + n * cos2)).powi(2);
-    let r1m = ((1.0 / pdot - n / cos2) / (1.0 / pdot + n / cos2)).powi(2);
-    let mut trans = DVec3::ZERO;
-    let mut refl = DVec3::ZERO;
-    for i in 0..3 {
-        let di = d[i];
-        if mcolor[i] > 0.0 {
-            trans[i] = 0.5 * (1.0 - r1e) * (1.0 - r1e) * di / (1.0 - r1e * r1e * di * di)
-                + 0.5 * (1.0 - r1m) * (1.0 - r1m) * di / (1.0 - r1m * r1m * di * di);
-        }
-        let d2 = di * di;
-        refl[i] = 0.5 * r1e * (1.0 + (1.0 - 2.0 * r1e) * d2) / (1.0 - r1e * r1e * d2)
-            + 0.5 * r1m * (1.0 + (1.0 - 2.0 * r1m) * d2) / (1.0 - r1m * r1m * d2);
-    }
-    (trans, refl)
-}
-
-/// A self-luminous surface (`light` or `glow` on a surface, not a `source`).
-#[derive(Clone, Debug)]
-pub struct Emitter {
-    pub radiance_w_sr_m2: DVec3,
-    pub patterns: Vec<SkyFunction>,
-    /// A `glow` with negative `maxrad` never illuminates (RADIANCE source.c `distglow`,
-    /// `badcomponent`): every ray the sensors trace descends from an ambient ray, so it
-    /// counts as black.
-    pub illuminates: bool,
-}
-
-impl Emitter {
-    pub fn radiance(&self, d: DVec3) -> DVec3 {
-        self.patterns
-            .iter()
-            .fold(self.radiance_w_sr_m2, |l, p| l * p.value(d))
-    }
-}
-
-/// A surface's material, ready for shading.
-#[derive(Clone, Debug)]
-pub enum Material {
-    Normal(NormalMaterial),
-    Glass(Glass),
-    Mirror {
-        reflectance_rgb: DVec3,
-    },
-    Emitter(Emitter),
-    /// Modifier chain ends at `void` without a material: rays pass through.
-    Invisible,
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::GLASS_DEFAULT_REFRACTIVE_INDEX;
-
-    /// glass.c's own comment: tn = (sqrt(.8402528435 + .0072522239 Tn²) − .9166530661)
-    /// / .0036261119 / Tn, so the transmittance at normal incidence of tn must come back as Tn.
-    #[test]
-    fn glass_normal_transmittance_inverts_the_manual_formula() {
-        for tn_meas in [0.65_f64, 0.88, 0.3] {
-            let tn = ((0.8402528435 + 0.0072522239 * tn_meas * tn_meas).sqrt() - 0.9166530661)
-                / 0.0036261119
-                / tn_meas;
-            let g = Glass {
-                transmissivity_rgb: DVec3::splat(tn),
-                refractive_index: GLASS_DEFAULT_REFRACTIVE_INDEX,
-            };
-            let (t, r) = glass_fractions(&g, 1.0);
-            assert!((t.x - tn_meas).abs() < 1e-6, "{tn_meas}: {}", t.x);
-            // Energy: T + R <= 1.
-            assert!(t.x + r.x <= 1.0 + 1e-12);
-        }
-        // The reference room's value: 0.708456 gives 0.65.
-        let g = Glass {
-            transmissivity_rgb: DVec3::splat(0.708456),
-            refractive_index: 1.52,
-        };
-        assert!((glass_fractions(&g, 1.0).0.x - 0.65).abs() < 1e-5);
-        // Grazing: transmission falls to zero, reflection to one.
-        let (t, r) = glass_fractions(&g, 1e-6);
-        assert!(t.x < 1e-4 && r.x > 0.99, "{t} {r}");
-    }
 
     #[test]
     fn lambertian_source_coefficient() {

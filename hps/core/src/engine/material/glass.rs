@@ -1,0 +1,62 @@
+//! RADIANCE's `glass` (src/rt/glass.c `m_glass`): one thin pane, with the angle-dependent
+//! transmission and reflection of its two interfaces and the internal reflections summed.
+
+use super::scattering::{bright, glass_fractions, reflect, Scatter};
+use crate::engine::rng::Rng;
+use crate::scene::Glass;
+use glam::DVec3;
+
+/// A thin pane of `glass`.
+#[derive(Clone, Debug)]
+pub struct GlassMaterial {
+    /// glass.c's transmissivity tn per RGB channel (not the transmittance at normal incidence).
+    pub transmissivity_rgb: DVec3,
+    pub refractive_index: f64,
+}
+
+impl From<&Glass> for GlassMaterial {
+    fn from(g: &Glass) -> Self {
+        Self {
+            transmissivity_rgb: g.transmissivity_rgb,
+            refractive_index: g.refractive_index,
+        }
+    }
+}
+
+impl GlassMaterial {
+    /// Transmitted and reflected fractions for unit direction `d` at a pane of normal `normal`.
+    fn fractions(&self, d: DVec3, normal: DVec3) -> (DVec3, DVec3) {
+        glass_fractions(
+            self.transmissivity_rgb,
+            self.refractive_index,
+            d.dot(normal).abs(),
+        )
+    }
+
+    /// What a shadow ray keeps crossing the pane: its transmitted fraction (glass.c traces
+    /// shadow rays straight through).
+    pub fn shadow_transmission(&self, d: DVec3, normal: DVec3) -> DVec3 {
+        self.fractions(d, normal).0
+    }
+
+    /// Transmission or reflection, chosen in proportion to their brightness and weighted by
+    /// the inverse of that probability; absorbed when the pane is black.
+    pub fn sample(&self, d: DVec3, normal: DVec3, rng: &mut Rng) -> Scatter {
+        let (t, r) = self.fractions(d, normal);
+        let (bt, br) = (bright(t), bright(r));
+        if bt + br <= 0.0 || (bt + br).is_nan() {
+            return Scatter::Absorbed;
+        }
+        if rng.uniform() * (bt + br) < bt {
+            Scatter::Specular {
+                direction: d,
+                weight: t * ((bt + br) / bt),
+            }
+        } else {
+            Scatter::Specular {
+                direction: reflect(d, normal),
+                weight: r * ((bt + br) / br),
+            }
+        }
+    }
+}

@@ -1,0 +1,27 @@
+//! RADIANCE's `mirror` (src/rt/m_mirror.c): a pure specular reflector of the given colour,
+//! black from the back. Plane mirrors also make virtual sources
+//! ([`crate::engine::virtual_sources`]).
+
+use super::scattering::{reflect, Scatter};
+use glam::DVec3;
+
+#[derive(Clone, Debug)]
+pub struct MirrorMaterial {
+    pub reflectance_rgb: DVec3,
+}
+
+impl MirrorMaterial {
+    /// Whether unit direction `d` meets the back of a mirror of normal `normal`, which m_mirror
+    /// makes black (`r->rod < 0` returns no light).
+    pub fn is_back(d: DVec3, normal: DVec3) -> bool {
+        d.dot(normal) > 0.0
+    }
+
+    /// The mirror reflection of `d`, weighted by the reflectance.
+    pub fn sample(&self, d: DVec3, normal: DVec3) -> Scatter {
+        Scatter::Specular {
+            direction: reflect(d, normal),
+            weight: self.reflectance_rgb,
+        }
+    }
+}

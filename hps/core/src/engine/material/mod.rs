@@ -1,0 +1,252 @@
+//! How surfaces scatter light, as RADIANCE shades them, so that our estimates converge to
+//! what `rtrace` computes: one file per family ([`normal`]: `plastic`, `metal`, `trans`;
+//! [`glass`]; [`mirror`]; [`emitter`]: `light` and `glow` on surfaces), the optics they share
+//! in [`scattering`].
+//!
+//! The integrator, the per-ray radiance, shadow rays and virtual sources ask a [`Material`]
+//! what happens at a hit ([`Material::interact`], [`Material::shading`],
+//! [`Material::shadow_crossing`] and the properties below) and never look at its kind. A new
+//! material (a WINDOW XML BSDF, `BRTDfunc`, `plastic2`, `dielectric`) is one more file here
+//! and one more arm of [`Material`] (and of [`Shading`] if direct light is estimated at it),
+//! converted in [`Material::from_modifier`]; the integrator does not change.
+//!
+//! Surfaces are two-sided (RADIANCE's default `-bv+`): hitting the back of a surface shades
+//! it with the normal turned towards the ray (`flipsurface`).
+
+pub mod emitter;
+pub mod glass;
+pub mod mirror;
+pub mod normal;
+pub mod scattering;
+
+/// Where `validation::glazing` finds it; its home is [`crate::engine::sampling`].
+pub use super::sampling::basis;
+pub use emitter::Emitter;
+pub use glass::GlassMaterial;
+pub use mirror::MirrorMaterial;
+pub use normal::{NormalKind, NormalMaterial, NormalShading};
+pub use scattering::{bright, DiffuseLobe, Scatter};
+
+use super::error::EngineError;
+use super::rng::Rng;
+use super::sky::SkyFunction;
+use crate::scene::{Modifier, ModifierKind, Surface};
+use glam::DVec3;
+
+/// A surface's material, ready for shading.
+#[derive(Clone, Debug)]
+pub enum Material {
+    Normal(NormalMaterial),
+    Glass(GlassMaterial),
+    Mirror(MirrorMaterial),
+    Emitter(Emitter),
+    /// Modifier chain ends at `void` without a material: rays pass through.
+    Invisible,
+}
+
+/// What happens to a ray at a hit ([`Material::interact`]).
+#[derive(Clone, Debug)]
+pub enum Interaction<'a> {
+    /// No material: the ray goes on unchanged (not a scattering event).
+    PassThrough,
+    /// The path ends here and receives this radiance (W/sr/m² per RGB channel).
+    Emits(DVec3),
+    /// The path ends here with no light.
+    Absorbed,
+    /// A purely specular surface: one specular event, drawn by [`SpecularStep::sample`] once
+    /// the caller has counted it against its limit.
+    Specular(SpecularStep<'a>),
+    /// A surface shaded as RADIANCE's normal.c does: the caller estimates direct light with
+    /// the shading and continues the path by sampling it.
+    Shaded(Shading),
+}
+
+/// A specular event not yet drawn: what [`Interaction::Specular`] carries.
+#[derive(Clone, Debug)]
+pub struct SpecularStep<'a> {
+    material: &'a Material,
+    direction: DVec3,
+    normal: DVec3,
+}
+
+impl SpecularStep<'_> {
+    /// The new direction and the throughput weight (the coefficient over the probability of
+    /// the choice), or [`Scatter::Absorbed`].
+    pub fn sample(&self, rng: &mut Rng) -> Scatter {
+        match self.material {
+            Material::Glass(g) => g.sample(self.direction, self.normal, rng),
+            Material::Mirror(m) => m.sample(self.direction, self.normal),
+            _ => Scatter::Absorbed,
+        }
+    }
+}
+
+/// A surface's scattering at one hit, for next-event estimation and for sampling the path's
+/// continuation (pbrt's BSDF).
+#[derive(Clone, Debug)]
+pub enum Shading {
+    Normal(NormalShading),
+}
+
+impl Shading {
+    /// The coefficient that turns the radiance of a source of solid angle `omega_sr` seen in
+    /// unit direction `ldir` into radiance leaving towards the ray (normal.c `dirnorm`).
+    pub fn source_coefficient(&self, ldir: DVec3, omega_sr: f64) -> DVec3 {
+        match self {
+            Shading::Normal(s) => s.source_coefficient(ldir, omega_sr),
+        }
+    }
+
+    /// The Lambertian part as [`Shading::sample`] samples it, for multiple importance
+    /// sampling with next-event estimation; None when no diffuse component would be sampled.
+    pub fn diffuse_lobe(&self, allow_diffuse: bool) -> Option<DiffuseLobe> {
+        match self {
+            Shading::Normal(s) => s.diffuse_lobe(allow_diffuse),
+        }
+    }
+
+    /// Samples the continuation; diffuse components only if `allow_diffuse` (ambient bounces
+    /// left).
+    pub fn sample(&self, allow_diffuse: bool, rng: &mut Rng) -> Scatter {
+        match self {
+            Shading::Normal(s) => s.sample(allow_diffuse, rng),
+        }
+    }
+}
+
+/// What a shadow ray (towards a source, straight) does at a surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ShadowCrossing {
+    /// No material: not there for the shadow ray.
+    PassThrough,
+    /// Crossed, keeping this fraction per RGB channel (zero: blocked).
+    Transmits(DVec3),
+    /// Blocks the shadow ray.
+    Opaque,
+}
+
+impl Material {
+    /// What a ray in unit direction `d` does on meeting this material on a surface of front
+    /// normal `normal` (`flat` for polygons and rings). `primary`: the ray descends from no
+    /// ambient or specular ray (a camera ray), which sees a `glow` that does not illuminate.
+    pub fn interact(&self, d: DVec3, normal: DVec3, flat: bool, primary: bool) -> Interaction<'_> {
+        match self {
+            Material::Invisible => Interaction::PassThrough,
+            Material::Emitter(e) => match e.seen(d, normal, primary) {
+                Some(l) => Interaction::Emits(l),
+                None => Interaction::Absorbed,
+            },
+            Material::Mirror(_) if MirrorMaterial::is_back(d, normal) => Interaction::Absorbed,
+            Material::Mirror(_) | Material::Glass(_) => Interaction::Specular(SpecularStep {
+                material: self,
+                direction: d,
+                normal,
+            }),
+            Material::Normal(m) => Interaction::Shaded(Shading::Normal(m.shade(d, normal, flat))),
+        }
+    }
+
+    /// The shading of a ray in unit direction `rdir` at a surface of front normal `normal`,
+    /// if this material is shaded with direct light (None for specular, emitting and
+    /// invisible surfaces).
+    pub fn shading(&self, rdir: DVec3, normal: DVec3, flat: bool) -> Option<Shading> {
+        match self {
+            Material::Normal(m) => Some(Shading::Normal(m.shade(rdir, normal, flat))),
+            _ => None,
+        }
+    }
+
+    /// Whether [`Material::shading`] gives a shading.
+    pub fn is_shaded(&self) -> bool {
+        matches!(self, Material::Normal(_))
+    }
+
+    /// What a shadow ray along unit `dir` does at a surface of front normal `normal`:
+    /// RADIANCE traces shadow rays through `glass` and smooth `trans` (glass.c, normal.c).
+    pub fn shadow_crossing(&self, dir: DVec3, normal: DVec3, flat: bool) -> ShadowCrossing {
+        match self {
+            Material::Invisible => ShadowCrossing::PassThrough,
+            Material::Glass(g) => ShadowCrossing::Transmits(g.shadow_transmission(dir, normal)),
+            Material::Normal(m) => {
+                ShadowCrossing::Transmits(m.shade(dir, normal, flat).shadow_transmission())
+            }
+            Material::Mirror(_) | Material::Emitter(_) => ShadowCrossing::Opaque,
+        }
+    }
+
+    /// Purely diffuse and opaque: the radiance it sends is the same towards every viewer on
+    /// one side, so one path's estimate of it can serve other sensors (path reuse).
+    pub fn is_lambertian(&self) -> bool {
+        matches!(self, Material::Normal(m) if m.is_lambertian())
+    }
+
+    /// Glass or no material: light crosses it without turning, so a polygon of it can be a
+    /// portal, and the sun-patch strategy follows sunlight past it.
+    pub fn is_clear(&self) -> bool {
+        matches!(self, Material::Glass(_) | Material::Invisible)
+    }
+
+    /// The reflectance with which a plane surface of this material mirrors distant sources
+    /// into virtual sources (RADIANCE virtuals.c), if it does.
+    pub fn virtual_source_reflectance(&self) -> Option<DVec3> {
+        match self {
+            Material::Mirror(m) => Some(m.reflectance_rgb),
+            _ => None,
+        }
+    }
+
+    /// The material of `surface` from the first material `modifier` on its chain (None:
+    /// `void`, invisible) and the `brightfunc` `patterns` found on the chain.
+    pub fn from_modifier(
+        surface: &Surface,
+        modifier: Option<&Modifier>,
+        patterns: Vec<SkyFunction>,
+    ) -> Result<Material, EngineError> {
+        let Some(m) = modifier else {
+            return Ok(Material::Invisible);
+        };
+        let emitter = matches!(m.kind, ModifierKind::Light(_) | ModifierKind::Glow(_));
+        if !patterns.is_empty() && !emitter {
+            return Err(EngineError::Unsupported {
+                at: surface.origin.clone(),
+                what: format!(
+                    "surface `{}`: a brightfunc pattern on a {} material; patterns are traced \
+                     on light and glow only",
+                    surface.name,
+                    m.kind.type_name()
+                ),
+            });
+        }
+        Ok(match &m.kind {
+            ModifierKind::Plastic(p) => Material::Normal(NormalMaterial::from(p)),
+            ModifierKind::Metal(p) => Material::Normal(NormalMaterial::from(p)),
+            ModifierKind::Trans(p) => Material::Normal(NormalMaterial::from(p)),
+            ModifierKind::Glass(g) => Material::Glass(GlassMaterial::from(g)),
+            ModifierKind::Mirror(mirror) => {
+                if mirror.alternate_material.is_some() {
+                    return Err(EngineError::Unsupported {
+                        at: m.origin.clone(),
+                        what: format!(
+                            "mirror `{}` with an alternate material is not traced yet",
+                            m.name
+                        ),
+                    });
+                }
+                Material::Mirror(MirrorMaterial {
+                    reflectance_rgb: mirror.reflectance_rgb,
+                })
+            }
+            ModifierKind::Light(l) => Material::Emitter(Emitter {
+                radiance_w_sr_m2: l.radiance_w_sr_m2,
+                patterns,
+                illuminates: true,
+            }),
+            ModifierKind::Glow(g) => Material::Emitter(Emitter {
+                radiance_w_sr_m2: g.radiance_w_sr_m2,
+                patterns,
+                illuminates: Emitter::glow_illuminates(g.max_radius_m),
+            }),
+            ModifierKind::Brightfunc(_) => unreachable!("patterns are not materials"),
+        })
+    }
+}
