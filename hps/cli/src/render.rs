@@ -2,10 +2,10 @@
 //! (`skylux_hps::engine::render`), written as OpenEXR, RADIANCE `.hdr` and a falsecolour PNG.
 
 use anyhow::Context;
-use skylux_hps::engine::render::{
-    self, ColourScale, FalsecolourOptions, LegendUnit, RenderSettings, View,
-};
+use skylux_hps::engine::render::{self, RenderSettings, View};
 use skylux_hps::engine::{Settings, World};
+use skylux_hps::picture::falsecolour::{self, ColourScale, FalsecolourOptions, LegendUnit};
+use skylux_hps::picture::{exr, rgbe};
 use skylux_hps::scene;
 use std::path::PathBuf;
 
@@ -116,10 +116,10 @@ pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
         std::fs::create_dir_all(parent)
             .with_context(|| format!("creating {}", parent.display()))?;
     }
-    let (exr, hdr, png) = (with_ext(".exr"), with_ext(".hdr"), with_ext(".png"));
-    render::write_exr(&exr, &image)?;
-    render::write_hdr(&hdr, &image, None)?;
-    let outcome = render::write_falsecolour_png(
+    let (exr_path, hdr_path, png) = (with_ext(".exr"), with_ext(".hdr"), with_ext(".png"));
+    exr::write_exr(&exr_path, &image)?;
+    rgbe::write_hdr(&hdr_path, &image, None)?;
+    let outcome = falsecolour::write_falsecolour_png(
         &png,
         &image,
         &FalsecolourOptions {
@@ -145,8 +145,8 @@ pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
     );
     println!(
         "wrote {}, {}, {} (scale 0..{} {}{})",
-        exr.display(),
-        hdr.display(),
+        exr_path.display(),
+        hdr_path.display(),
         png.display(),
         outcome.maximum,
         if args.lux { "lux" } else { "cd/m²" },

@@ -9,6 +9,7 @@ pub mod fpga;
 pub mod hdr;
 pub mod io;
 pub mod photometry;
+pub mod picture;
 pub mod scene;
 pub mod sky;
 pub mod sun;

@@ -6,10 +6,13 @@
 //! the comparisons print SKIPPED and pass, unless `SKYLUX_REQUIRE_RADIANCE` is set.
 
 use glam::DVec3;
-use skylux_hps::engine::render::{
-    self, rgbe, ColourScale, FalsecolourOptions, LegendUnit, RenderSettings, View, ViewError,
-};
+use skylux_hps::engine::render::{self, RenderSettings, View, ViewError};
 use skylux_hps::engine::{Settings, World};
+use skylux_hps::picture::falsecolour::{
+    write_falsecolour_png, ColourScale, FalsecolourOptions, LegendUnit,
+};
+use skylux_hps::picture::rgbe::{rgbe, write_hdr};
+use skylux_hps::picture::{exr::write_exr, Picture};
 use skylux_hps::scene;
 use std::path::{Path, PathBuf};
 mod common;
@@ -414,10 +417,12 @@ fn room_image_agrees_with_rtrace() {
 /// the largest channel); the EXR's channels are the image's, and the PNG has the size stated.
 #[test]
 fn picture_files_read_back() {
-    let image = render::RenderedImage {
+    let image = Picture {
         width_px: 5,
         height_px: 3,
-        view: View::parse("-vth -vp 1 2 3 -vd 0 0 1 -vu 0 1 0 -vh 180 -vv 180").unwrap(),
+        view: View::parse("-vth -vp 1 2 3 -vd 0 0 1 -vu 0 1 0 -vh 180 -vv 180")
+            .unwrap()
+            .to_radiance_string(),
         radiance_rgb: (0..15)
             .map(|i| {
                 let f = f64::from(i);
@@ -433,11 +438,11 @@ fn picture_files_read_back() {
     assert_eq!(rgbe(DVec3::ZERO), [0, 0, 0, 0]);
     let dir = tempfile::tempdir().unwrap();
     let hdr = dir.path().join("a.hdr");
-    render::write_hdr(&hdr, &image, None).unwrap();
+    write_hdr(&hdr, &image, None).unwrap();
     let exr = dir.path().join("a.exr");
-    render::write_exr(&exr, &image).unwrap();
+    write_exr(&exr, &image).unwrap();
     let png = dir.path().join("a.png");
-    let outcome = render::write_falsecolour_png(
+    let outcome = write_falsecolour_png(
         &png,
         &image,
         &FalsecolourOptions {

@@ -2,8 +2,10 @@
 //! scene, computing what `rtrace -I` computes (issue 5).
 //!
 //! One file per concept, as pbrt-v4: [`ray`], [`slab`] (the box test, the one operation the
-//! FPGA takes over, behind [`slab::BoxTest`]), [`bvh`], [`shapes`], [`material`], [`sky`],
-//! [`world`] (the traceable scene), [`integrator`] and [`illuminance`].
+//! FPGA takes over, behind [`slab::BoxTest`]), [`bvh`], [`shapes`], [`material`] (a folder,
+//! one file per material family, asked by everything else what happens at a hit),
+//! [`sampling`], [`sky`], [`world`] (the traceable scene), [`integrator`], [`radiance`] (one
+//! camera ray), [`illuminance`] and [`render`] (pictures, written by [`crate::picture`]).
 //!
 //! ```no_run
 //! use skylux_hps::{engine, scene};
