@@ -9,7 +9,7 @@
 //! batch); rayon runs the batches in any order and the sums are combined in batch order, so a
 //! result does not depend on the number of threads.
 //!
-//! With [`Settings::stratified`] the first [`super::qmc::DIMENSIONS`] numbers of each path
+//! With [`Settings::stratified`] the first [`super::rng::STRATIFIED_DIMENSIONS`] numbers of each path
 //! come from a scrambled low-discrepancy point set ([`super::qmc`]). Path i of a sensor
 //! belongs to replicate i mod R (R = [`REPLICATES`]) and is point ⌊i / R⌋ of that
 //! replicate's own randomisation; the replicates are independent, so the standard error is
@@ -106,85 +106,11 @@ pub fn illuminance(
         .collect();
     let total = jobs.len() as u64;
     let done = std::sync::atomic::AtomicU64::new(0);
-    let replicates = if settings.stratified {
-        REPLICATES.min(n)
-    } else {
-        1
-    };
-    // One randomisation per sensor and replicate, drawn up front (a fixed order).
-    let randomisations: Vec<Randomisation> = if settings.stratified {
-        (0..sensors.len() as u64)
-            .flat_map(|s| (0..u64::from(replicates)).map(move |r| (s << 32) | r))
-            .map(|stream| {
-                Randomisation::new(&mut Rng::for_stream(
-                    settings.seed ^ RANDOMISATION_SEED,
-                    stream,
-                ))
-            })
-            .collect()
-    } else {
-        Vec::new()
-    };
+    let run = Run::new(world, sensors, settings);
     let job_sums: Vec<Vec<Sums>> = jobs
         .par_iter()
         .map(|&(g, b)| {
-            let group = &groups[g];
-            let members: Vec<&Sensor> = group.iter().map(|&s| &sensors[s]).collect();
-            let reuse = members.len() > 1;
-            let mut rngs: Vec<Rng> = group
-                .iter()
-                .map(|&s| Rng::for_stream(settings.seed, ((s as u64) << 32) | u64::from(b)))
-                .collect();
-            let count = BATCH_SAMPLES.min(n - b * BATCH_SAMPLES);
-            let mut acc = vec![Sums::default(); members.len()];
-            let mut e = vec![DVec3::ZERO; members.len()];
-            let mut shared: Vec<(usize, SharedVertex)> = Vec::with_capacity(members.len());
-            for k in 0..count {
-                let i = b * BATCH_SAMPLES + k;
-                let r = i % replicates;
-                e.fill(DVec3::ZERO);
-                shared.clear();
-                for (local, (&s, sensor)) in group.iter().zip(&members).enumerate() {
-                    let rng = &mut rngs[local];
-                    if settings.stratified {
-                        let set = &randomisations[s * replicates as usize + r as usize];
-                        let point = set.point(i / replicates, rng);
-                        rng.set_prefix(&point);
-                    }
-                    if reuse {
-                        let (own, vertex) = irradiance_sample_shared(
-                            world,
-                            sensor.position_m,
-                            sensor.direction,
-                            settings,
-                            rng,
-                        );
-                        e[local] += own;
-                        if let Some(v) = vertex {
-                            shared.push((local, v));
-                        }
-                    } else {
-                        e[local] += irradiance_sample(
-                            world,
-                            sensor.position_m,
-                            sensor.direction,
-                            settings,
-                            rng,
-                        );
-                    }
-                    rng.clear_prefix();
-                }
-                for (from, v) in &shared {
-                    share_vertex(world, &members, *from, v, &mut e);
-                }
-                for (a, x) in acc.iter_mut().zip(&e) {
-                    let lux = lux_from_irradiance(*x);
-                    a.rgb += *x;
-                    a.lux += lux;
-                    a.lux2 += lux * lux;
-                    a.replicate_lux[r as usize] += lux;
-                }
-            }
+            let acc = run.batch(&groups[g], b);
             let d = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(d, total);
             acc
@@ -201,33 +127,140 @@ pub fn illuminance(
         .iter()
         .enumerate()
         .map(|(s, sensor)| {
-            let mut t = Sums::default();
-            for b in &sums[s * batches as usize..(s + 1) * batches as usize] {
-                t.rgb += b.rgb;
-                t.lux += b.lux;
-                t.lux2 += b.lux2;
-                for (a, x) in t.replicate_lux.iter_mut().zip(&b.replicate_lux) {
-                    *a += x;
-                }
-            }
-            let nf = f64::from(n);
-            let mean = t.lux / nf;
-            let stderr_lux = if settings.stratified {
-                replicate_stderr(&t.replicate_lux[..replicates as usize], n, mean)
-            } else if n > 1 {
-                (((t.lux2 - nf * mean * mean) / (nf - 1.0)).max(0.0) / nf).sqrt()
-            } else {
-                0.0
-            };
-            SensorIlluminance {
-                name: sensor.name.clone(),
-                illuminance_lux: mean,
-                stderr_lux,
-                irradiance_rgb_w_m2: t.rgb / nf,
-                samples: n,
-            }
+            run.result(
+                sensor,
+                &sums[s * batches as usize..(s + 1) * batches as usize],
+            )
         })
         .collect())
+}
+
+/// What every batch of one [`illuminance`] call shares.
+struct Run<'a> {
+    world: &'a World,
+    sensors: &'a [Sensor],
+    settings: &'a Settings,
+    /// Paths per sensor.
+    n: u32,
+    replicates: u32,
+    /// One randomisation per sensor and replicate (stratified only).
+    randomisations: Vec<Randomisation>,
+}
+
+impl<'a> Run<'a> {
+    fn new(world: &'a World, sensors: &'a [Sensor], settings: &'a Settings) -> Self {
+        let n = settings.samples_per_sensor;
+        let replicates = if settings.stratified {
+            REPLICATES.min(n)
+        } else {
+            1
+        };
+        // Drawn up front, in a fixed order.
+        let randomisations: Vec<Randomisation> = if settings.stratified {
+            (0..sensors.len() as u64)
+                .flat_map(|s| (0..u64::from(replicates)).map(move |r| (s << 32) | r))
+                .map(|stream| {
+                    Randomisation::new(&mut Rng::for_stream(
+                        settings.seed ^ RANDOMISATION_SEED,
+                        stream,
+                    ))
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        Self {
+            world,
+            sensors,
+            settings,
+            n,
+            replicates,
+            randomisations,
+        }
+    }
+
+    /// The sums of batch `b` of the sensors of `group` (indices into the sensors), in the
+    /// group's order.
+    fn batch(&self, group: &[usize], b: u32) -> Vec<Sums> {
+        let (world, settings, replicates) = (self.world, self.settings, self.replicates);
+        let members: Vec<&Sensor> = group.iter().map(|&s| &self.sensors[s]).collect();
+        let reuse = members.len() > 1;
+        let mut rngs: Vec<Rng> = group
+            .iter()
+            .map(|&s| Rng::for_stream(settings.seed, ((s as u64) << 32) | u64::from(b)))
+            .collect();
+        let count = BATCH_SAMPLES.min(self.n - b * BATCH_SAMPLES);
+        let mut acc = vec![Sums::default(); members.len()];
+        let mut e = vec![DVec3::ZERO; members.len()];
+        let mut shared: Vec<(usize, SharedVertex)> = Vec::with_capacity(members.len());
+        for k in 0..count {
+            let i = b * BATCH_SAMPLES + k;
+            let r = i % replicates;
+            e.fill(DVec3::ZERO);
+            shared.clear();
+            for (local, (&s, sensor)) in group.iter().zip(&members).enumerate() {
+                let rng = &mut rngs[local];
+                if settings.stratified {
+                    let set = &self.randomisations[s * replicates as usize + r as usize];
+                    let point = set.point(i / replicates, rng);
+                    rng.set_prefix(&point);
+                }
+                let (position, normal) = (sensor.position_m, sensor.direction);
+                if reuse {
+                    let (own, vertex) =
+                        irradiance_sample_shared(world, position, normal, settings, rng);
+                    e[local] += own;
+                    if let Some(v) = vertex {
+                        shared.push((local, v));
+                    }
+                } else {
+                    e[local] += irradiance_sample(world, position, normal, settings, rng);
+                }
+                rng.clear_prefix();
+            }
+            for (from, v) in &shared {
+                share_vertex(world, &members, *from, v, &mut e);
+            }
+            for (a, x) in acc.iter_mut().zip(&e) {
+                let lux = lux_from_irradiance(*x);
+                a.rgb += *x;
+                a.lux += lux;
+                a.lux2 += lux * lux;
+                a.replicate_lux[r as usize] += lux;
+            }
+        }
+        acc
+    }
+
+    /// A sensor's estimate and standard error from its batches' sums, in batch order.
+    fn result(&self, sensor: &Sensor, batches: &[Sums]) -> SensorIlluminance {
+        let n = self.n;
+        let mut t = Sums::default();
+        for b in batches {
+            t.rgb += b.rgb;
+            t.lux += b.lux;
+            t.lux2 += b.lux2;
+            for (a, x) in t.replicate_lux.iter_mut().zip(&b.replicate_lux) {
+                *a += x;
+            }
+        }
+        let nf = f64::from(n);
+        let mean = t.lux / nf;
+        let stderr_lux = if self.settings.stratified {
+            replicate_stderr(&t.replicate_lux[..self.replicates as usize], n, mean)
+        } else if n > 1 {
+            (((t.lux2 - nf * mean * mean) / (nf - 1.0)).max(0.0) / nf).sqrt()
+        } else {
+            0.0
+        };
+        SensorIlluminance {
+            name: sensor.name.clone(),
+            illuminance_lux: mean,
+            stderr_lux,
+            irradiance_rgb_w_m2: t.rgb / nf,
+            samples: n,
+        }
+    }
 }
 
 /// Sensors in groups of at most `size` neighbours, in a fixed order: the first sensor not yet

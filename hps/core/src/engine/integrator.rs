@@ -79,9 +79,9 @@ pub struct Settings {
     pub sun_portal_sampling: bool,
     /// Stratified numbers for the first decisions of each sensor path ([`super::qmc`]);
     /// unbiased, and the standard error then comes from independent replicates
-    /// ([`super::illuminance`]).
+    /// (`engine::illuminance`).
     pub stratified: bool,
-    /// Path reuse across sensors ([`super::illuminance`]): the first vertex of each sensor's
+    /// Path reuse across sensors (`engine::illuminance`): the first vertex of each sensor's
     /// path, when it is a Lambertian surface, also lights the other sensors of its group
     /// that see it, weighted by the balance heuristic over the group's sensors. Unbiased.
     pub path_reuse: bool,
@@ -130,7 +130,7 @@ pub fn irradiance_sample(
 }
 
 /// The first vertex of a sensor's path when other sensors may use it (path reuse,
-/// [`super::illuminance`]): a Lambertian surface the sensor sees directly, and the path's
+/// `engine::illuminance`): a Lambertian surface the sensor sees directly, and the path's
 /// estimate of the radiance it sends back, the same towards every viewer on that side.
 #[derive(Clone, Copy, Debug)]
 pub struct SharedVertex {
@@ -514,7 +514,7 @@ pub fn escape_sample(
 }
 
 /// Radiance back along `ray` (leaving the flat surface `from`, if any) for a path with no
-/// diffuse bounce yet: how [`super::radiance::ray_radiance`] continues a camera ray.
+/// diffuse bounce yet: how `radiance::ray_radiance` continues a camera ray.
 pub(crate) fn trace_radiance(
     world: &World,
     ray: Ray,

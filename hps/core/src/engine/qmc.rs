@@ -14,14 +14,12 @@
 //! uniform on the unit cube and each path's estimate has the plain Monte-Carlo expectation.
 //! The points of one randomisation are not independent of each other, so the standard error
 //! is estimated from several independent randomisations (replicates), not from the spread of
-//! single paths ([`super::illuminance`]).
+//! single paths (`engine::illuminance`).
 
-use super::rng::Rng;
+use super::rng::{Rng, STRATIFIED_DIMENSIONS};
 
-/// Dimensions taken from the point set per path (pairs of 2-D sequences); the rest of a
-/// path's numbers come from its pseudo-random stream.
-pub const DIMENSIONS: usize = 24;
-const PAIRS: usize = DIMENSIONS / 2;
+/// Pairs of dimensions, each its own 2-D sequence.
+const PAIRS: usize = STRATIFIED_DIMENSIONS / 2;
 
 /// Laine & Karras's permutation of the bits of `x` (each bit depends only on lower ones), as
 /// Burley gives it.
@@ -105,8 +103,8 @@ impl Randomisation {
 
     /// Point `index` of the set, each coordinate in [0, 1); `jitter` supplies the uniform
     /// offsets inside the 2^-32 cells.
-    pub fn point(&self, index: u32, jitter: &mut Rng) -> [f64; DIMENSIONS] {
-        let mut out = [0.0; DIMENSIONS];
+    pub fn point(&self, index: u32, jitter: &mut Rng) -> [f64; STRATIFIED_DIMENSIONS] {
+        let mut out = [0.0; STRATIFIED_DIMENSIONS];
         for (k, p) in self.pairs.iter().enumerate() {
             let (x, y) = sobol_2d(nested_scramble(index, p[0]));
             let x = nested_scramble(x, p[1]) ^ p[3];
@@ -132,7 +130,8 @@ mod tests {
     fn pairs_are_stratified() {
         let mut rng = Rng::for_stream(5, 0);
         let r = Randomisation::new(&mut rng);
-        let pts: Vec<[f64; DIMENSIONS]> = (0..256).map(|i| r.point(i, &mut rng)).collect();
+        let pts: Vec<[f64; STRATIFIED_DIMENSIONS]> =
+            (0..256).map(|i| r.point(i, &mut rng)).collect();
         for k in 0..PAIRS {
             for (nx, ny) in [(16usize, 16usize), (4, 64), (256, 1)] {
                 let mut seen = vec![0u32; 256];
@@ -163,16 +162,16 @@ mod tests {
     fn points_are_uniform_over_randomisations() {
         let mut rng = Rng::for_stream(6, 0);
         let n = 20_000;
-        let (mut s, mut s2) = ([0.0; DIMENSIONS], [0.0; DIMENSIONS]);
+        let (mut s, mut s2) = ([0.0; STRATIFIED_DIMENSIONS], [0.0; STRATIFIED_DIMENSIONS]);
         for _ in 0..n {
             let r = Randomisation::new(&mut rng);
             let p = r.point(3, &mut rng);
-            for d in 0..DIMENSIONS {
+            for d in 0..STRATIFIED_DIMENSIONS {
                 s[d] += p[d];
                 s2[d] += p[d] * p[d];
             }
         }
-        for d in 0..DIMENSIONS {
+        for d in 0..STRATIFIED_DIMENSIONS {
             // Standard errors: 1/sqrt(12 n) = 0.002 and sqrt(4/45 / n) = 0.0021; 5 sigma.
             assert!((s[d] / n as f64 - 0.5).abs() < 0.0102, "{d}");
             assert!((s2[d] / n as f64 - 1.0 / 3.0).abs() < 0.0106, "{d}");

@@ -12,12 +12,16 @@ pub fn splitmix64(state: &mut u64) -> u64 {
     z ^ (z >> 31)
 }
 
+/// Numbers a path takes from its stratified point set (`engine::qmc`) before its
+/// pseudo-random stream: the longest prefix a generator holds.
+pub const STRATIFIED_DIMENSIONS: usize = 24;
+
 /// A xoshiro256++ generator, optionally preceded by a few given numbers (a path's
-/// stratified dimensions, [`super::qmc`]) that [`Rng::uniform`] returns first.
+/// stratified dimensions, `engine::qmc`) that [`Rng::uniform`] returns first.
 #[derive(Clone, Debug)]
 pub struct Rng {
     s: [u64; 4],
-    prefix: [f64; super::qmc::DIMENSIONS],
+    prefix: [f64; STRATIFIED_DIMENSIONS],
     prefix_len: u8,
     prefix_next: u8,
 }
@@ -35,7 +39,7 @@ impl Rng {
         ];
         Self {
             s,
-            prefix: [0.0; super::qmc::DIMENSIONS],
+            prefix: [0.0; STRATIFIED_DIMENSIONS],
             prefix_len: 0,
             prefix_next: 0,
         }
@@ -43,7 +47,7 @@ impl Rng {
 
     /// The next calls of [`Rng::uniform`] return `values` (each in [0, 1)) in order, then
     /// the stream resumes where it was.
-    pub fn set_prefix(&mut self, values: &[f64; super::qmc::DIMENSIONS]) {
+    pub fn set_prefix(&mut self, values: &[f64; STRATIFIED_DIMENSIONS]) {
         self.prefix = *values;
         self.prefix_len = values.len() as u8;
         self.prefix_next = 0;

@@ -10,7 +10,7 @@ use super::shapes::{PreparedCone, PreparedPolygon, Primitive, ShapeHit};
 use super::sky::{source_seen, DistantEmitter, DistantKind, SkyFunction};
 use super::sky_sampling::SkyDistribution;
 use super::slab::{BoxTest, SlabTest};
-use crate::scene::{Modifier, ModifierKind, ModifierRef, Scene, Shape, Surface};
+use crate::scene::{DistantSource, Modifier, ModifierKind, ModifierRef, Scene, Shape, Surface};
 use glam::DVec3;
 
 /// Distance under which a ray leaving a curved surface ignores it (RADIANCE's `FTINY`, in
@@ -88,42 +88,8 @@ impl World {
         let mut polygon_vertices = Vec::new();
         for surface in scene.surfaces() {
             let (material, patterns) = resolve(scene, surface)?;
-            if let Shape::Source(s) = &surface.shape {
-                let Some(m) = material else {
-                    continue; // void: RADIANCE ignores it
-                };
-                let (kind, radiance, illuminates) = match &m.kind {
-                    ModifierKind::Light(l) => (DistantKind::Light, l.radiance_w_sr_m2, true),
-                    ModifierKind::Glow(g) => (
-                        DistantKind::Glow,
-                        g.radiance_w_sr_m2,
-                        Emitter::glow_illuminates(g.max_radius_m),
-                    ),
-                    other => {
-                        return Err(EngineError::Unsupported {
-                            at: surface.origin.clone(),
-                            what: format!(
-                                "source `{}` has a {} material; only light and glow are traced \
-                                 on a distant source",
-                                surface.name,
-                                other.type_name()
-                            ),
-                        })
-                    }
-                };
-                if !illuminates {
-                    continue;
-                }
-                let half = 0.5 * s.angle_deg.to_radians();
-                distant.push(DistantEmitter {
-                    name: surface.name.clone(),
-                    kind,
-                    direction: s.direction,
-                    cos_half_angle: half.cos(),
-                    solid_angle_sr: s.solid_angle_sr(),
-                    radiance_w_sr_m2: radiance,
-                    patterns,
-                });
+            if let Shape::Source(source) = &surface.shape {
+                distant.extend(distant_emitter(surface, source, material, patterns)?);
                 continue;
             }
             let key = surface.modifier;
@@ -510,4 +476,49 @@ fn resolve<'a>(
         next = m.modifier;
     }
     Ok((material, patterns))
+}
+
+/// The distant emitter of a `source` surface `s` with its material `material` and the
+/// patterns on its chain; None if it is `void` or never illuminates.
+fn distant_emitter(
+    surface: &Surface,
+    s: &DistantSource,
+    material: Option<&Modifier>,
+    patterns: Vec<SkyFunction>,
+) -> Result<Option<DistantEmitter>, EngineError> {
+    let Some(m) = material else {
+        return Ok(None); // void: RADIANCE ignores it
+    };
+    let (kind, radiance, illuminates) = match &m.kind {
+        ModifierKind::Light(l) => (DistantKind::Light, l.radiance_w_sr_m2, true),
+        ModifierKind::Glow(g) => (
+            DistantKind::Glow,
+            g.radiance_w_sr_m2,
+            Emitter::glow_illuminates(g.max_radius_m),
+        ),
+        other => {
+            return Err(EngineError::Unsupported {
+                at: surface.origin.clone(),
+                what: format!(
+                    "source `{}` has a {} material; only light and glow are traced \
+                     on a distant source",
+                    surface.name,
+                    other.type_name()
+                ),
+            })
+        }
+    };
+    if !illuminates {
+        return Ok(None);
+    }
+    let half = 0.5 * s.angle_deg.to_radians();
+    Ok(Some(DistantEmitter {
+        name: surface.name.clone(),
+        kind,
+        direction: s.direction,
+        cos_half_angle: half.cos(),
+        solid_angle_sr: s.solid_angle_sr(),
+        radiance_w_sr_m2: radiance,
+        patterns,
+    }))
 }

@@ -4,10 +4,15 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+/// The primitive types Skylux reads, as listed in [`SceneError::UnsupportedType`] messages.
+pub const SUPPORTED_TYPES: &str =
+    "plastic, metal, trans, glass, mirror, light, glow, brightfunc (modifiers) and polygon, \
+     sphere, cylinder, ring, cone, source (surfaces)";
+
 /// A file and a 1-based line in it: where a primitive starts, or where a bad token is.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct SourceLocation {
-    /// The file as it was given to the loader (or the label given to [`super::parse`]).
+    /// The file as it was given to the loader (or the label given to `scene::parse`).
     pub file: Arc<Path>,
     /// 1-based line number.
     pub line: usize,
@@ -62,7 +67,7 @@ pub enum SceneError {
         reason: &'static str,
     },
 
-    #[error("{at}: unsupported primitive type `{type_name}` (identifier `{identifier}`): {reason}; expected one of {}", super::parse::SUPPORTED_TYPES)]
+    #[error("{at}: unsupported primitive type `{type_name}` (identifier `{identifier}`): {reason}; expected one of {}", SUPPORTED_TYPES)]
     UnsupportedType {
         at: SourceLocation,
         type_name: String,

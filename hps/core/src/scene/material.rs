@@ -7,8 +7,31 @@
 
 use super::error::{ArgumentList, SceneError};
 use super::parse::{PrimitiveType, RawPrimitive};
-use super::ModifierRef;
 use glam::DVec3;
+
+/// Index of a modifier in `Scene::modifiers`. A modifier always refers to modifiers with a
+/// smaller index, so walking a chain of modifiers always ends.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct ModifierId(usize);
+
+impl ModifierId {
+    pub(super) fn new(index: usize) -> Self {
+        Self(index)
+    }
+
+    pub fn index(self) -> usize {
+        self.0
+    }
+}
+
+/// What a primitive names as its modifier: RADIANCE's built-in `void`, or the definition of
+/// that name most recent at that point in the files (reference manual §2.1: later definitions
+/// apply to the primitives after them and do not relink earlier ones).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
+pub enum ModifierRef {
+    Void,
+    Defined(ModifierId),
+}
 
 /// Refractive index RADIANCE's `glass` uses when no fourth real argument is given.
 pub const GLASS_DEFAULT_REFRACTIVE_INDEX: f64 = 1.52;

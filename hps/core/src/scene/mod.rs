@@ -22,12 +22,11 @@ mod parse;
 mod sensors;
 mod shape;
 
-pub use error::{ArgumentList, SceneError, SourceLocation};
+pub use error::{ArgumentList, SceneError, SourceLocation, SUPPORTED_TYPES};
 pub use material::{
-    Brightfunc, Glass, Glow, Light, Metal, Mirror, ModifierKind, Plastic, Trans,
-    GLASS_DEFAULT_REFRACTIVE_INDEX,
+    Brightfunc, Glass, Glow, Light, Metal, Mirror, ModifierId, ModifierKind, ModifierRef, Plastic,
+    Trans, GLASS_DEFAULT_REFRACTIVE_INDEX,
 };
-pub use parse::SUPPORTED_TYPES;
 pub use sensors::{load_sensors, parse_sensors, Sensor, SensorsError};
 pub use shape::{Cone, Cylinder, DistantSource, Polygon, Ring, Shape, Sphere, MIN_LENGTH_M};
 
@@ -37,26 +36,6 @@ use parse::read_primitive;
 use std::collections::HashMap;
 use std::path::Path;
 use std::sync::Arc;
-
-/// Index of a modifier in [`Scene::modifiers`]. A modifier always refers to modifiers with a
-/// smaller index, so walking a chain of modifiers always ends.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct ModifierId(usize);
-
-impl ModifierId {
-    pub fn index(self) -> usize {
-        self.0
-    }
-}
-
-/// What a primitive names as its modifier: RADIANCE's built-in `void`, or the definition of
-/// that name most recent at that point in the files (reference manual §2.1: later definitions
-/// apply to the primitives after them and do not relink earlier ones).
-#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
-pub enum ModifierRef {
-    Void,
-    Defined(ModifierId),
-}
 
 /// A material or pattern definition.
 #[derive(Clone, Debug, PartialEq)]
@@ -162,7 +141,7 @@ impl Scene {
 
     /// The modifier an id refers to (`None` only for an id from another scene).
     pub fn modifier(&self, id: ModifierId) -> Option<&Modifier> {
-        self.modifiers.get(id.0)
+        self.modifiers.get(id.index())
     }
 
     /// The definition a primitive appended now would get for `name`.
@@ -179,7 +158,7 @@ impl Scene {
     pub fn material(&self, modifier: ModifierRef) -> Option<&Modifier> {
         let mut next = modifier;
         while let ModifierRef::Defined(id) = next {
-            let m = self.modifiers.get(id.0)?;
+            let m = self.modifiers.get(id.index())?;
             if m.kind.is_material() {
                 return Some(m);
             }
@@ -224,7 +203,7 @@ impl Scene {
                 if kind.is_material() {
                     self.check_no_material_below(&raw, modifier)?;
                 }
-                let id = ModifierId(self.modifiers.len());
+                let id = ModifierId::new(self.modifiers.len());
                 self.modifiers.push(Modifier {
                     name: raw.identifier.to_string(),
                     modifier,
@@ -287,7 +266,7 @@ mod tests {
         assert_eq!(reflectance(&scene.surfaces()[1]), 0.9);
         assert_eq!(
             scene.modifier_named("m"),
-            Some(ModifierRef::Defined(ModifierId(1)))
+            Some(ModifierRef::Defined(ModifierId::new(1)))
         );
     }
 

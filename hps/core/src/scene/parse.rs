@@ -9,11 +9,6 @@
 use super::error::{ArgumentList, SceneError, SourceLocation};
 use super::lexer::{Lexer, Token};
 
-/// The primitive types Skylux reads, as listed in [`SceneError::UnsupportedType`] messages.
-pub const SUPPORTED_TYPES: &str =
-    "plastic, metal, trans, glass, mirror, light, glow, brightfunc (modifiers) and polygon, \
-     sphere, cylinder, ring, cone, source (surfaces)";
-
 /// Every other primitive type RADIANCE 5 knows, so a message can say whether an unsupported
 /// type is a RADIANCE type outside the subset or a typo.
 const OTHER_RADIANCE_TYPES: &[&str] = &[
