@@ -556,7 +556,8 @@ struct Tracer<'a, 'e> {
     settings: &'a Settings,
     nee: Option<&'a SkyNee<'a>>,
     roulette: bool,
-    escape: &'e mut dyn FnMut(DVec3, DVec3) -> DVec3,
+    /// What an escaping ray collects: `on_escape(throughput, direction)`.
+    on_escape: &'e mut dyn FnMut(DVec3, DVec3) -> DVec3,
 }
 
 /// The state of one path as [`trace`] follows it.
@@ -599,7 +600,7 @@ fn trace(
         settings,
         nee,
         roulette,
-        escape,
+        on_escape: escape,
     };
     let mut path = PathState {
         ray,
@@ -693,7 +694,7 @@ impl Tracer<'_, '_> {
             (Some(nee), Some(last)) => nee.continuation_weight(last, d),
             _ => 1.0,
         };
-        path.radiance + (self.escape)(path.throughput * weight, d)
+        path.radiance + (self.on_escape)(path.throughput * weight, d)
     }
 
     /// A vertex on a shaded surface: direct light from the sun, its mirror images and the sky
