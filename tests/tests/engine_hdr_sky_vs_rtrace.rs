@@ -18,9 +18,7 @@ use radiance::{
 use skylux_hps::camera::{CameraModel, DeviceConfig, OrientationConfig};
 use skylux_hps::campaign::Readout;
 use skylux_hps::engine::{self, Settings, World};
-use skylux_hps::hdr::{
-    map_capture, write_radiance_sky, CaptureMap, SkyLookup, WHITE_EFFICACY_LM_W,
-};
+use skylux_hps::hdr::{map_capture, write_radiance_sky, CaptureMap, SkyLookup};
 use skylux_hps::scene;
 use skylux_sim::capture::{simulate_capture, CaptureSpec};
 use std::path::Path;
@@ -112,7 +110,7 @@ fn a_measured_sky_map_lights_the_room_as_in_rtrace() {
     // full angle: 180° is the upper hemisphere), the ground as a second glow below.
     let sky_dir = dir.path().join("sky");
     write_radiance_sky(&sky_dir, 768, &|d| lookup.luminance_cd_m2(d)).unwrap();
-    let g = GROUND_CD_M2 / WHITE_EFFICACY_LM_W;
+    let g = GROUND_CD_M2 / skylux_hps::photometry::WHITE_EFFICACY_LM_PER_W;
     let sky_rad = std::fs::read_to_string(sky_dir.join("sky.rad"))
         .unwrap()
         + &format!(
@@ -148,7 +146,7 @@ fn a_measured_sky_map_lights_the_room_as_in_rtrace() {
         } else {
             lookup.luminance_cd_m2(d)
         };
-        DVec3::splat(l / WHITE_EFFICACY_LM_W)
+        DVec3::splat(l / skylux_hps::photometry::WHITE_EFFICACY_LM_PER_W)
     })));
     let sensors = scene::load_sensors(Path::new(ROOM).join("sensors.pts")).unwrap();
     let settings = Settings {

@@ -38,11 +38,11 @@ mod common;
 use common::loop_harness::{assert_improved, effect, run, simulate, simulate_spec, spec, ROOM};
 use skylux_hps::camera::DeviceConfig;
 use skylux_hps::campaign::Campaign;
+use skylux_hps::numerics::pearson;
 use skylux_hps::photometry::spectral::{
     cie_daylight, load_d65, load_daylight_basis, load_photopic, load_rgb_sensitivities, overlap,
 };
 use skylux_hps::validation::illuminance_loop::LoopOutcome;
-use skylux_hps::validation::report::correlation_and_slope;
 use skylux_sim::campaign::{simulate_campaign, TruthRecord};
 use std::path::PathBuf;
 use std::sync::OnceLock;
@@ -242,7 +242,7 @@ fn incidence_and_facade_distance_variables() {
             )
         })
         .collect();
-    let (r_sunlit, slope) = correlation_and_slope(&sunlit);
+    let (r_sunlit, slope) = pearson(&sunlit).map_or((f64::NAN, f64::NAN), |p| (p.r, p.slope));
     println!(
         "sunlit readings: {} r {r_sunlit:.2} slope {slope:.4}/deg",
         sunlit.len()

@@ -5,8 +5,8 @@ use anyhow::Context;
 use skylux_hps::camera::{CameraModel, DeviceConfig, ImagePoint};
 use skylux_hps::campaign::BayerPattern;
 use skylux_hps::hdr::{merge, Exposure, LuminanceMap, MapFlag};
+use skylux_hps::timing::median_ms;
 use skylux_sim::hdr_case::{HdrCase, EXPOSURES_S, HEIGHT_PX, WIDTH_PX};
-use std::time::Instant;
 
 #[derive(clap::Args)]
 pub struct BenchArgs {
@@ -82,18 +82,6 @@ fn load_average() -> Option<f64> {
         .next()?
         .parse()
         .ok()
-}
-
-fn median_ms(repeat: usize, mut f: impl FnMut()) -> f64 {
-    let mut times: Vec<f64> = (0..repeat)
-        .map(|_| {
-            let t = Instant::now();
-            f();
-            t.elapsed().as_secs_f64() * 1e3
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
-    times[times.len() / 2]
 }
 
 fn bench_hdr(json: bool, repeat: usize) -> anyhow::Result<()> {

@@ -4,8 +4,8 @@
 use anyhow::Context;
 use clap::Args;
 use skylux_hps::campaign::Campaign;
+use skylux_hps::output::write_atomic;
 use skylux_hps::validation::illuminance_loop::{run_loop, LoopOptions, LoopOutcome};
-use skylux_hps::validation::report::write_atomic;
 use std::path::{Path, PathBuf};
 
 #[derive(Args)]

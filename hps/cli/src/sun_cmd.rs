@@ -8,12 +8,12 @@ use clap::Args;
 use serde_json::json;
 use skylux_hps::camera::DeviceConfig;
 use skylux_hps::campaign::Campaign;
+use skylux_hps::output::write_atomic;
 use skylux_hps::sun::tracking::{
     fit_camera, reproject, summarise, track_campaign, write_csv, write_plot, FitTarget, SunFit,
     TrackingOptions, TrackingSummary,
 };
 use skylux_hps::sun::SunFlag;
-use skylux_hps::validation::report::write_atomic;
 use std::path::{Path, PathBuf};
 
 #[derive(Args)]

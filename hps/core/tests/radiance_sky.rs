@@ -5,7 +5,8 @@
 mod common;
 use common::radiance::{check_output, radiance, tool};
 use glam::DVec3;
-use skylux_hps::hdr::{picture_direction, write_radiance_sky, WHITE_EFFICACY_LM_W};
+use skylux_hps::hdr::{picture_direction, write_radiance_sky};
+use skylux_hps::photometry::WHITE_EFFICACY_LM_PER_W;
 
 #[test]
 fn rtrace_sees_the_map_through_the_sky_description() {
@@ -73,7 +74,7 @@ fn rtrace_sees_the_map_through_the_sky_description() {
             .split_whitespace()
             .map(|x| x.parse().unwrap())
             .collect();
-        let luminance = WHITE_EFFICACY_LM_W * (0.265 * v[0] + 0.670 * v[1] + 0.065 * v[2]);
+        let luminance = WHITE_EFFICACY_LM_PER_W * (0.265 * v[0] + 0.670 * v[1] + 0.065 * v[2]);
         worst = worst.max((luminance / field(*d) - 1.0).abs());
     }
     assert_eq!(text.lines().count(), directions.len());

@@ -24,25 +24,13 @@ use skylux_hps::campaign::BayerPattern;
 use skylux_hps::fpga::frames::RingLayout;
 use skylux_hps::fpga::sensor::SensorConfig;
 use skylux_hps::hdr::merge;
+use skylux_hps::timing::median_ms;
 use skylux_regmap::descriptor::{self, Descriptor};
-use std::time::Instant;
 
 /// One core here against one Cortex-A9 core of the DE1-SoC (issue 8: "roughly ten times").
 pub const A9_SLOWDOWN: f64 = 10.0;
 /// PIXCLK on the board (hardware-facts.md §1.2).
 const PIXCLK_HZ: f64 = 96e6;
-
-fn median_ms(repeat: usize, mut f: impl FnMut()) -> f64 {
-    let mut t: Vec<f64> = (0..repeat.max(1))
-        .map(|_| {
-            let s = Instant::now();
-            f();
-            s.elapsed().as_secs_f64() * 1e3
-        })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[t.len() / 2]
-}
 
 /// A plain buffer standing for the DMA memory.
 struct Buffer(Vec<u8>);

@@ -32,7 +32,7 @@ pub const MAPS_DIR: &str = "maps";
 pub const CAPTURES_DIR: &str = "captures";
 /// Partial captures and scratch files; emptied on start.
 pub const SPOOL_DIR: &str = "spool";
-const TMP_SUFFIX: &str = ".tmp";
+use skylux_hps::output::atomic::TMP_SUFFIX;
 
 /// Why the output could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -58,55 +58,23 @@ fn err<'a>(path: &'a Path, what: &'static str) -> impl FnOnce(std::io::Error) ->
     }
 }
 
-/// Flushes a file's data and metadata to the disk.
-pub fn fsync_file(path: &Path) -> std::io::Result<()> {
-    File::open(path)?.sync_all()
-}
+pub use skylux_hps::output::{fsync_dir, fsync_file, tmp_name};
 
-/// Flushes a directory (so a rename or a new entry in it survives a power cut).
-pub fn fsync_dir(path: &Path) -> std::io::Result<()> {
-    File::open(path)?.sync_all()
-}
-
-/// Writes `bytes` to `path` atomically: temporary file, fsync, rename, fsync of the
-/// directory. `before_rename` runs between the temporary's fsync and the rename (tests use
-/// it to stand for a crash there).
+/// Writes `bytes` to `path` atomically and durably (`skylux_hps::output::write_atomic_with`).
+/// `before_rename` runs between the temporary's fsync and the rename (tests use it to stand
+/// for a crash there).
 pub fn write_atomic_with(
     path: &Path,
     bytes: &[u8],
     before_rename: impl FnOnce() -> std::io::Result<()>,
 ) -> Result<(), OutputError> {
-    let tmp = tmp_name(path);
-    let result = (|| {
-        let mut f = File::create(&tmp)?;
-        f.write_all(bytes)?;
-        f.sync_all()?;
-        drop(f);
-        before_rename()?;
-        std::fs::rename(&tmp, path)?;
-        if let Some(dir) = path.parent() {
-            fsync_dir(dir)?;
-        }
-        Ok(())
-    })();
-    result.map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        err(path, "atomic write")(e)
-    })
+    skylux_hps::output::write_atomic_with(path, bytes, before_rename)
+        .map_err(|e| err(path, "atomic write")(e.source))
 }
 
 /// [`write_atomic_with`] without a hook.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
     write_atomic_with(path, bytes, || Ok(()))
-}
-
-/// `dir/.name.tmp` beside `path`.
-fn tmp_name(path: &Path) -> PathBuf {
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    path.with_file_name(format!(".{name}{TMP_SUFFIX}"))
 }
 
 /// An append-only log of complete lines.

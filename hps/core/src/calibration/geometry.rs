@@ -11,11 +11,11 @@
 //! in pixels and in degrees (the angle between the direction the fitted model reads at the
 //! measured point and the known one) and each parameter's standard error.
 
-use super::linalg::{inverse_scaled, solve_scaled};
 use super::{markdown_table, read_numeric_csv, CalibrationError, StepOutput};
 use crate::camera::{
     direction_from_alt_az, orientation_from_rotation, CameraModel, DeviceConfig, ImagePoint,
 };
+use crate::numerics::linalg::{inverse_scaled, solve_scaled};
 use crate::sun::{fit_orientation, SunObservation};
 use glam::{DMat3, DVec3};
 use serde::Serialize;

@@ -14,15 +14,14 @@
 //! [`DeviceConfig`]; [`write_outputs`] writes `device.toml` and the report atomically.
 
 pub mod geometry;
-pub mod linalg;
 pub mod response;
 pub mod spectral;
 pub mod vignetting;
 
 use crate::camera::{DeviceConfig, DeviceError};
 use crate::hdr::CaptureMapError;
+use crate::output::{write_atomic, WriteError};
 use crate::photometry::SpectralError;
-use crate::validation::report::{write_atomic, ReportError};
 use std::path::{Path, PathBuf};
 
 /// Why a calibration step failed. Every variant names the file (or the input) and the field.
@@ -35,7 +34,9 @@ pub enum CalibrationError {
     #[error(transparent)]
     Capture(#[from] CaptureMapError),
     #[error(transparent)]
-    Report(#[from] ReportError),
+    Write(#[from] WriteError),
+    #[error("{path}: cannot serialise the report: {message}")]
+    Json { path: PathBuf, message: String },
     /// A measurement file has a missing column, a value that is not a finite number, or too
     /// few usable rows.
     #[error("{path}: {field}: {reason}")]
@@ -72,19 +73,13 @@ pub struct StepOutput {
 /// temporary file renamed into place) and the step's report as JSON and Markdown (atomic
 /// writes). Returns the paths written.
 pub fn write_outputs(out_dir: &Path, step: &StepOutput) -> Result<Vec<PathBuf>, CalibrationError> {
-    std::fs::create_dir_all(out_dir).map_err(|source| ReportError::Io {
-        path: out_dir.into(),
-        source,
-    })?;
+    std::fs::create_dir_all(out_dir).map_err(|source| WriteError::new(out_dir, source))?;
     let device_path = out_dir.join("device.toml");
     let tmp = out_dir.join("device.toml.tmp");
     step.device.write(&tmp)?;
-    std::fs::rename(&tmp, &device_path).map_err(|source| ReportError::Io {
-        path: device_path.clone(),
-        source,
-    })?;
+    std::fs::rename(&tmp, &device_path).map_err(|source| WriteError::new(&device_path, source))?;
     let json_path = out_dir.join(format!("{}_report.json", step.name));
-    let text = serde_json::to_string_pretty(&step.json).map_err(|e| ReportError::Parse {
+    let text = serde_json::to_string_pretty(&step.json).map_err(|e| CalibrationError::Json {
         path: json_path.clone(),
         message: e.to_string(),
     })?;

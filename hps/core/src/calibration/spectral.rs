@@ -20,9 +20,9 @@
 //! weights' overall scale). Both results are reported. The weights written to `device.toml`
 //! are scaled to sum to 1; `cg` must then be recalibrated ([`super::response`]).
 
-use super::linalg::nnls;
 use super::{markdown_table, CalibrationError, StepOutput};
 use crate::camera::DeviceConfig;
+use crate::numerics::linalg::nnls;
 use crate::photometry::spectral::{integrate_visible, read_value_columns, Curve};
 use serde::Serialize;
 use serde_json::json;

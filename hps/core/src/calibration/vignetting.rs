@@ -11,10 +11,10 @@
 //! coefficients up to edge effects; the smoothed residuals are correlated and would understate
 //! it).
 
-use super::linalg::{inverse_scaled, least_squares, normal_equations};
 use super::{markdown_table, CalibrationError, StepOutput};
 use crate::camera::{CameraModel, DeviceConfig};
 use crate::hdr::{map_capture, GroupGeometry, LuminanceMap, MapFlag};
+use crate::numerics::linalg::{inverse_scaled, least_squares, normal_equations};
 use serde::Serialize;
 use serde_json::json;
 use std::path::Path;

@@ -39,8 +39,7 @@ use crate::scene::Sensor;
 use glam::DVec3;
 use rayon::prelude::*;
 
-/// RADIANCE's luminous efficacy of its "white" radiometric unit, lm/W (color.h WHTEFFICACY).
-pub const WHITE_EFFICACY_LM_PER_W: f64 = 179.0;
+pub use crate::photometry::WHITE_EFFICACY_LM_PER_W;
 
 /// Paths per random stream.
 const BATCH_SAMPLES: u32 = 64;

@@ -16,6 +16,4 @@ pub use merge::{
     merge, Exposure, ExposureFrame, GroupParams, GroupedFrame, HdrError, LuminanceMap, MapFlag,
     Samples,
 };
-pub use radiance_sky::{
-    picture_direction, sky_description, write_radiance_sky, CAL_FILE, WHITE_EFFICACY_LM_W,
-};
+pub use radiance_sky::{picture_direction, sky_description, write_radiance_sky, CAL_FILE};

@@ -14,8 +14,7 @@ use glam::DVec3;
 use std::io::Write;
 use std::path::Path;
 
-/// RADIANCE's luminous efficacy of its radiance unit, lm/W (WHTEFFICACY).
-pub const WHITE_EFFICACY_LM_W: f64 = 179.0;
+use crate::photometry::WHITE_EFFICACY_LM_PER_W;
 
 /// The function file: `sky_u`, `sky_v` of a direction (Dx, Dy, Dz) in the picture.
 pub const CAL_FILE: &str = "{ skylux_sky.cal: the angular-fisheye sky picture written by skylux.
@@ -86,7 +85,7 @@ pub fn write_radiance_sky(
     for j in 0..size {
         for i in 0..size {
             let radiance = picture_direction(i, j, size)
-                .map(|d| luminance_cd_m2(d) / WHITE_EFFICACY_LM_W)
+                .map(|d| luminance_cd_m2(d) / WHITE_EFFICACY_LM_PER_W)
                 .unwrap_or(0.0);
             out.write_all(&rgbe(radiance))?;
         }

@@ -90,7 +90,7 @@ fn round_up(v: f64) -> f64 {
     10.0 * p
 }
 
-/// Where the legend's font is looked for: the plots' list (`validation::plot::FONT_PATHS`,
+/// Where the legend's font is looked for: the plots' list (`output::plot::FONT_PATHS`,
 /// `SKYLUX_PLOT_FONT` first).
 const FAMILY: &str = "skylux-render-sans";
 
@@ -101,11 +101,7 @@ fn legend_font() -> bool {
         if let Some(p) = std::env::var_os("SKYLUX_PLOT_FONT") {
             candidates.push(PathBuf::from(p));
         }
-        candidates.extend(
-            crate::validation::plot::FONT_PATHS
-                .iter()
-                .map(PathBuf::from),
-        );
+        candidates.extend(crate::output::plot::FONT_PATHS.iter().map(PathBuf::from));
         for path in candidates {
             if let Ok(bytes) = std::fs::read(&path) {
                 // Plotters keeps fonts for the whole process as `&'static`: one leak, once.

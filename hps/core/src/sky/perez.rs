@@ -20,7 +20,7 @@
 //! cd/m² directly (which RADIANCE would then multiply by 179 again when asked for luminance).
 
 use super::cie::{hemisphere_integral, HemisphereGrid};
-use crate::hdr::WHITE_EFFICACY_LM_W;
+use crate::photometry::WHITE_EFFICACY_LM_PER_W;
 use glam::DVec3;
 use std::f64::consts::PI;
 use std::fmt::Write as _;
@@ -691,8 +691,8 @@ impl PerezSky {
         let omega = self.sun_solid_angle_sr();
         let (normalisation, sun) = match units {
             GendaylitUnits::VisibleRadiance => (
-                self.diffuse_horizontal_lux / self.tregenza_sum / WHITE_EFFICACY_LM_W,
-                self.direct_normal_lux / omega / WHITE_EFFICACY_LM_W,
+                self.diffuse_horizontal_lux / self.tregenza_sum / WHITE_EFFICACY_LM_PER_W,
+                self.direct_normal_lux / omega / WHITE_EFFICACY_LM_PER_W,
             ),
             GendaylitUnits::SolarRadiance => (
                 self.diffuse_horizontal_w_m2 / self.tregenza_sum,

@@ -18,9 +18,9 @@ use crate::camera::{alt_az_from_direction, CameraModel, DeviceConfig, ImagePoint
 use crate::campaign::{Campaign, CaptureEntry};
 use crate::hdr::{map_capture, CaptureMapError};
 use crate::io::irradiance::PyranometerTable;
+use crate::output::plot::{panels_png, Frame, Panel, PlotError, Series};
+use crate::output::{write_atomic, WriteError};
 use crate::sky::perez::{PerezConditions, PerezInput, PerezSky};
-use crate::validation::plot::{panels_png, Frame, Panel, PlotError, Series};
-use crate::validation::report::{write_atomic, ReportError};
 use chrono::{DateTime, Datelike, FixedOffset, TimeDelta, Timelike, Utc};
 use glam::DVec3;
 use serde::Serialize;
@@ -163,7 +163,7 @@ pub enum TrackingError {
     #[error("{path}: {message}")]
     Sun { path: PathBuf, message: String },
     #[error(transparent)]
-    Write(#[from] ReportError),
+    Write(#[from] WriteError),
     #[error(transparent)]
     Plot(#[from] PlotError),
 }

@@ -13,11 +13,13 @@
 //! Night samples of the fit set (zenith above [`NIGHT_MIN_ZENITH_DEG`]) give the thermal-offset
 //! evidence, GHI − DHI with no sky light at all.
 
-use super::plot::{self, BarGroup, Frame, Series};
 use super::pyranometer_effects::{PyranometerEffect, Variable};
-use super::report::{write_atomic, EffectReport, ErrorSummary, Report, ReportError};
+use super::report::{EffectReport, ErrorSummary, Report, ReportError};
 use super::split::{compare, split, Figure, HoldoutSet, Score, SplitError, SplitPlan, Timed};
 use crate::io::irradiance::{PyranometerTable, StampConvention};
+use crate::numerics::linalg::least_squares_dropping_collinear;
+use crate::output::plot::{self, BarGroup, Frame, Series};
+use crate::output::{write_atomic, WriteError};
 use crate::sun::{solar_position, Atmosphere, Site, SunError};
 use chrono::{DateTime, SecondsFormat, TimeDelta, Utc};
 use std::collections::BTreeMap;
@@ -134,6 +136,8 @@ pub enum ClosureError {
     Split(#[from] SplitError),
     #[error(transparent)]
     Report(#[from] ReportError),
+    #[error(transparent)]
+    Write(#[from] WriteError),
     #[error(transparent)]
     Plot(#[from] plot::PlotError),
     #[error("{path}: {source}")]
@@ -352,7 +356,7 @@ impl ClosureModel {
     pub fn fit(effects: &[PyranometerEffect], samples: &[&ClosureSample]) -> Option<Self> {
         let rows: Vec<Vec<f64>> = samples.iter().map(|s| Self::columns(effects, s)).collect();
         let y: Vec<f64> = samples.iter().map(|s| s.residual_wm2()).collect();
-        let (coefficients, dropped) = least_squares(&rows, &y)?;
+        let (coefficients, dropped) = least_squares_dropping_collinear(&rows, &y)?;
         Some(Self {
             effects: effects.to_vec(),
             coefficients,
@@ -377,75 +381,6 @@ impl ClosureModel {
         }
         false
     }
-}
-
-/// A column whose part outside the span of the columns before it has less than this share of
-/// its squared norm (1 %² of its norm) cannot be told apart from them on these samples.
-const COLLINEAR_SHARE: f64 = 1e-4;
-
-/// Least squares through the normal equations, columns scaled to unit norm, eliminated in
-/// order without pivoting (the matrix is positive semi-definite). A column (nearly) in the span
-/// of the columns before it is dropped: its coefficient is 0 and its flag is set. `None` only
-/// for non-finite input.
-fn least_squares(rows: &[Vec<f64>], y: &[f64]) -> Option<(Vec<f64>, Vec<bool>)> {
-    let k = rows.first().map_or(0, Vec::len);
-    let mut a = vec![vec![0.0; k + 1]; k];
-    for (row, &yi) in rows.iter().zip(y) {
-        for i in 0..k {
-            for j in 0..k {
-                a[i][j] += row[i] * row[j];
-            }
-            a[i][k] += row[i] * yi;
-        }
-    }
-    if a.iter().flatten().any(|v| !v.is_finite()) {
-        return None;
-    }
-    let scale: Vec<f64> = (0..k).map(|i| a[i][i].sqrt()).collect();
-    let mut dropped: Vec<bool> = scale.iter().map(|s| s.is_nan() || *s <= 0.0).collect();
-    for i in 0..k {
-        for j in 0..k {
-            if !(dropped[i] || dropped[j]) {
-                a[i][j] /= scale[i] * scale[j];
-            }
-        }
-        if !dropped[i] {
-            a[i][k] /= scale[i];
-        }
-    }
-    // Gauss-Jordan in column order: the pivot a[c][c] is then the squared norm share of
-    // column c outside the span of the kept columns before it.
-    for c in 0..k {
-        if dropped[c] || a[c][c] < COLLINEAR_SHARE {
-            dropped[c] = true;
-            for row in a.iter_mut() {
-                row[c] = 0.0;
-            }
-            a[c].iter_mut().for_each(|v| *v = 0.0);
-            a[c][c] = 1.0;
-            a[c][k] = 0.0;
-            continue;
-        }
-        let pivot_row = a[c].clone();
-        for (i, row) in a.iter_mut().enumerate() {
-            if i != c {
-                let f = row[c] / pivot_row[c];
-                for (v, p) in row.iter_mut().zip(&pivot_row).skip(c) {
-                    *v -= f * p;
-                }
-            }
-        }
-    }
-    let x: Vec<f64> = (0..k)
-        .map(|i| {
-            if dropped[i] {
-                0.0
-            } else {
-                a[i][k] / a[i][i] / scale[i]
-            }
-        })
-        .collect();
-    x.iter().all(|v| v.is_finite()).then_some((x, dropped))
 }
 
 /// A model and its scores on the fit and hold-out sets.
@@ -513,24 +448,11 @@ fn mean(values: impl Iterator<Item = f64>) -> Option<f64> {
     (n > 0).then(|| s / n as f64)
 }
 
-/// Pearson correlation; 0 when either side is constant.
-fn correlation(a: &[f64], b: &[f64]) -> f64 {
-    let n = a.len().min(b.len()) as f64;
-    if n < 2.0 {
-        return 0.0;
-    }
-    let (ma, mb) = (a.iter().sum::<f64>() / n, b.iter().sum::<f64>() / n);
-    let (mut sab, mut saa, mut sbb) = (0.0, 0.0, 0.0);
-    for (x, y) in a.iter().zip(b) {
-        sab += (x - ma) * (y - mb);
-        saa += (x - ma).powi(2);
-        sbb += (y - mb).powi(2);
-    }
-    if saa > 0.0 && sbb > 0.0 {
-        sab / (saa * sbb).sqrt()
-    } else {
-        0.0
-    }
+/// Pearson correlation of two equally long series; 0 where it is undefined (a constant side,
+/// fewer than 3 points): such a series explains nothing.
+fn pearson_or_zero(a: &[f64], b: &[f64]) -> f64 {
+    let pairs: Vec<(f64, f64)> = a.iter().copied().zip(b.iter().copied()).collect();
+    crate::numerics::pearson(&pairs).map_or(0.0, |p| p.r)
 }
 
 /// The evidence sentence for `effect`, from the fit set only.
@@ -560,7 +482,7 @@ fn evidence(
         effect.signature(),
         before.mean_abs,
         after.mean_abs,
-        correlation(&residual, &contribution)
+        pearson_or_zero(&residual, &contribution)
     );
     let halves = || {
         let am = mean(

@@ -20,7 +20,7 @@
 use super::device_model::{CaptureData, ModelError, Room};
 use super::device_model::{CaptureTerms, ModelState};
 use super::effect_vignetting::{correct_terms, minimise_1d, HiddenSun, SkyGeometry};
-use super::effects::{correlation, fit_error, residual_points, Candidate, Effect, Sample};
+use super::effects::{fit_error, pearson_r, residual_points, Candidate, Effect, Sample};
 use super::split::FitSet;
 use crate::camera::{CameraModel, DeviceConfig};
 use crate::campaign::Campaign;
@@ -143,7 +143,7 @@ pub fn fit_unseen_sky(
     let xy = residual_points(state, &current, fit, |_, t| {
         vec![t.unseen_sky_fraction; t.sky_with_sun_lux.len()]
     });
-    let r = correlation(&xy);
+    let r = pearson_r(&xy);
     let hidden_residual: Vec<f64> = fit
         .samples()
         .iter()

@@ -197,7 +197,7 @@ pub fn fit_glazing_angular(
     if i == 0 {
         return None;
     }
-    let (x, e) = super::effects::golden_section(
+    let (x, e) = crate::numerics::golden_section(
         grid[i - 1],
         grid.get(i + 1).copied().unwrap_or(MAX_B0),
         (grid[i], errors[i]),
@@ -207,7 +207,7 @@ pub fn fit_glazing_angular(
     let best = (e, x);
     let (err, next, terms) = evaluate(best.1);
     let xy = sunlit_by_incidence(state, base, fit, glazing.normal_out);
-    let (r, slope) = super::report::correlation_and_slope(&xy);
+    let (r, slope) = crate::numerics::pearson(&xy).map_or((f64::NAN, f64::NAN), |p| (p.r, p.slope));
     // The diffuse part: near the façade a sensor sees the sky through the glazing at wider
     // angles, so the over-prediction falls with depth.
     let depth_xy: Vec<(f64, f64)> = fit
@@ -224,7 +224,8 @@ pub fn fit_glazing_angular(
                 .collect::<Vec<_>>()
         })
         .collect();
-    let (r_depth, _) = super::report::correlation_and_slope(&depth_xy);
+    let (r_depth, _) =
+        crate::numerics::pearson(&depth_xy).map_or((f64::NAN, f64::NAN), |p| (p.r, p.slope));
     let mut parameters = BTreeMap::new();
     parameters.insert("b0".into(), next.glazing_angular_b0);
     let evidence = format!(

@@ -20,7 +20,7 @@
 
 use super::device_model::{CaptureTerms, ModelState, Room};
 use super::effects::{
-    correlation, fit_error, fit_linear, residual_points, Candidate, Effect, FreeLinear, Sample,
+    fit_error, fit_linear, pearson_r, residual_points, Candidate, Effect, FreeLinear, Sample,
 };
 use super::sky_colour::CaptureColour;
 use super::split::FitSet;
@@ -163,7 +163,7 @@ pub fn fit_spectral(
         .collect();
     let errors: Vec<f64> = grid.iter().map(|m| at(*m).0).collect();
     let i = (0..grid.len()).min_by(|&a, &b| errors[a].total_cmp(&errors[b]))?;
-    let (x, e) = super::effects::golden_section(
+    let (x, e) = crate::numerics::golden_section(
         grid[i.saturating_sub(1)],
         grid[(i + 1).min(grid.len() - 1)],
         (grid[i], errors[i]),
@@ -184,7 +184,7 @@ pub fn fit_spectral(
             .map_or(f64::NAN, |sp| sp.colour.sky_index);
         vec![c; t.sky_with_sun_lux.len()]
     });
-    let r = correlation(&xy);
+    let r = pearson_r(&xy);
     let mut parameters = BTreeMap::new();
     parameters.insert("slope_per_index".into(), best.1);
     parameters.insert("reference_index".into(), REFERENCE_INDEX);

@@ -15,7 +15,7 @@
 //! seen sky as [`SkyPatches::aggregate`] fills it.
 
 use super::device_model::{CaptureData, CaptureTerms, ModelState};
-use super::effects::{correlation, fit_error, residual_points, Candidate, Effect, Sample};
+use super::effects::{fit_error, pearson_r, residual_points, Candidate, Effect, Sample};
 use super::split::FitSet;
 use crate::camera::{CameraModel, DeviceConfig};
 use crate::engine::DaylightCoefficients;
@@ -294,7 +294,7 @@ pub fn minimise_1d(f: &dyn Fn(f64) -> f64, a: f64, b: f64, steps: usize) -> (f64
         }
     }
     let (lo, hi) = ((best.0 - h).max(a), (best.0 + h).min(b));
-    super::effects::golden_section(lo, hi, best, 30, f)
+    crate::numerics::golden_section(lo, hi, best, 30, f)
 }
 
 /// Largest extra vignetting the fit considers.
@@ -336,7 +336,7 @@ pub fn fit_vignetting(
     let xy = residual_points(state, &current, fit, |capture, t| {
         light_off_axis_deg(t, dc, geometry, capture)
     });
-    let r = correlation(&xy);
+    let r = pearson_r(&xy);
     let mut parameters = BTreeMap::new();
     parameters.insert("extra_vignetting".into(), v);
     let evidence = format!(

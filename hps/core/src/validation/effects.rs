@@ -198,62 +198,6 @@ impl FreeLinear {
     }
 }
 
-/// Golden-section search for a minimum of `f` between `a` and `b` (unimodal there), for
-/// `iterations` steps, starting from `best` = (x, f(x)); returns the best (x, f(x)) seen.
-/// The one search the effects' 1-D fits share.
-pub fn golden_section(
-    mut a: f64,
-    mut b: f64,
-    mut best: (f64, f64),
-    iterations: usize,
-    mut f: impl FnMut(f64) -> f64,
-) -> (f64, f64) {
-    let g = (5f64.sqrt() - 1.0) / 2.0;
-    for _ in 0..iterations {
-        let (x1, x2) = (b - g * (b - a), a + g * (b - a));
-        let (e1, e2) = (f(x1), f(x2));
-        if e1 < e2 {
-            b = x2;
-            if e1 < best.1 {
-                best = (x1, e1);
-            }
-        } else {
-            a = x1;
-            if e2 < best.1 {
-                best = (x2, e2);
-            }
-        }
-    }
-    best
-}
-
-/// Solves the small normal equations `a x = b` (Gaussian elimination with pivoting).
-fn solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Option<Vec<f64>> {
-    let n = b.len();
-    for c in 0..n {
-        let p = (c..n).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))?;
-        if a[p][c].abs() < 1e-300 {
-            return None;
-        }
-        a.swap(c, p);
-        b.swap(c, p);
-        for r in c + 1..n {
-            let f = a[r][c] / a[c][c];
-            let pivot = a[c].clone();
-            for (x, p) in a[r].iter_mut().zip(&pivot).skip(c) {
-                *x -= f * p;
-            }
-            b[r] -= f * b[c];
-        }
-    }
-    let mut x = vec![0.0; n];
-    for r in (0..n).rev() {
-        let s: f64 = (r + 1..n).map(|k| a[r][k] * x[k]).sum();
-        x[r] = (b[r] - s) / a[r][r];
-    }
-    x.iter().all(|v| v.is_finite()).then_some(x)
-}
-
 /// Jointly fits the free linear parameters (glazing τ, unseen-ground ρ through u = τ and
 /// v = τρ, leak k) on the fit set, minimising Σ (prediction / measurement − 1)²; the others
 /// keep their values in `state`. Returns the new state, or `None` if the fit set cannot
@@ -314,7 +258,7 @@ pub fn fit_linear(
             }
         }
     }
-    let x = solve(a, b)?;
+    let x = crate::numerics::linalg::solve(&a, &b)?;
     let mut next = state.clone();
     let mut i = 0;
     match (free.glazing, free.ground) {
@@ -339,23 +283,9 @@ pub fn fit_linear(
     Some(next)
 }
 
-/// Pearson correlation.
-pub fn correlation(xy: &[(f64, f64)]) -> f64 {
-    let n = xy.len() as f64;
-    if xy.len() < 3 {
-        return f64::NAN;
-    }
-    let (mx, my) = (
-        xy.iter().map(|p| p.0).sum::<f64>() / n,
-        xy.iter().map(|p| p.1).sum::<f64>() / n,
-    );
-    let (mut sxy, mut sxx, mut syy) = (0.0, 0.0, 0.0);
-    for &(x, y) in xy {
-        sxy += (x - mx) * (y - my);
-        sxx += (x - mx).powi(2);
-        syy += (y - my).powi(2);
-    }
-    sxy / (sxx * syy).sqrt()
+/// Pearson's r of a residual signature; NaN where it is undefined, so no threshold passes.
+pub fn pearson_r(xy: &[(f64, f64)]) -> f64 {
+    crate::numerics::pearson(xy).map_or(f64::NAN, |p| p.r)
 }
 
 /// A fitted candidate.
@@ -485,7 +415,7 @@ fn fit_clock_offset(
                 .collect::<Vec<_>>()
         })
         .collect();
-    let r = correlation(&xy);
+    let r = pearson_r(&xy);
     let evidence = format!(
         "the relative residual follows the rate of change of the measured illuminance          (r = {r:.2} over {} readings): the readings are matched at the wrong time;          re-matched {:+.0} s later on the logger's clock",
         xy.len(),
@@ -588,7 +518,7 @@ pub fn fit_effect(
                 return None;
             }
             parameters.insert("lux_per_outdoor_lux".into(), k);
-            let r = correlation(
+            let r = pearson_r(
                 &rows
                     .iter()
                     .map(|(eh, p, m)| (*eh, m - p - state.light_leak * eh))
@@ -619,7 +549,7 @@ pub fn fit_effect(
             next = joint()?;
             let rho = next.ground_reflectance;
             parameters.insert("reflectance".into(), rho);
-            let r = correlation(
+            let r = pearson_r(
                 &rows
                     .iter()
                     .map(|(g, p, m)| (g / m, m / (p + state.ground_reflectance * g) - 1.0))

@@ -21,7 +21,7 @@ use super::effects::{
     Sample, CLOCK_SCAN_S,
 };
 use super::glazing::Glazing;
-use super::report::{correlation_and_slope, EffectReport, ErrorSummary, Report, ResidualRow};
+use super::report::{EffectReport, ErrorSummary, Report, ResidualRow};
 use super::split::{compare, split, Figure, FitSet, HoldoutSet, Score, SplitPlan};
 use crate::camera::{DeviceConfig, ImagePoint};
 use crate::campaign::Campaign;
@@ -196,7 +196,7 @@ pub fn residual_rows(diagnostics: &[Diagnostic]) -> Vec<ResidualRow> {
                 if xy.windows(2).all(|w| w[0].0 == w[1].0) {
                     (f64::NAN, f64::NAN)
                 } else {
-                    correlation_and_slope(xy)
+                    crate::numerics::pearson(xy).map_or((f64::NAN, f64::NAN), |p| (p.r, p.slope))
                 }
             };
             let (before_r, before_slope) = fit(&before);

@@ -3,7 +3,7 @@
 //! that revealed it, before and after.
 
 use super::illuminance_loop::{Diagnostic, LoopOutcome};
-use super::plot::{grouped_bars_png, scatter_png, BarGroup, Frame, PlotError, Series};
+use crate::output::plot::{grouped_bars_png, scatter_png, BarGroup, Frame, PlotError, Series};
 use std::path::Path;
 
 /// How a plotted variable is read from a diagnostic.

@@ -46,39 +46,6 @@ pub struct ResidualRow {
     pub after_slope: f64,
 }
 
-/// Pearson correlation and least-squares slope of y on x (NaN for fewer than 3 points or no
-/// spread).
-pub fn correlation_and_slope(xy: &[(f64, f64)]) -> (f64, f64) {
-    let xy: Vec<(f64, f64)> = xy
-        .iter()
-        .copied()
-        .filter(|(x, y)| x.is_finite() && y.is_finite())
-        .collect();
-    if xy.len() < 3 {
-        return (f64::NAN, f64::NAN);
-    }
-    let n = xy.len() as f64;
-    let (mx, my) = (
-        xy.iter().map(|p| p.0).sum::<f64>() / n,
-        xy.iter().map(|p| p.1).sum::<f64>() / n,
-    );
-    let (mut sxy, mut sxx, mut syy) = (0.0, 0.0, 0.0);
-    for &(x, y) in &xy {
-        sxy += (x - mx) * (y - my);
-        sxx += (x - mx).powi(2);
-        syy += (y - my).powi(2);
-    }
-    if sxx <= 0.0 {
-        return (f64::NAN, f64::NAN);
-    }
-    let r = if syy > 0.0 {
-        sxy / (sxx * syy).sqrt()
-    } else {
-        0.0
-    };
-    (r, sxy / sxx)
-}
-
 /// `report.json`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Report {
@@ -108,6 +75,15 @@ pub struct Report {
     /// Skylux addition: plots written beside the report, relative to its folder.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub figures: Vec<String>,
+}
+
+impl From<crate::output::WriteError> for ReportError {
+    fn from(e: crate::output::WriteError) -> Self {
+        ReportError::Io {
+            path: e.path,
+            source: e.source,
+        }
+    }
 }
 
 impl Report {
@@ -319,7 +295,8 @@ impl Report {
             path: path.into(),
             message: e.to_string(),
         })?;
-        write_atomic(path, text.as_bytes())
+        crate::output::write_atomic(path, text.as_bytes())?;
+        Ok(())
     }
 
     pub fn read_json(path: &Path) -> Result<Self, ReportError> {
@@ -332,20 +309,6 @@ impl Report {
             message: e.to_string(),
         })
     }
-}
-
-/// Writes `bytes` to `path` through a temporary file in the same folder and a rename.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), ReportError> {
-    let io = |source| ReportError::Io {
-        path: path.into(),
-        source,
-    };
-    let tmp = path.with_extension(format!(
-        "{}.tmp",
-        path.extension().and_then(|e| e.to_str()).unwrap_or("")
-    ));
-    std::fs::write(&tmp, bytes).map_err(io)?;
-    std::fs::rename(&tmp, path).map_err(io)
 }
 
 #[cfg(test)]
@@ -373,6 +336,6 @@ mod tests {
         let p = dir.path().join("report.json");
         r.write_json(&p).unwrap();
         assert_eq!(Report::read_json(&p).unwrap(), r);
-        assert!(!dir.path().join("report.json.tmp").exists());
+        assert!(!crate::output::tmp_name(&p).exists());
     }
 }

@@ -1,6 +1,7 @@
-//! Small dense linear algebra for the calibration fits (a handful of unknowns): linear least
-//! squares through column-scaled normal equations, non-negative least squares by enumerating
-//! active sets, and a symmetric solve for Levenberg-Marquardt steps.
+//! Small dense linear algebra for fits with a handful of unknowns (calibration, the loop's
+//! linear effects, the pyranometer closure): Gaussian elimination, linear least squares through
+//! column-scaled normal equations (with or without dropping collinear columns), non-negative
+//! least squares by enumerating active sets, and a symmetric solve for Levenberg-Marquardt steps.
 
 /// Solves `a x = b` for a square `a` (row-major, n x n) by Gaussian elimination with partial
 /// pivoting. `None` when `a` is singular to working precision.
@@ -147,6 +148,78 @@ pub fn nnls(rows: &[Vec<f64>], y: &[f64]) -> Option<Vec<f64>> {
         }
     }
     Some(best.1)
+}
+
+/// A column whose part outside the span of the columns before it has less than this share of
+/// its squared norm (1 %² of its norm) cannot be told apart from them on these samples.
+const COLLINEAR_SHARE: f64 = 1e-4;
+
+/// Least squares through the normal equations, columns scaled to unit norm, eliminated in
+/// order without pivoting (the matrix is positive semi-definite). A column (nearly) in the span
+/// of the columns before it is dropped: its coefficient is 0 and its flag is set. `None` only
+/// for non-finite input.
+pub fn least_squares_dropping_collinear(
+    rows: &[Vec<f64>],
+    y: &[f64],
+) -> Option<(Vec<f64>, Vec<bool>)> {
+    let k = rows.first().map_or(0, Vec::len);
+    let mut a = vec![vec![0.0; k + 1]; k];
+    for (row, &yi) in rows.iter().zip(y) {
+        for i in 0..k {
+            for j in 0..k {
+                a[i][j] += row[i] * row[j];
+            }
+            a[i][k] += row[i] * yi;
+        }
+    }
+    if a.iter().flatten().any(|v| !v.is_finite()) {
+        return None;
+    }
+    let scale: Vec<f64> = (0..k).map(|i| a[i][i].sqrt()).collect();
+    let mut dropped: Vec<bool> = scale.iter().map(|s| s.is_nan() || *s <= 0.0).collect();
+    for i in 0..k {
+        for j in 0..k {
+            if !(dropped[i] || dropped[j]) {
+                a[i][j] /= scale[i] * scale[j];
+            }
+        }
+        if !dropped[i] {
+            a[i][k] /= scale[i];
+        }
+    }
+    // Gauss-Jordan in column order: the pivot a[c][c] is then the squared norm share of
+    // column c outside the span of the kept columns before it.
+    for c in 0..k {
+        if dropped[c] || a[c][c] < COLLINEAR_SHARE {
+            dropped[c] = true;
+            for row in a.iter_mut() {
+                row[c] = 0.0;
+            }
+            a[c].iter_mut().for_each(|v| *v = 0.0);
+            a[c][c] = 1.0;
+            a[c][k] = 0.0;
+            continue;
+        }
+        let pivot_row = a[c].clone();
+        for (i, row) in a.iter_mut().enumerate() {
+            if i != c {
+                let f = row[c] / pivot_row[c];
+                for (v, p) in row.iter_mut().zip(&pivot_row).skip(c) {
+                    *v -= f * p;
+                }
+            }
+        }
+    }
+    let x: Vec<f64> = (0..k)
+        .map(|i| {
+            if dropped[i] {
+                0.0
+            } else {
+                a[i][k] / a[i][i] / scale[i]
+            }
+        })
+        .collect();
+    x.iter().all(|v| v.is_finite()).then_some((x, dropped))
 }
 
 #[cfg(test)]
