@@ -24,6 +24,7 @@ use skylux_hps::engine::{self, Settings, World};
 use skylux_hps::io::irradiance::{write_pyranometer_csv, PyranometerRow};
 use skylux_hps::sky::perez::{PerezConditions, PerezInput, PerezSky};
 use skylux_hps::sun::position::{solar_position, Site as SunSite};
+use skylux_hps::validation::effects::{self, registry, LoopEffect};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -115,7 +116,8 @@ impl Default for WorldEffects {
 }
 
 impl WorldEffects {
-    /// Sets one effect from `NAME=VALUE` (the names of the loop's effect library).
+    /// Sets one effect from `NAME=VALUE`: the names of the loop's effect library
+    /// (`skylux_hps::validation::effects::registry`), or their aliases.
     pub fn set(&mut self, assignment: &str) -> Result<(), String> {
         let (name, value) = assignment
             .split_once('=')
@@ -127,81 +129,115 @@ impl WorldEffects {
         if !v.is_finite() {
             return Err(format!("`{assignment}`: the value must be finite"));
         }
-        let check = |ok: bool, range: &str| {
-            if ok {
-                Ok(())
-            } else {
-                Err(format!("`{assignment}`: {name} must be {range}"))
-            }
-        };
-        match name.trim() {
-            "glazing_transmittance" => {
-                check((0.1..=1.5).contains(&v), "in [0.1, 1.5]")?;
-                self.glazing_transmittance = v;
-            }
-            "light_leak" => {
-                check((0.0..=0.2).contains(&v), "in [0, 0.2]")?;
-                self.light_leak = v;
-            }
-            "ground_reflectance" => {
-                check((0.0..=1.0).contains(&v), "in [0, 1]")?;
-                self.ground_reflectance = v;
-            }
-            "orientation_error" | "orientation_azimuth_deg" => {
-                check(v.abs() <= 10.0, "within ±10 degrees")?;
-                self.orientation_azimuth_deg = v;
-            }
-            "clock_offset" | "clock_offset_s" => {
-                check(v.abs() <= 300.0, "within ±300 seconds")?;
-                self.clock_offset_s = v;
-            }
-            "shutter_overhead" | "shutter_overhead_us" => {
-                check((0.0..=100.0).contains(&v), "in [0, 100] µs")?;
-                self.shutter_overhead_us = v;
-            }
-            "spectral_mismatch" | "spectral_clear_sky_cct_k" => {
-                check(
-                    v == 0.0 || (4000.0..=25_000.0).contains(&v),
-                    "0 (off) or a clear-sky colour temperature in [4000, 25000] K",
-                )?;
-                self.spectral_clear_sky_cct_k = v;
-            }
-            "glazing_angular" | "glazing_angular_b0" => {
-                check((0.0..=1.0).contains(&v), "in [0, 1] (ASHRAE b0)")?;
-                self.glazing_angular_b0 = v;
-            }
-            "vignetting" | "extra_vignetting" => {
-                check((0.0..=0.9).contains(&v), "in [0, 0.9]")?;
-                self.extra_vignetting = v;
-            }
-            "fov_limit_deg" | "sky_outside_fov" => {
-                check((20.0..=180.0).contains(&v), "in [20, 180] degrees")?;
-                self.fov_limit_deg = v;
-            }
-            other => {
-                return Err(format!(
-                    "unknown effect `{other}`: expected {}",
-                    EFFECT_NAMES.join(", ")
-                ))
-            }
+        let name = name.trim();
+        let effect = registry::find(name).ok_or_else(|| {
+            format!(
+                "unknown effect `{name}`: expected {}",
+                effect_names().join(", ")
+            )
+        })?;
+        let world = WORLD_PARAMETERS
+            .iter()
+            .find(|w| w.effect.name() == effect.name())
+            .ok_or_else(|| {
+                format!(
+                    "`{assignment}`: {} is not simulated in the world (expected {})",
+                    effect.name(),
+                    effect_names().join(", ")
+                )
+            })?;
+        if !(world.valid)(v) {
+            return Err(format!("`{assignment}`: {name} must be {}", world.range));
         }
+        (world.set)(self, v);
         Ok(())
     }
 }
 
-/// The names `--effect NAME=VALUE` accepts.
-pub const EFFECT_NAMES: [&str; 10] = [
-    "glazing_transmittance",
-    "light_leak",
-    "ground_reflectance",
-    "orientation_error",
-    "clock_offset",
-    "shutter_overhead",
-    "spectral_mismatch",
-    "glazing_angular",
-    "vignetting",
-    "fov_limit_deg",
+/// How an effect of the loop's library is present in the world: the parameter
+/// `--effect NAME=VALUE` sets (named by the effect, or by one of its aliases), its range, and
+/// its place in [`WorldEffects`].
+struct WorldParameter {
+    effect: &'static dyn LoopEffect,
+    valid: fn(f64) -> bool,
+    range: &'static str,
+    set: fn(&mut WorldEffects, f64),
+}
+
+/// The effects the simulator can put in the world.
+const WORLD_PARAMETERS: &[WorldParameter] = &[
+    WorldParameter {
+        effect: &effects::glazing_transmittance::GlazingTransmittance,
+        valid: |v| (0.1..=1.5).contains(&v),
+        range: "in [0.1, 1.5]",
+        set: |w, v| w.glazing_transmittance = v,
+    },
+    WorldParameter {
+        effect: &effects::light_leak::LightLeak,
+        valid: |v| (0.0..=0.2).contains(&v),
+        range: "in [0, 0.2]",
+        set: |w, v| w.light_leak = v,
+    },
+    WorldParameter {
+        effect: &effects::ground_reflectance::GroundReflectance,
+        valid: |v| (0.0..=1.0).contains(&v),
+        range: "in [0, 1]",
+        set: |w, v| w.ground_reflectance = v,
+    },
+    WorldParameter {
+        effect: &effects::orientation_error::OrientationError,
+        valid: |v| v.abs() <= 10.0,
+        range: "within ±10 degrees",
+        set: |w, v| w.orientation_azimuth_deg = v,
+    },
+    WorldParameter {
+        effect: &effects::clock_offset::ClockOffset,
+        valid: |v| v.abs() <= 300.0,
+        range: "within ±300 seconds",
+        set: |w, v| w.clock_offset_s = v,
+    },
+    WorldParameter {
+        effect: &effects::shutter_overhead::ShutterOverhead,
+        valid: |v| (0.0..=100.0).contains(&v),
+        range: "in [0, 100] µs",
+        set: |w, v| w.shutter_overhead_us = v,
+    },
+    WorldParameter {
+        effect: &effects::spectral_mismatch::SpectralMismatch,
+        valid: |v| v == 0.0 || (4000.0..=25_000.0).contains(&v),
+        range: "0 (off) or a clear-sky colour temperature in [4000, 25000] K",
+        set: |w, v| w.spectral_clear_sky_cct_k = v,
+    },
+    WorldParameter {
+        effect: &effects::glazing_angular::GlazingAngular,
+        valid: |v| (0.0..=1.0).contains(&v),
+        range: "in [0, 1] (ASHRAE b0)",
+        set: |w, v| w.glazing_angular_b0 = v,
+    },
+    WorldParameter {
+        effect: &effects::vignetting::Vignetting,
+        valid: |v| (0.0..=0.9).contains(&v),
+        range: "in [0, 0.9]",
+        set: |w, v| w.extra_vignetting = v,
+    },
+    // The world parameter is the baffle's field of view, degrees (also spelt
+    // `fov_limit_deg`, the effect's alias).
+    WorldParameter {
+        effect: &effects::sky_outside_fov::SkyOutsideFov,
+        valid: |v| (20.0..=180.0).contains(&v),
+        range: "in [20, 180] degrees",
+        set: |w, v| w.fov_limit_deg = v,
+    },
 ];
+
+/// The names `--effect NAME=VALUE` accepts (aliases aside), in the library's order.
+pub fn effect_names() -> Vec<&'static str> {
+    registry::EFFECTS
+        .iter()
+        .filter(|e| WORLD_PARAMETERS.iter().any(|w| w.effect.name() == e.name()))
+        .map(|e| e.name())
+        .collect()
+}
 
 /// When the lux-meter logger records: every `cadence_s` seconds within `half_window_s` of
 /// each capture (a logger runs continuously; only the readings near captures matter to the
@@ -476,7 +512,7 @@ pub fn simulate_campaign(
     // IAM of light arriving from unit direction `d` through the glazing (1 without the effect).
     let iam = move |d: DVec3| {
         glazing_normal.map_or(1.0, |n| {
-            skylux_hps::validation::effect_glazing_angular::iam_ashrae(d.dot(n), b0)
+            skylux_hps::validation::glazing::iam_ashrae(d.dot(n), b0)
         })
     };
     let mut true_device = spec.device.clone();

@@ -23,7 +23,7 @@ use skylux_hps::engine::{self, DaylightCoefficients, Settings, World};
 use skylux_hps::hdr::{merge, GroupGeometry, LuminanceMap};
 use skylux_hps::sky::SkyPatches;
 use skylux_hps::sun::{remove_sun, solar_position, Site, SunFlag, SOLAR_DISK_SR};
-use skylux_hps::validation::device_model::{
+use skylux_hps::model::{
     capture_terms, predict, CaptureData, CaptureTerms, ModelState, Room,
 };
 use std::path::{Path, PathBuf};

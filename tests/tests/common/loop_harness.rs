@@ -53,7 +53,7 @@ pub fn simulate(dir: &Path, effects: &[&str], seed: u64) -> Campaign {
 
 pub fn run(campaign: &Campaign, sun_in_map: bool) -> LoopOutcome {
     let mut options = LoopOptions::default();
-    options.base.concentrated_sun = !sun_in_map;
+    options.base.model.concentrated_sun = !sun_in_map;
     options.settings.samples_per_sensor = 30_000;
     run_loop(campaign, &options, &|_, _, _| {}).expect("loop")
 }

@@ -2,7 +2,8 @@
 //! the published figures) and, for each effect added, the residual against the variable
 //! that revealed it, before and after.
 
-use super::illuminance_loop::{Diagnostic, LoopOutcome};
+use super::diagnostics::Diagnostic;
+use super::illuminance_loop::LoopOutcome;
 use crate::output::plot::{grouped_bars_png, scatter_png, BarGroup, Frame, PlotError, Series};
 use std::path::Path;
 
