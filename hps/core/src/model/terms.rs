@@ -118,98 +118,122 @@ pub fn capture_terms(
 ) -> Result<Vec<CaptureTerms>, ModelError> {
     let camera = CameraModel::new(device.clone());
     let patches = room.dc.patches();
-    let n = patches.len();
-    let sensors = room.sensors.len();
     let mut out = Vec::with_capacity(captures.len());
     // Captures of one campaign share a readout: compute the geometry once per readout.
     let mut geometries = GeometryCache::default();
     for (k, c) in captures.iter().enumerate() {
         progress(k, captures.len());
         let geometry = geometries.get(&camera, &c.readout, c.raw_width, c.raw_height);
-        let search = SunSearch {
-            predicted_direction: Some(c.spa_sun),
-            max_offset_deg: 12.0,
-            ..Default::default()
-        };
-        let sun = if c.spa_sun.z > 0.0 {
-            extract_sun(&c.map, geometry, &search)
-                .ok()
-                .filter(|s| s.direct_normal_illuminance_lux.is_finite())
-        } else {
-            None
-        };
-        let (with_sun, seen, horizontal_map) = bins(&patches, &c.map, geometry);
-        // With a sun extracted, the outdoor horizontal illuminance is the sky without the
-        // disk plus the disk's direct beam (the disk itself may be over-range in the map).
-        let (without_sun, horizontal) = match &sun {
-            Some(s) => {
-                let (b, _, h) = bins(&patches, &remove_sun(&c.map, s), geometry);
-                (
-                    b,
-                    h + s.direct_normal_illuminance_lux * s.direction.z.max(0.0),
-                )
-            }
-            None => (with_sun.clone(), horizontal_map),
-        };
-        let unseen_ground: Vec<f64> = (0..sensors)
-            .map(|s| {
-                (0..n)
-                    .filter(|&p| !seen[n + p])
-                    .map(|p| room.dc.row(s)[n + p])
-                    .sum()
-            })
-            .collect();
-        let (sky_weight, unseen_weight) = (0..sensors).fold((0.0, 0.0), |(a, b), s| {
-            let row = room.dc.row(s);
-            (
-                a + row[..n].iter().sum::<f64>(),
-                b + (0..n).filter(|&p| !seen[p]).map(|p| row[p]).sum::<f64>(),
-            )
-        });
-        let (sun_lux_per_dn_lux, sun_dn_lux) = match &sun {
-            Some(s) => {
-                let k = room.sun_coefficients(s.direction)?;
-                (
-                    k.into_iter().map(|(c, _)| c).collect(),
-                    s.direct_normal_illuminance_lux,
-                )
-            }
-            None => (vec![0.0; sensors], 0.0),
-        };
-        let valid = c
-            .map
-            .flags
-            .iter()
-            .filter(|f| **f != MapFlag::UnderRange)
-            .count();
-        let over = c
-            .map
-            .flags
-            .iter()
-            .filter(|f| **f == MapFlag::OverRange)
-            .count();
-        out.push(CaptureTerms {
-            sky_with_sun_lux: room.dc.apply_seen(&with_sun),
-            sky_without_sun_lux: room.dc.apply_seen(&without_sun),
-            sun_lux_per_dn_lux,
-            sun_dn_lux,
-            unseen_ground_lux_per_cd_m2: unseen_ground,
-            outdoor_horizontal_lux: horizontal,
-            unseen_sky_fraction: if sky_weight > 0.0 {
-                unseen_weight / sky_weight
-            } else {
-                0.0
-            },
-            saturated_fraction: if valid > 0 {
-                over as f64 / valid as f64
-            } else {
-                0.0
-            },
-            sun,
-            bins_with_sun_cd_m2: with_sun,
-            bins_without_sun_cd_m2: without_sun,
-            bin_seen: seen,
-        });
+        out.push(terms_of(room, &patches, c, geometry)?);
     }
     Ok(out)
+}
+
+/// One capture's terms: the sun extracted from the map, the bins with and without it, and
+/// the daylight and sun coefficients applied.
+fn terms_of(
+    room: &mut Room,
+    patches: &SkyPatches,
+    c: &CaptureData,
+    geometry: &GroupGeometry,
+) -> Result<CaptureTerms, ModelError> {
+    let sensors = room.sensors.len();
+    let search = SunSearch {
+        predicted_direction: Some(c.spa_sun),
+        max_offset_deg: 12.0,
+        ..Default::default()
+    };
+    let sun = if c.spa_sun.z > 0.0 {
+        extract_sun(&c.map, geometry, &search)
+            .ok()
+            .filter(|s| s.direct_normal_illuminance_lux.is_finite())
+    } else {
+        None
+    };
+    let (with_sun, seen, horizontal_map) = bins(patches, &c.map, geometry);
+    // With a sun extracted, the outdoor horizontal illuminance is the sky without the
+    // disk plus the disk's direct beam (the disk itself may be over-range in the map).
+    let (without_sun, horizontal) = match &sun {
+        Some(s) => {
+            let (b, _, h) = bins(patches, &remove_sun(&c.map, s), geometry);
+            (
+                b,
+                h + s.direct_normal_illuminance_lux * s.direction.z.max(0.0),
+            )
+        }
+        None => (with_sun.clone(), horizontal_map),
+    };
+    let (unseen_ground, unseen_sky_fraction) = unseen_weights(room, &seen);
+    let (sun_lux_per_dn_lux, sun_dn_lux) = match &sun {
+        Some(s) => {
+            let k = room.sun_coefficients(s.direction)?;
+            (
+                k.into_iter().map(|(c, _)| c).collect(),
+                s.direct_normal_illuminance_lux,
+            )
+        }
+        None => (vec![0.0; sensors], 0.0),
+    };
+    Ok(CaptureTerms {
+        sky_with_sun_lux: room.dc.apply_seen(&with_sun),
+        sky_without_sun_lux: room.dc.apply_seen(&without_sun),
+        sun_lux_per_dn_lux,
+        sun_dn_lux,
+        unseen_ground_lux_per_cd_m2: unseen_ground,
+        outdoor_horizontal_lux: horizontal,
+        unseen_sky_fraction,
+        saturated_fraction: saturated_fraction(&c.map),
+        sun,
+        bins_with_sun_cd_m2: with_sun,
+        bins_without_sun_cd_m2: without_sun,
+        bin_seen: seen,
+    })
+}
+
+/// Per sensor, the daylight coefficients of the ground bins the lens did not see (lux per
+/// cd/m²), and the fraction of the sky's coefficient weight (summed over sensors) on sky
+/// patches it did not see.
+fn unseen_weights(room: &Room, seen: &[bool]) -> (Vec<f64>, f64) {
+    let n = seen.len() / 2;
+    let sensors = room.sensors.len();
+    let unseen_ground: Vec<f64> = (0..sensors)
+        .map(|s| {
+            (0..n)
+                .filter(|&p| !seen[n + p])
+                .map(|p| room.dc.row(s)[n + p])
+                .sum()
+        })
+        .collect();
+    let (sky_weight, unseen_weight) = (0..sensors).fold((0.0, 0.0), |(a, b), s| {
+        let row = room.dc.row(s);
+        (
+            a + row[..n].iter().sum::<f64>(),
+            b + (0..n).filter(|&p| !seen[p]).map(|p| row[p]).sum::<f64>(),
+        )
+    });
+    let fraction = if sky_weight > 0.0 {
+        unseen_weight / sky_weight
+    } else {
+        0.0
+    };
+    (unseen_ground, fraction)
+}
+
+/// Fraction of the map's valid (not under-range) groups that are over-range.
+fn saturated_fraction(map: &LuminanceMap) -> f64 {
+    let valid = map
+        .flags
+        .iter()
+        .filter(|f| **f != MapFlag::UnderRange)
+        .count();
+    let over = map
+        .flags
+        .iter()
+        .filter(|f| **f == MapFlag::OverRange)
+        .count();
+    if valid > 0 {
+        over as f64 / valid as f64
+    } else {
+        0.0
+    }
 }

@@ -242,7 +242,12 @@ impl DiagnosticInputs<'_> {
             ),
             sun_visible: if t.sun.is_some() { 1.0 } else { 0.0 },
             sun_altitude_deg: c.spa_sun.z.clamp(-1.0, 1.0).asin().to_degrees(),
-            sun_azimuth_deg: c.spa_sun.x.atan2(c.spa_sun.y).to_degrees().rem_euclid(360.0),
+            sun_azimuth_deg: c
+                .spa_sun
+                .x
+                .atan2(c.spa_sun.y)
+                .to_degrees()
+                .rem_euclid(360.0),
             unseen_sky_fraction: t.unseen_sky_fraction,
             saturated_fraction: t.saturated_fraction,
             local_hour: f64::from(c.time.hour())

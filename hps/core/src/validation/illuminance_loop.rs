@@ -102,8 +102,17 @@ pub fn run_loop(
     let mut model = Model::new(&mut prepared, options.base.clone());
     try_geometry_effects(&mut prepared, &sets, &mut model, &mut selection)?;
     model.prepare_sky(&mut prepared)?;
-    select_effects(options, &mut prepared, &sets, &mut model, &mut selection, progress)?;
-    Ok(output(campaign, options, &prepared, &sets, model, selection))
+    select_effects(
+        options,
+        &mut prepared,
+        &sets,
+        &mut model,
+        &mut selection,
+        progress,
+    )?;
+    Ok(output(
+        campaign, options, &prepared, &sets, model, selection,
+    ))
 }
 
 /// What the loop computes once: the captures, the room, the terms under the declared camera,
@@ -173,17 +182,18 @@ fn prepare<'a>(
 }
 
 /// The glazing's angular model where the glazing faces one way.
-fn angular_glazing(
-    glazing: &Result<Glazing, GlazingError>,
-    room: &Room,
-) -> Option<AngularGlazing> {
+fn angular_glazing(glazing: &Result<Glazing, GlazingError>, room: &Room) -> Option<AngularGlazing> {
     let g = glazing.as_ref().ok().filter(|g| g.single_orientation())?;
     let depths: Vec<f64> = room
         .sensors
         .iter()
         .map(|s| g.facade_distance_m(s.position_m))
         .collect();
-    Some(AngularGlazing::new(&room.dc, g.primary().normal_out, depths))
+    Some(AngularGlazing::new(
+        &room.dc,
+        g.primary().normal_out,
+        depths,
+    ))
 }
 
 /// The fit and hold-out sets, and the logger's series around each capture.
@@ -230,11 +240,10 @@ fn samples(
             });
         }
     }
-    let origin = samples
-        .iter()
-        .map(|s| s.time_utc)
-        .min()
-        .ok_or_else(|| LoopError::Data("no lux-meter reading matches any capture time".into()))?;
+    let origin =
+        samples.iter().map(|s| s.time_utc).min().ok_or_else(|| {
+            LoopError::Data("no lux-meter reading matches any capture time".into())
+        })?;
     let plan = SplitPlan {
         origin,
         block: options.block,
@@ -642,8 +651,12 @@ fn report(
 ) -> Report {
     let names = &prepared.sensor_names;
     let offset = model.state.get(CLOCK_OFFSET_S);
-    let (after_all, after_per) =
-        score(&sets.holdout, &|c| final_predictions[c].clone(), names, offset);
+    let (after_all, after_per) = score(
+        &sets.holdout,
+        &|c| final_predictions[c].clone(),
+        names,
+        offset,
+    );
     let baseline = prepared.perez.iter().any(Option::is_some).then(|| {
         let perez = |c: usize| {
             prepared.perez[c]

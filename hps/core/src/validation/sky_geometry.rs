@@ -371,9 +371,7 @@ pub fn hidden_suns(
 /// through the Perez 1990 model as gendaylit converts (the loop's Perez baseline).
 fn reference_direct_normal_lux(campaign: &Campaign, c: &CaptureData) -> Option<f64> {
     let table = campaign.pyranometer.as_ref()?;
-    let row = nearest_in_time(&table.rows, TimeDelta::minutes(5), |r| {
-        r.time - c.time
-    })?;
+    let row = nearest_in_time(&table.rows, TimeDelta::minutes(5), |r| r.time - c.time)?;
     let input = row.perez_input()?;
     let conditions = PerezConditions {
         day_of_year: c.time.ordinal() as u16,

@@ -25,9 +25,7 @@ impl LoopEffect for GlazingTransmittance {
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {
         let state = ctx.state;
         let leak = state.get(LIGHT_LEAK);
-        let room_only = state
-            .with(LIGHT_LEAK, 0.0)
-            .with(GLAZING_TRANSMITTANCE, 1.0);
+        let room_only = state.with(LIGHT_LEAK, 0.0).with(GLAZING_TRANSMITTANCE, 1.0);
         let rows: Vec<(f64, f64, f64)> = readings(state, ctx.terms, ctx.fit)
             .map(|(t, k, m)| {
                 (

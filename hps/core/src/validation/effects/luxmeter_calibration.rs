@@ -59,6 +59,12 @@ impl LoopEffect for LuxmeterCalibration {
             "sensor {sensor} alone reads {:.3} times the model: a lux-meter's calibration",
             1.0 / c
         );
-        Ok(Some(scored(ctx, ctx.state.clone(), parameters, evidence, Some(terms))))
+        Ok(Some(scored(
+            ctx,
+            ctx.state.clone(),
+            parameters,
+            evidence,
+            Some(terms),
+        )))
     }
 }

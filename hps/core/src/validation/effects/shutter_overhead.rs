@@ -49,8 +49,7 @@ impl LoopEffect for ShutterOverhead {
             0.0
         };
         let excess = bias.lit_mean - shade_bias;
-        if bias.lit_n < 2 || !excess.is_finite() || excess < 0.03 || excess < bias.shade_mean_abs
-        {
+        if bias.lit_n < 2 || !excess.is_finite() || excess < 0.03 || excess < bias.shade_mean_abs {
             return Ok(None);
         }
         let Some(best) = search_overhead(ctx)? else {

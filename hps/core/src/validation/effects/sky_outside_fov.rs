@@ -18,18 +18,11 @@
 //! outdoor illuminance do), as a concentrated source.
 
 use super::fit::{
-    finite_or_worst, fit_error, minimise_1d, pearson_r, residual_points, residuals_where,
+    finite_or_worst, fit_error, minimise_1d, pearson_r, residual_points, residuals_where, scored,
 };
 use super::{FitContext, Fitted, LoopEffect};
-use crate::engine::DaylightCoefficients;
 use crate::model::ModelError;
-use crate::validation::prediction::LoopState;
-use crate::validation::sample::Sample;
-use crate::validation::sky_geometry::{
-    correct_terms, SkyGeometry, MIN_CLIPPED_DEG, UNSEEN_SKY_FACTOR,
-};
-use crate::validation::split::FitSet;
-use crate::validation::terms::Terms;
+use crate::validation::sky_geometry::{correct_terms, MIN_CLIPPED_DEG, UNSEEN_SKY_FACTOR};
 use std::collections::BTreeMap;
 
 pub struct SkyOutsideFov;
@@ -45,16 +38,7 @@ impl LoopEffect for SkyOutsideFov {
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {
-        let fitted = fit_unseen_sky(
-            ctx.state,
-            ctx.sky_raw,
-            &ctx.room.dc,
-            ctx.sky_geometry,
-            ctx.fit,
-        );
-        Ok(fitted.map(|(state, parameters, evidence, terms)| {
-            super::fit::scored(ctx, state, parameters, evidence, Some(terms))
-        }))
+        Ok(fit_unseen_sky(ctx))
     }
 }
 
@@ -64,13 +48,14 @@ pub const UNSEEN_SKY_FACTOR_RANGE: (f64, f64) = (0.2, 4.0);
 /// Fits the unseen-sky factor k on the fit set when the maps show a clipped field of view.
 /// Returns the candidate (parameters: the field of view the maps show, degrees, and k) and
 /// its corrected terms.
-fn fit_unseen_sky(
-    state: &LoopState,
-    raw: &[Terms],
-    dc: &DaylightCoefficients,
-    geometry: &SkyGeometry,
-    fit: &FitSet<Sample>,
-) -> Option<(LoopState, BTreeMap<String, f64>, String, Vec<Terms>)> {
+fn fit_unseen_sky(ctx: &FitContext<'_>) -> Option<Fitted> {
+    let (state, raw, dc, geometry, fit) = (
+        ctx.state,
+        ctx.sky_raw,
+        &ctx.room.dc,
+        ctx.sky_geometry,
+        ctx.fit,
+    );
     let shown = geometry.median_shown_fov_deg();
     if !shown.is_finite() || geometry.lens_fov_deg - shown < MIN_CLIPPED_DEG {
         return None;
@@ -121,5 +106,5 @@ fn fit_unseen_sky(
         xy.len()
     );
     let terms = correct_terms(raw, dc, geometry, &next);
-    Some((next, parameters, evidence, terms))
+    Some(scored(ctx, next, parameters, evidence, Some(terms)))
 }

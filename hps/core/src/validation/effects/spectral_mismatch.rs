@@ -21,9 +21,7 @@
 //! The correction itself is part of the loop's prediction
 //! ([`crate::validation::prediction::corrected_room`]).
 
-use super::fit::{
-    finite_or_worst, fit_error, fit_linear, pearson_r, residual_points, FreeLinear,
-};
+use super::fit::{finite_or_worst, fit_error, fit_linear, pearson_r, residual_points, FreeLinear};
 use super::{FitContext, Fitted, LoopEffect};
 use crate::model::ModelError;
 use crate::validation::prediction::{LoopState, REFERENCE_INDEX, SPECTRAL_SLOPE};
@@ -57,7 +55,9 @@ impl LoopEffect for SpectralMismatch {
         else {
             return Ok(None);
         };
-        Ok(Some(super::fit::scored(ctx, next, parameters, evidence, None)))
+        Ok(Some(super::fit::scored(
+            ctx, next, parameters, evidence, None,
+        )))
     }
 
     fn refresh(&self, state: &LoopState, parameters: &mut BTreeMap<String, f64>) {

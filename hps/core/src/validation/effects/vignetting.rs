@@ -7,17 +7,10 @@
 //! Signature: the relative residual falls with the mean off-axis angle of the light reaching
 //! the sensor. v is fitted by a scan of [0, 0.9] then a golden-section search.
 
-use super::fit::{finite_or_worst, fit_error, minimise_1d, pearson_r, residual_points};
+use super::fit::{finite_or_worst, fit_error, minimise_1d, pearson_r, residual_points, scored};
 use super::{FitContext, Fitted, LoopEffect};
-use crate::engine::DaylightCoefficients;
 use crate::model::ModelError;
-use crate::validation::prediction::LoopState;
-use crate::validation::sample::Sample;
-use crate::validation::sky_geometry::{
-    correct_terms, light_off_axis_deg, SkyGeometry, EXTRA_VIGNETTING,
-};
-use crate::validation::split::FitSet;
-use crate::validation::terms::Terms;
+use crate::validation::sky_geometry::{correct_terms, light_off_axis_deg, EXTRA_VIGNETTING};
 use std::collections::BTreeMap;
 
 pub struct Vignetting;
@@ -32,16 +25,7 @@ impl LoopEffect for Vignetting {
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {
-        let fitted = fit_vignetting(
-            ctx.state,
-            ctx.sky_raw,
-            &ctx.room.dc,
-            ctx.sky_geometry,
-            ctx.fit,
-        );
-        Ok(fitted.map(|(state, parameters, evidence, terms)| {
-            super::fit::scored(ctx, state, parameters, evidence, Some(terms))
-        }))
+        Ok(fit_vignetting(ctx))
     }
 }
 
@@ -51,13 +35,14 @@ pub const MAX_EXTRA_VIGNETTING: f64 = 0.9;
 /// Fits the extra vignetting v on the fit set: the fit-set error of the terms corrected for
 /// each trial v, minimised over [0, [`MAX_EXTRA_VIGNETTING`]]. `None` if the best v is under
 /// 0.01 above the current one. Returns the candidate and its corrected terms.
-fn fit_vignetting(
-    state: &LoopState,
-    raw: &[Terms],
-    dc: &DaylightCoefficients,
-    geometry: &SkyGeometry,
-    fit: &FitSet<Sample>,
-) -> Option<(LoopState, BTreeMap<String, f64>, String, Vec<Terms>)> {
+fn fit_vignetting(ctx: &FitContext<'_>) -> Option<Fitted> {
+    let (state, raw, dc, geometry, fit) = (
+        ctx.state,
+        ctx.sky_raw,
+        &ctx.room.dc,
+        ctx.sky_geometry,
+        ctx.fit,
+    );
     let error = |v: f64| {
         let st = state.with(EXTRA_VIGNETTING, v);
         finite_or_worst(fit_error(&st, &correct_terms(raw, dc, geometry, &st), fit))
@@ -83,5 +68,5 @@ fn fit_vignetting(
         xy.len()
     );
     let terms = correct_terms(raw, dc, geometry, &next);
-    Some((next, parameters, evidence, terms))
+    Some(scored(ctx, next, parameters, evidence, Some(terms)))
 }
