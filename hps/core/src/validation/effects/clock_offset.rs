@@ -7,6 +7,7 @@
 use super::fit::{finite_or_worst, fit_error, pearson_r, scored};
 use super::{FitContext, Fitted, LoopEffect};
 use crate::model::ModelError;
+use crate::validation::diagnostics::Variable;
 use crate::validation::prediction::{predict, LoopState, CLOCK_OFFSET_S};
 use crate::validation::sample::{relative_rate_per_min, Sample, MAX_CLOCK_OFFSET_S};
 use crate::validation::split::FitSet;
@@ -24,6 +25,13 @@ impl LoopEffect for ClockOffset {
 
     fn aliases(&self) -> &'static [&'static str] {
         &["clock_offset_s"]
+    }
+
+    fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
+        Some((
+            "rate of change of the logged illuminance (relative, per minute)",
+            |d| d.rate_of_change_per_min,
+        ))
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {

@@ -21,6 +21,7 @@
 use super::fit::{finite_or_worst, fit_error, fit_linear, FreeLinear};
 use super::{FitContext, Fitted, LoopEffect};
 use crate::model::ModelError;
+use crate::validation::diagnostics::Variable;
 use crate::validation::glazing::{AngularGlazing, GLAZING_ANGULAR_B0};
 use crate::validation::prediction::{predict, LoopState, CLOCK_OFFSET_S, GLAZING_TRANSMITTANCE};
 use crate::validation::sample::Sample;
@@ -41,6 +42,15 @@ impl LoopEffect for GlazingAngular {
 
     fn aliases(&self) -> &'static [&'static str] {
         &["glazing_angular_b0"]
+    }
+
+    fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
+        // Its signature on the sunlit readings is the solar incidence angle; over all
+        // readings the clearer one is the depth: near the façade the sky is seen through
+        // the glazing at wider angles.
+        Some(("sensor's distance from the façade (m)", |d| {
+            d.facade_distance_m
+        }))
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {

@@ -6,6 +6,7 @@
 use super::fit::{joint, readings, scored};
 use super::{FitContext, Fitted, Linear, LoopEffect};
 use crate::model::ModelError;
+use crate::validation::diagnostics::Variable;
 use crate::validation::prediction::{predict, LoopState, GLAZING_TRANSMITTANCE, LIGHT_LEAK};
 use std::collections::BTreeMap;
 
@@ -20,6 +21,10 @@ impl LoopEffect for GlazingTransmittance {
 
     fn linear(&self) -> Option<Linear> {
         Some(Linear::Glazing)
+    }
+
+    fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
+        Some(("measured illuminance (klx)", |d| d.measured_lux / 1000.0))
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {

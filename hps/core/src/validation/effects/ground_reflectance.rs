@@ -6,6 +6,7 @@
 use super::fit::{joint, pearson_r, readings, scored};
 use super::{FitContext, Fitted, Linear, LoopEffect};
 use crate::model::ModelError;
+use crate::validation::diagnostics::Variable;
 use crate::validation::prediction::{predict, LoopState, GLAZING_TRANSMITTANCE};
 use std::collections::BTreeMap;
 
@@ -20,6 +21,12 @@ impl LoopEffect for GroundReflectance {
 
     fn linear(&self) -> Option<Linear> {
         Some(Linear::Ground)
+    }
+
+    fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
+        Some(("share of light from the unseen ground", |d| {
+            d.unseen_ground_share
+        }))
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {

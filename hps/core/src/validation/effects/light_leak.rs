@@ -6,6 +6,7 @@
 use super::fit::{joint, pearson_r, readings, scored};
 use super::{FitContext, Fitted, Linear, LoopEffect};
 use crate::model::ModelError;
+use crate::validation::diagnostics::Variable;
 use crate::validation::prediction::{predict, LoopState, LIGHT_LEAK};
 use std::collections::BTreeMap;
 
@@ -20,6 +21,12 @@ impl LoopEffect for LightLeak {
 
     fn linear(&self) -> Option<Linear> {
         Some(Linear::Leak)
+    }
+
+    fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
+        Some(("outdoor horizontal illuminance (klx)", |d| {
+            d.outdoor_lux / 1000.0
+        }))
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {

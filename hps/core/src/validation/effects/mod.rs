@@ -23,6 +23,7 @@ pub mod spectral_mismatch;
 pub mod sun_undersampling;
 pub mod vignetting;
 
+use super::diagnostics::Variable;
 use super::glazing::AngularGlazing;
 use super::prediction::LoopState;
 use super::sample::Sample;
@@ -54,6 +55,12 @@ pub trait LoopEffect: Sync {
 
     /// The effect's part in the joint linear fit, if it is one of the linear effects.
     fn linear(&self) -> Option<Linear> {
+        None
+    }
+
+    /// The variable whose residual revealed the effect (its figure in the report: the
+    /// residual against it, before and after), and how it is read from a diagnostic.
+    fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
         None
     }
 

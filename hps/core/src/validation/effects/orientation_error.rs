@@ -7,6 +7,7 @@ use super::fit::fit_error;
 use super::{FitContext, Fitted, LoopEffect, Stage};
 use crate::camera::{CameraModel, DeviceConfig, ImagePoint};
 use crate::model::{capture_terms, CaptureData, ModelError};
+use crate::validation::diagnostics::Variable;
 use crate::validation::sample::Sample;
 use crate::validation::split::FitSet;
 use crate::validation::terms::{attach, use_reference_outdoor, Terms};
@@ -25,6 +26,14 @@ impl LoopEffect for OrientationError {
 
     fn stage(&self) -> Stage {
         Stage::Geometry
+    }
+
+    fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
+        Some(
+            ("sun sighting offset from SPA, declared camera (deg)", |d| {
+                d.sun_offset_deg
+            }),
+        )
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {

@@ -11,6 +11,7 @@ use super::{FitContext, Fitted, LoopEffect};
 use crate::camera::{CameraModel, DeviceConfig};
 use crate::hdr::{map_capture, CaptureMap, GroupGeometry};
 use crate::model::{capture_terms, load_captures_with, CaptureData, ModelError};
+use crate::validation::diagnostics::Variable;
 use crate::validation::glazing::GLAZING_ANGULAR_B0;
 use crate::validation::terms::{attach, use_reference_outdoor, Terms};
 use std::collections::BTreeMap;
@@ -30,6 +31,12 @@ impl LoopEffect for ShutterOverhead {
 
     fn aliases(&self) -> &'static [&'static str] {
         &["shutter_overhead_us"]
+    }
+
+    fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
+        Some(("share of direct sun in the model's light", |d| {
+            d.direct_sun_share
+        }))
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {

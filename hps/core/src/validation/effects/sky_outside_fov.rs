@@ -22,6 +22,7 @@ use super::fit::{
 };
 use super::{FitContext, Fitted, LoopEffect};
 use crate::model::ModelError;
+use crate::validation::diagnostics::Variable;
 use crate::validation::sky_geometry::{correct_terms, MIN_CLIPPED_DEG, UNSEEN_SKY_FACTOR};
 use std::collections::BTreeMap;
 
@@ -35,6 +36,13 @@ impl LoopEffect for SkyOutsideFov {
     /// The simulator's world parameter: the baffle's field of view, degrees.
     fn aliases(&self) -> &'static [&'static str] {
         &["fov_limit_deg"]
+    }
+
+    fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
+        Some((
+            "unseen sky fraction of the daylight-coefficient weight",
+            |d| d.unseen_sky_fraction,
+        ))
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {

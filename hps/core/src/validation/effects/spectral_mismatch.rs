@@ -24,6 +24,7 @@
 use super::fit::{finite_or_worst, fit_error, fit_linear, pearson_r, residual_points, FreeLinear};
 use super::{FitContext, Fitted, LoopEffect};
 use crate::model::ModelError;
+use crate::validation::diagnostics::Variable;
 use crate::validation::prediction::{LoopState, REFERENCE_INDEX, SPECTRAL_SLOPE};
 use crate::validation::sample::Sample;
 use crate::validation::split::FitSet;
@@ -47,6 +48,12 @@ impl LoopEffect for SpectralMismatch {
 
     fn aliases(&self) -> &'static [&'static str] {
         &["spectral_clear_sky_cct_k"]
+    }
+
+    fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
+        Some(("sky colour index (blue / red from the raw frames)", |d| {
+            d.sky_colour_index
+        }))
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {

@@ -5,6 +5,7 @@
 use super::fit::{readings, scored};
 use super::{FitContext, Fitted, LoopEffect};
 use crate::model::ModelError;
+use crate::validation::diagnostics::Variable;
 use crate::validation::prediction::predict;
 use std::collections::BTreeMap;
 
@@ -13,6 +14,12 @@ pub struct SunUndersampling;
 impl LoopEffect for SunUndersampling {
     fn name(&self) -> &'static str {
         "sun_undersampling"
+    }
+
+    fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
+        Some(("share of direct sun in the model's light", |d| {
+            d.direct_sun_share
+        }))
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {

@@ -10,6 +10,7 @@
 use super::fit::{finite_or_worst, fit_error, minimise_1d, pearson_r, residual_points, scored};
 use super::{FitContext, Fitted, LoopEffect};
 use crate::model::ModelError;
+use crate::validation::diagnostics::Variable;
 use crate::validation::sky_geometry::{correct_terms, light_off_axis_deg, EXTRA_VIGNETTING};
 use std::collections::BTreeMap;
 
@@ -22,6 +23,13 @@ impl LoopEffect for Vignetting {
 
     fn aliases(&self) -> &'static [&'static str] {
         &["extra_vignetting"]
+    }
+
+    fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
+        Some((
+            "mean off-axis angle of the light reaching the sensor (deg)",
+            |d| d.light_off_axis_deg,
+        ))
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {
