@@ -24,6 +24,7 @@ use skylux_hps::engine::{self, Settings, World};
 use skylux_hps::io::irradiance::{write_pyranometer_csv, PyranometerRow};
 use skylux_hps::sky::perez::{PerezConditions, PerezInput, PerezSky};
 use skylux_hps::sun::position::{solar_position, Site as SunSite};
+use skylux_hps::validation::effects::{self, registry, LoopEffect};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -115,7 +116,8 @@ impl Default for WorldEffects {
 }
 
 impl WorldEffects {
-    /// Sets one effect from `NAME=VALUE` (the names of the loop's effect library).
+    /// Sets one effect from `NAME=VALUE`: the names of the loop's effect library
+    /// (`skylux_hps::validation::effects::registry`), or their aliases.
     pub fn set(&mut self, assignment: &str) -> Result<(), String> {
         let (name, value) = assignment
             .split_once('=')
@@ -127,81 +129,115 @@ impl WorldEffects {
         if !v.is_finite() {
             return Err(format!("`{assignment}`: the value must be finite"));
         }
-        let check = |ok: bool, range: &str| {
-            if ok {
-                Ok(())
-            } else {
-                Err(format!("`{assignment}`: {name} must be {range}"))
-            }
-        };
-        match name.trim() {
-            "glazing_transmittance" => {
-                check((0.1..=1.5).contains(&v), "in [0.1, 1.5]")?;
-                self.glazing_transmittance = v;
-            }
-            "light_leak" => {
-                check((0.0..=0.2).contains(&v), "in [0, 0.2]")?;
-                self.light_leak = v;
-            }
-            "ground_reflectance" => {
-                check((0.0..=1.0).contains(&v), "in [0, 1]")?;
-                self.ground_reflectance = v;
-            }
-            "orientation_error" | "orientation_azimuth_deg" => {
-                check(v.abs() <= 10.0, "within ±10 degrees")?;
-                self.orientation_azimuth_deg = v;
-            }
-            "clock_offset" | "clock_offset_s" => {
-                check(v.abs() <= 300.0, "within ±300 seconds")?;
-                self.clock_offset_s = v;
-            }
-            "shutter_overhead" | "shutter_overhead_us" => {
-                check((0.0..=100.0).contains(&v), "in [0, 100] µs")?;
-                self.shutter_overhead_us = v;
-            }
-            "spectral_mismatch" | "spectral_clear_sky_cct_k" => {
-                check(
-                    v == 0.0 || (4000.0..=25_000.0).contains(&v),
-                    "0 (off) or a clear-sky colour temperature in [4000, 25000] K",
-                )?;
-                self.spectral_clear_sky_cct_k = v;
-            }
-            "glazing_angular" | "glazing_angular_b0" => {
-                check((0.0..=1.0).contains(&v), "in [0, 1] (ASHRAE b0)")?;
-                self.glazing_angular_b0 = v;
-            }
-            "vignetting" | "extra_vignetting" => {
-                check((0.0..=0.9).contains(&v), "in [0, 0.9]")?;
-                self.extra_vignetting = v;
-            }
-            "fov_limit_deg" | "sky_outside_fov" => {
-                check((20.0..=180.0).contains(&v), "in [20, 180] degrees")?;
-                self.fov_limit_deg = v;
-            }
-            other => {
-                return Err(format!(
-                    "unknown effect `{other}`: expected {}",
-                    EFFECT_NAMES.join(", ")
-                ))
-            }
+        let name = name.trim();
+        let effect = registry::find(name).ok_or_else(|| {
+            format!(
+                "unknown effect `{name}`: expected {}",
+                effect_names().join(", ")
+            )
+        })?;
+        let world = WORLD_PARAMETERS
+            .iter()
+            .find(|w| w.effect.name() == effect.name())
+            .ok_or_else(|| {
+                format!(
+                    "`{assignment}`: {} is not simulated in the world (expected {})",
+                    effect.name(),
+                    effect_names().join(", ")
+                )
+            })?;
+        if !(world.valid)(v) {
+            return Err(format!("`{assignment}`: {name} must be {}", world.range));
         }
+        (world.set)(self, v);
         Ok(())
     }
 }
 
-/// The names `--effect NAME=VALUE` accepts.
-pub const EFFECT_NAMES: [&str; 10] = [
-    "glazing_transmittance",
-    "light_leak",
-    "ground_reflectance",
-    "orientation_error",
-    "clock_offset",
-    "shutter_overhead",
-    "spectral_mismatch",
-    "glazing_angular",
-    "vignetting",
-    "fov_limit_deg",
+/// How an effect of the loop's library is present in the world: the parameter
+/// `--effect NAME=VALUE` sets (named by the effect, or by one of its aliases), its range, and
+/// its place in [`WorldEffects`].
+struct WorldParameter {
+    effect: &'static dyn LoopEffect,
+    valid: fn(f64) -> bool,
+    range: &'static str,
+    set: fn(&mut WorldEffects, f64),
+}
+
+/// The effects the simulator can put in the world.
+const WORLD_PARAMETERS: &[WorldParameter] = &[
+    WorldParameter {
+        effect: &effects::glazing_transmittance::GlazingTransmittance,
+        valid: |v| (0.1..=1.5).contains(&v),
+        range: "in [0.1, 1.5]",
+        set: |w, v| w.glazing_transmittance = v,
+    },
+    WorldParameter {
+        effect: &effects::light_leak::LightLeak,
+        valid: |v| (0.0..=0.2).contains(&v),
+        range: "in [0, 0.2]",
+        set: |w, v| w.light_leak = v,
+    },
+    WorldParameter {
+        effect: &effects::ground_reflectance::GroundReflectance,
+        valid: |v| (0.0..=1.0).contains(&v),
+        range: "in [0, 1]",
+        set: |w, v| w.ground_reflectance = v,
+    },
+    WorldParameter {
+        effect: &effects::orientation_error::OrientationError,
+        valid: |v| v.abs() <= 10.0,
+        range: "within ±10 degrees",
+        set: |w, v| w.orientation_azimuth_deg = v,
+    },
+    WorldParameter {
+        effect: &effects::clock_offset::ClockOffset,
+        valid: |v| v.abs() <= 300.0,
+        range: "within ±300 seconds",
+        set: |w, v| w.clock_offset_s = v,
+    },
+    WorldParameter {
+        effect: &effects::shutter_overhead::ShutterOverhead,
+        valid: |v| (0.0..=100.0).contains(&v),
+        range: "in [0, 100] µs",
+        set: |w, v| w.shutter_overhead_us = v,
+    },
+    WorldParameter {
+        effect: &effects::spectral_mismatch::SpectralMismatch,
+        valid: |v| v == 0.0 || (4000.0..=25_000.0).contains(&v),
+        range: "0 (off) or a clear-sky colour temperature in [4000, 25000] K",
+        set: |w, v| w.spectral_clear_sky_cct_k = v,
+    },
+    WorldParameter {
+        effect: &effects::glazing_angular::GlazingAngular,
+        valid: |v| (0.0..=1.0).contains(&v),
+        range: "in [0, 1] (ASHRAE b0)",
+        set: |w, v| w.glazing_angular_b0 = v,
+    },
+    WorldParameter {
+        effect: &effects::vignetting::Vignetting,
+        valid: |v| (0.0..=0.9).contains(&v),
+        range: "in [0, 0.9]",
+        set: |w, v| w.extra_vignetting = v,
+    },
+    // The world parameter is the baffle's field of view, degrees (also spelt
+    // `fov_limit_deg`, the effect's alias).
+    WorldParameter {
+        effect: &effects::sky_outside_fov::SkyOutsideFov,
+        valid: |v| (20.0..=180.0).contains(&v),
+        range: "in [20, 180] degrees",
+        set: |w, v| w.fov_limit_deg = v,
+    },
 ];
+
+/// The names `--effect NAME=VALUE` accepts (aliases aside), in the library's order.
+pub fn effect_names() -> Vec<&'static str> {
+    registry::EFFECTS
+        .iter()
+        .filter(|e| WORLD_PARAMETERS.iter().any(|w| w.effect.name() == e.name()))
+        .map(|e| e.name())
+        .collect()
+}
 
 /// When the lux-meter logger records: every `cadence_s` seconds within `half_window_s` of
 /// each capture (a logger runs continuously; only the readings near captures matter to the
@@ -265,8 +301,12 @@ impl SunSchedule {
 }
 
 /// Per sensor, the room's light from the sky (and its ground) and from the sun between
-/// clouds (and its ground), lux.
-type SkySunParts = (Vec<f64>, Vec<f64>);
+/// clouds (and its ground), lux: traced apart where the lux-meters log a series, so passing
+/// clouds scale the sun's part alone.
+struct SkySunParts {
+    sky_lux: Vec<f64>,
+    sun_lux: Vec<f64>,
+}
 
 /// A campaign to simulate.
 #[derive(Clone, Debug)]
@@ -437,14 +477,35 @@ pub fn simulate_campaign(
             "a campaign needs at least one day and one capture time".into(),
         ));
     }
-    let io = |path: &Path| {
-        let path = path.to_path_buf();
-        move |source| SimCampaignError::Io { path, source }
-    };
-    std::fs::create_dir_all(out.join("room")).map_err(io(out))?;
+    write_declared(out, spec)?;
+    let mut world = TrueWorld::new(out, spec)?;
+    let mut records = Records::default();
+    let total = spec.days.len() * spec.hours.len();
+    let mut k = 0u64;
+    for &(date, kind) in &spec.days {
+        for &hour in &spec.hours {
+            k += 1;
+            progress(k as usize - 1, total);
+            world.capture_time(out, spec, date, kind, hour, k, &mut records)?;
+        }
+    }
+    progress(total, total);
+    records.write(out)?;
+    Ok(records.truth)
+}
+
+/// An I/O error on `path`.
+fn io_error(path: &Path) -> impl FnOnce(std::io::Error) -> SimCampaignError {
+    let path = path.to_path_buf();
+    move |source| SimCampaignError::Io { path, source }
+}
+
+/// What the campaign's owner declares: the room, `campaign.toml` and `device.toml`.
+fn write_declared(out: &Path, spec: &CampaignSpec) -> Result<(), SimCampaignError> {
+    std::fs::create_dir_all(out.join("room")).map_err(io_error(out))?;
     for f in ["scene.rad", "sensors.pts"] {
         std::fs::copy(spec.room_dir.join(f), out.join("room").join(f))
-            .map_err(io(&spec.room_dir.join(f)))?;
+            .map_err(io_error(&spec.room_dir.join(f)))?;
     }
     CampaignConfig {
         name: spec.name.clone(),
@@ -453,13 +514,49 @@ pub fn simulate_campaign(
     }
     .write(&out.join("campaign.toml"))?;
     spec.device.write(&out.join("device.toml"))?;
+    Ok(())
+}
 
-    let scene = skylux_hps::scene::load(out.join("room/scene.rad"))?;
-    let sensors = skylux_hps::scene::load_sensors(out.join("room/sensors.pts"))?;
-    let mut world = World::new(&scene)?;
-    // The glazing's outward normal, where its angular transmittance is an effect.
-    let glazing_normal = if spec.effects.glazing_angular_b0 > 0.0 {
-        let g = skylux_hps::validation::glazing::Glazing::of_world(&world)
+/// What the campaign records: the truth, the lux-meters and the pyranometer.
+#[derive(Default)]
+struct Records {
+    truth: Vec<TruthRecord>,
+    readings: Vec<LuxmeterReading>,
+    pyranometer: Vec<PyranometerRow>,
+}
+
+impl Records {
+    /// Writes `luxmeters.csv` and `pyranometer.csv`.
+    fn write(&self, out: &Path) -> Result<(), SimCampaignError> {
+        let path = out.join("luxmeters.csv");
+        let mut text = Vec::new();
+        write_luxmeters(&mut text, &self.readings).map_err(io_error(&path))?;
+        std::fs::write(&path, text).map_err(io_error(&path))?;
+        let path = out.join("pyranometer.csv");
+        let mut text = Vec::new();
+        write_pyranometer_csv(&mut text, &self.pyranometer).map_err(io_error(&path))?;
+        std::fs::write(&path, text).map_err(io_error(&path))?;
+        Ok(())
+    }
+}
+
+/// The glazing's angular transmittance in the world: the incidence-angle modifier of light
+/// arriving from a direction (1 without the effect).
+#[derive(Clone, Copy, Debug)]
+struct GlazingIam {
+    normal_out: Option<DVec3>,
+    b0: f64,
+}
+
+impl GlazingIam {
+    fn new(world: &World, b0: f64) -> Result<Self, SimCampaignError> {
+        if b0 <= 0.0 {
+            return Ok(Self {
+                normal_out: None,
+                b0,
+            });
+        }
+        let g = skylux_hps::validation::glazing::Glazing::of_world(world)
             .map_err(|e| SimCampaignError::Invalid(format!("glazing_angular: {e}")))?;
         if !g.single_orientation() {
             return Err(SimCampaignError::Invalid(format!(
@@ -468,343 +565,487 @@ pub fn simulate_campaign(
                 g.planes.len()
             )));
         }
-        Some(g.primary().normal_out)
-    } else {
-        None
-    };
-    let b0 = spec.effects.glazing_angular_b0;
-    // IAM of light arriving from unit direction `d` through the glazing (1 without the effect).
-    let iam = move |d: DVec3| {
-        glazing_normal.map_or(1.0, |n| {
-            skylux_hps::validation::effect_glazing_angular::iam_ashrae(d.dot(n), b0)
+        Ok(Self {
+            normal_out: Some(g.primary().normal_out),
+            b0,
         })
-    };
-    let mut true_device = spec.device.clone();
-    true_device.orientation.axis_azimuth_deg += spec.effects.orientation_azimuth_deg;
-    let true_camera = CameraModel::new(true_device);
-    let (raw_width, raw_height) = (2592 / spec.skip as usize, 1944 / spec.skip as usize);
-    let raw_width = raw_width & !1;
-    let raw_height = raw_height & !1;
-    let offset = FixedOffset::east_opt(spec.utc_offset_s)
-        .ok_or_else(|| SimCampaignError::Invalid("UTC offset out of range".into()))?;
-    let sun_site = SunSite {
-        latitude_deg: spec.site.latitude_deg,
-        longitude_deg: spec.site.longitude_deg,
-        elevation_m: spec.site.elevation_m,
-    };
+    }
 
-    let responses = if spec.effects.spectral_clear_sky_cct_k > 0.0 {
-        let dir = spec.spectral_data_dir.as_deref().ok_or_else(|| {
-            SimCampaignError::Invalid(
-                "spectral_mismatch needs the shared spectral data: set SKYLUX_DATA_DIR".into(),
-            )
-        })?;
-        Some(
-            crate::sky_colour::DaylightResponses::load(dir)
-                .map_err(|e| SimCampaignError::Invalid(e.to_string()))?,
+    fn at(&self, d: DVec3) -> f64 {
+        self.normal_out.map_or(1.0, |n| {
+            skylux_hps::validation::glazing::iam_ashrae(d.dot(n), self.b0)
+        })
+    }
+}
+
+/// The world as it is, undeclared effects included: the room, the true camera, the glazing.
+struct TrueWorld {
+    world: World,
+    sensors: Vec<skylux_hps::scene::Sensor>,
+    iam: GlazingIam,
+    true_camera: CameraModel,
+    raw_width: usize,
+    raw_height: usize,
+    offset: FixedOffset,
+    sun_site: SunSite,
+    /// The camera's channel responses to daylight, where the sky's colour is simulated.
+    responses: Option<crate::sky_colour::DaylightResponses>,
+}
+
+/// The sky at one capture time: the Perez sky for the day's irradiance, the clouds it does
+/// not know, and the sun between them.
+#[derive(Clone)]
+struct MomentSky {
+    kind: DaySky,
+    dni: f64,
+    dhi: f64,
+    schedule: SunSchedule,
+    /// The sun's transmission at the capture itself.
+    s0: f64,
+    perez: PerezSky,
+    clouds: Clouds,
+    /// The modulated sky integrated on the horizontal, lux.
+    diffuse_lux: f64,
+    /// The beam on the horizontal between clouds, lux.
+    beam_lux: f64,
+    /// True outdoor horizontal illuminance at the capture, lux.
+    ghi_lux: f64,
+    ground_cd_m2: f64,
+    sun_cd_m2: f64,
+    sun_direction: DVec3,
+    sun_cos_half: f64,
+}
+
+impl MomentSky {
+    fn new(
+        spec: &CampaignSpec,
+        date: NaiveDate,
+        kind: DaySky,
+        seed: u64,
+        sun_dir: DVec3,
+        altitude: f64,
+    ) -> Result<Self, SimCampaignError> {
+        let (dni_clear, dhi_clear) = clear_sky_w_m2(altitude);
+        let ghi_clear = dni_clear * altitude.sin() + dhi_clear;
+        // Partly cloudy days hide the sun one time in three; the other times, clouds pass
+        // over it within minutes (`dni` is then the beam between clouds).
+        let (dni, dhi, schedule) = match kind {
+            DaySky::Clear => (dni_clear, dhi_clear, SunSchedule::steady()),
+            DaySky::Overcast => (0.0, 0.35 * ghi_clear, SunSchedule::steady()),
+            DaySky::Partly => {
+                if hash01(seed, 99) < 0.35 {
+                    (0.0, 0.55 * ghi_clear, SunSchedule::steady())
+                } else {
+                    (
+                        0.85 * dni_clear,
+                        0.25 * ghi_clear,
+                        SunSchedule::passing_clouds(seed),
+                    )
+                }
+            }
+        };
+        let s0 = schedule.at(0.0);
+        let perez = PerezSky::new(
+            PerezInput::DirectNormalDiffuse {
+                direct_normal_w_m2: dni,
+                diffuse_horizontal_w_m2: dhi,
+            },
+            &PerezConditions {
+                day_of_year: date.ordinal() as u16,
+                ground_reflectance: spec.effects.ground_reflectance,
+                ..PerezConditions::gendaylit_ang(sun_dir)
+            },
         )
-    } else {
-        None
-    };
-    let mut truth = Vec::new();
-    let mut readings = Vec::new();
-    let mut pyranometer = Vec::new();
-    let total = spec.days.len() * spec.hours.len();
-    let mut k = 0u64;
-    for &(date, kind) in &spec.days {
-        for &hour in &spec.hours {
-            k += 1;
-            progress(k as usize - 1, total);
-            let midnight = offset
-                .from_local_datetime(&date.and_hms_opt(0, 0, 0).expect("midnight"))
-                .single()
-                .ok_or_else(|| SimCampaignError::Invalid("ambiguous local time".into()))?;
-            let time = midnight + Duration::seconds((hour * 3600.0).round() as i64);
-            let sun = solar_position(time.with_timezone(&Utc), &sun_site, None)
-                .map_err(|e| SimCampaignError::Invalid(e.to_string()))?;
-            let sun_dir = sun.direction();
-            let altitude = sun.altitude_deg().to_radians();
-            if altitude < 3f64.to_radians() {
-                continue;
-            }
-            let seed = spec.seed ^ (k << 20);
-            let (dni_clear, dhi_clear) = clear_sky_w_m2(altitude);
-            let ghi_clear = dni_clear * altitude.sin() + dhi_clear;
-            // Sun visible at this time? Partly cloudy days hide it one time in three; the other
-            // times, clouds pass over it within minutes (`dni` is then the beam between clouds).
-            let (dni, dhi, schedule) = match kind {
-                DaySky::Clear => (dni_clear, dhi_clear, SunSchedule::steady()),
-                DaySky::Overcast => (0.0, 0.35 * ghi_clear, SunSchedule::steady()),
-                DaySky::Partly => {
-                    if hash01(seed, 99) < 0.35 {
-                        (0.0, 0.55 * ghi_clear, SunSchedule::steady())
-                    } else {
-                        (
-                            0.85 * dni_clear,
-                            0.25 * ghi_clear,
-                            SunSchedule::passing_clouds(seed),
-                        )
-                    }
-                }
-            };
-            // The sun's transmission at the capture itself.
-            let s0 = schedule.at(0.0);
-            let logger = spec.logger.or_else(|| {
-                (kind == DaySky::Partly || spec.effects.clock_offset_s != 0.0)
-                    .then(LoggerSchedule::default)
-            });
-            let perez = PerezSky::new(
-                PerezInput::DirectNormalDiffuse {
-                    direct_normal_w_m2: dni,
-                    diffuse_horizontal_w_m2: dhi,
-                },
-                &PerezConditions {
-                    day_of_year: date.ordinal() as u16,
-                    ground_reflectance: spec.effects.ground_reflectance,
-                    ..PerezConditions::gendaylit_ang(sun_dir)
-                },
-            )
-            .map_err(|e| SimCampaignError::Invalid(e.to_string()))?;
-            let clouds = Clouds::new(kind, seed);
-            let sky = {
-                let perez = perez.clone();
-                let clouds = clouds.clone();
-                move |d: DVec3| perez.luminance_cd_m2(d) * clouds.factor(d)
-            };
-            // True outdoor horizontal illuminance: the modulated sky integrated, plus the sun.
-            let patches = skylux_hps::sky::SkyPatches::reinhart(4);
-            let diffuse_lux: f64 = (0..patches.len())
-                .map(|p| {
-                    let c = patches.centre(p);
-                    sky(c) * c.z * patches.solid_angle_sr(p)
-                })
-                .sum();
-            // The beam on the horizontal between clouds, and at the capture.
-            let beam_lux = if dni > 0.0 {
-                perez.direct_normal_illuminance_lux() * altitude.sin()
-            } else {
-                0.0
-            };
-            let sun_lux = beam_lux * s0;
-            let ghi_lux = diffuse_lux + sun_lux;
-            let ground_cd_m2 = spec.effects.ground_reflectance * ghi_lux / std::f64::consts::PI;
-            let sun_cd_m2 = if dni > 0.0 {
-                perez.sun_luminance_cd_m2() * s0
-            } else {
-                0.0
-            };
-            let sun_half = perez.sun_solid_angle_sr() / std::f64::consts::TAU;
-            let sun_cos_half = 1.0 - sun_half;
-            let field = {
-                let sky = sky.clone();
-                move |d: DVec3| {
-                    if d.z < 0.0 {
-                        ground_cd_m2
-                    } else if sun_cd_m2 > 0.0 && d.dot(sun_dir) >= sun_cos_half {
-                        sun_cd_m2
-                    } else {
-                        sky(d)
-                    }
-                }
-            };
-            // What reaches the sensor through the true lens and housing: the field times the
-            // undeclared extra vignetting, and nothing beyond the baffle's field of view.
-            let field = {
-                let (v, limit_rad) = (
-                    spec.effects.extra_vignetting,
-                    spec.effects.fov_limit_deg.to_radians(),
-                );
-                let camera = true_camera.clone();
-                move |d: DVec3| {
-                    if v == 0.0 && limit_rad >= std::f64::consts::PI {
-                        return field(d);
-                    }
-                    let alpha = camera.off_axis_rad(d);
-                    if alpha > limit_rad {
-                        0.0
-                    } else {
-                        field(d) * extra_vignetting_factor(v, alpha)
-                    }
-                }
-            };
-            // Frames, through the true camera.
-            let stamp = time.format("%Y-%m-%dT%H%M").to_string();
-            let capture_dir = out.join("captures").join(&stamp);
-            let capture_spec = CaptureSpec {
-                time: time.to_rfc3339(),
-                readout: Readout {
-                    col_start: 0,
-                    row_start: 0,
-                    skip: spec.skip,
-                },
-                raw_width,
-                raw_height,
-                exposures_us: spec.exposures_us.clone(),
-                gain: 1.0,
-                seed,
-                footprint: crate::sensor::Footprint::Integrated,
-            };
-            match &responses {
-                None => simulate_capture_with_overhead(
-                    &capture_dir,
-                    &true_camera,
-                    &field,
-                    &capture_spec,
-                    spec.effects.shutter_overhead_us,
-                )?,
-                Some(responses) => {
-                    let colour = crate::sky_colour::SkyColour {
-                        clear_sky_cct_k: (kind != DaySky::Overcast)
-                            .then_some(spec.effects.spectral_clear_sky_cct_k),
-                        sun_direction: sun_dir,
-                        sun_cos_half,
-                        sun_visible: sun_cd_m2 > 0.0,
-                    };
-                    crate::sky_colour::simulate_capture_coloured(
-                        &capture_dir,
-                        &true_camera,
-                        &field,
-                        &colour,
-                        responses,
-                        &capture_spec,
-                        spec.effects.shutter_overhead_us,
-                    )?;
-                }
-            }
-            // The room, by direct path tracing of the continuous sky and a light sun.
-            let settings = Settings {
-                ambient_bounces: 5,
-                samples_per_sensor: spec.truth_samples,
-                seed,
-                ..Default::default()
-            };
-            let rho = spec.effects.ground_reflectance;
-            let mut trace = |above: Option<Arc<dyn Fn(DVec3) -> f64 + Send + Sync>>,
-                             ground: f64,
-                             sun: f64|
-             -> Result<Vec<f64>, SimCampaignError> {
-                // A ray leaving the room along d crossed the glazing at the angle between d
-                // and its normal (glass does not refract): the angular effect scales what it
-                // sees, and the sun, by the IAM at that angle.
-                world.set_environment(Some(Arc::new(move |d: DVec3| {
-                    let l = if d.z < 0.0 {
-                        ground
-                    } else {
-                        above.as_ref().map_or(0.0, |f| f(d))
-                    };
-                    DVec3::splat(iam(d) * l / engine::WHITE_EFFICACY_LM_PER_W)
-                })));
-                let sun = sun * iam(sun_dir);
-                if sun > 0.0 {
-                    world.add_distant(DistantEmitter::sun(
-                        sun_dir,
-                        perez.sun_solid_angle_sr(),
-                        sun / engine::WHITE_EFFICACY_LM_PER_W,
-                    ));
-                }
-                let lux = engine::illuminance(&world, &sensors, &settings, &|_, _| {})?;
-                world.clear_distant();
-                world.set_environment(None);
-                Ok(lux.iter().map(|s| s.illuminance_lux).collect())
-            };
-            let sky_fn: Arc<dyn Fn(DVec3) -> f64 + Send + Sync> = Arc::new(sky.clone());
-            // Per sensor, the light at `dt` seconds from the capture and the outdoor horizontal
-            // illuminance then: with a logger, sky (and its ground) and sun (and its ground)
-            // are traced apart, so the passing clouds scale the sun's part alone.
-            let (room_lux, parts): (Vec<f64>, Option<SkySunParts>) = match logger {
-                None => (trace(Some(sky_fn), ground_cd_m2, sun_cd_m2)?, None),
-                Some(_) => {
-                    let sky_part =
-                        trace(Some(sky_fn), rho * diffuse_lux / std::f64::consts::PI, 0.0)?;
-                    let sun_part = if dni > 0.0 {
-                        trace(
-                            None,
-                            rho * beam_lux / std::f64::consts::PI,
-                            perez.sun_luminance_cd_m2(),
-                        )?
-                    } else {
-                        vec![0.0; sensors.len()]
-                    };
-                    let now = sky_part
-                        .iter()
-                        .zip(&sun_part)
-                        .map(|(a, b)| a + s0 * b)
-                        .collect();
-                    (now, Some((sky_part, sun_part)))
-                }
-            };
-            let gaussian = |key: u64| {
-                // Box-Muller from the hash: a reproducible Gaussian per reading.
-                let (u1, u2) = (hash01(seed, key).max(1e-12), hash01(seed, key + 1));
-                (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
-            };
-            let logger_clock = |dt_s: f64| {
-                let ms = ((dt_s + spec.effects.clock_offset_s) * 1000.0).round() as i64;
-                time + Duration::milliseconds(ms)
-            };
-            match (logger, parts) {
-                (Some(log), Some((sky_part, sun_part))) => {
-                    let n = (log.half_window_s / log.cadence_s).floor() as i64;
-                    for j in -n..=n {
-                        let dt = j as f64 * log.cadence_s;
-                        let st = schedule.at(dt);
-                        let ghi_then = diffuse_lux + st * beam_lux;
-                        for s in 0..sensors.len() {
-                            let e = sky_part[s] + st * sun_part[s];
-                            let key = 5000 + 2 * ((j + n) as u64 * sensors.len() as u64 + s as u64);
-                            let measured = (e * spec.effects.glazing_transmittance
-                                + spec.effects.light_leak * ghi_then)
-                                * (1.0 + spec.luxmeter_noise * gaussian(key));
-                            readings.push(LuxmeterReading {
-                                time: logger_clock(dt),
-                                sensor: sensors[s].name.clone(),
-                                illuminance_lux: measured.max(0.0),
-                            });
-                        }
-                    }
-                }
-                _ => {
-                    for (s, &e) in room_lux.iter().enumerate() {
-                        let measured = (e * spec.effects.glazing_transmittance
-                            + spec.effects.light_leak * ghi_lux)
-                            * (1.0 + spec.luxmeter_noise * gaussian(1000 + 2 * s as u64));
-                        readings.push(LuxmeterReading {
-                            time: logger_clock(0.0),
-                            sensor: sensors[s].name.clone(),
-                            illuminance_lux: measured.max(0.0),
-                        });
-                    }
-                }
-            }
-            // The pyranometer measures the sky as it is (clouds and all), not the Perez sky
-            // its irradiance was drawn from.
-            let dhi_measured = if perez.diffuse_horizontal_illuminance_lux() > 0.0 {
-                dhi * diffuse_lux / perez.diffuse_horizontal_illuminance_lux()
-            } else {
-                dhi
-            };
-            pyranometer.push(PyranometerRow {
-                time,
-                ghi_wm2: Some(s0 * dni * altitude.sin() + dhi_measured),
-                dhi_wm2: Some(dhi_measured),
-                dni_wm2: Some(s0 * dni),
-            });
-            truth.push(TruthRecord {
-                time,
-                sun_direction: sun_dir,
-                global_horizontal_lux: ghi_lux,
-                room_lux,
-            });
+        .map_err(|e| SimCampaignError::Invalid(e.to_string()))?;
+        let clouds = Clouds::new(kind, seed);
+        let sky = |d: DVec3| perez.luminance_cd_m2(d) * clouds.factor(d);
+        let patches = skylux_hps::sky::SkyPatches::reinhart(4);
+        let diffuse_lux: f64 = (0..patches.len())
+            .map(|p| {
+                let c = patches.centre(p);
+                sky(c) * c.z * patches.solid_angle_sr(p)
+            })
+            .sum();
+        let beam_lux = if dni > 0.0 {
+            perez.direct_normal_illuminance_lux() * altitude.sin()
+        } else {
+            0.0
+        };
+        let ghi_lux = diffuse_lux + beam_lux * s0;
+        let sun_cd_m2 = if dni > 0.0 {
+            perez.sun_luminance_cd_m2() * s0
+        } else {
+            0.0
+        };
+        let sun_half = perez.sun_solid_angle_sr() / std::f64::consts::TAU;
+        Ok(Self {
+            kind,
+            dni,
+            dhi,
+            schedule,
+            s0,
+            ground_cd_m2: spec.effects.ground_reflectance * ghi_lux / std::f64::consts::PI,
+            perez,
+            clouds,
+            diffuse_lux,
+            beam_lux,
+            ghi_lux,
+            sun_cd_m2,
+            sun_direction: sun_dir,
+            sun_cos_half: 1.0 - sun_half,
+        })
+    }
+
+    /// The sky's luminance in direction `d` (above the horizon), the sun left out, cd/m².
+    fn sky(&self, d: DVec3) -> f64 {
+        self.perez.luminance_cd_m2(d) * self.clouds.factor(d)
+    }
+
+    /// The luminance of everything in direction `d`: ground, sun disk or sky, cd/m².
+    fn field(&self, d: DVec3) -> f64 {
+        if d.z < 0.0 {
+            self.ground_cd_m2
+        } else if self.sun_cd_m2 > 0.0 && d.dot(self.sun_direction) >= self.sun_cos_half {
+            self.sun_cd_m2
+        } else {
+            self.sky(d)
         }
     }
-    progress(total, total);
-    let mut text = Vec::new();
-    write_luxmeters(&mut text, &readings).map_err(io(&out.join("luxmeters.csv")))?;
-    std::fs::write(out.join("luxmeters.csv"), text).map_err(io(&out.join("luxmeters.csv")))?;
-    let mut text = Vec::new();
-    write_pyranometer_csv(&mut text, &pyranometer).map_err(io(&out.join("pyranometer.csv")))?;
-    std::fs::write(out.join("pyranometer.csv"), text).map_err(io(&out.join("pyranometer.csv")))?;
-    Ok(truth)
+
+    /// The pyranometer's record: the sky as it is (clouds and all), not the Perez sky its
+    /// irradiance was drawn from.
+    fn pyranometer_row(&self, time: DateTime<FixedOffset>, altitude: f64) -> PyranometerRow {
+        let dhi_measured = if self.perez.diffuse_horizontal_illuminance_lux() > 0.0 {
+            self.dhi * self.diffuse_lux / self.perez.diffuse_horizontal_illuminance_lux()
+        } else {
+            self.dhi
+        };
+        PyranometerRow {
+            time,
+            ghi_wm2: Some(self.s0 * self.dni * altitude.sin() + dhi_measured),
+            dhi_wm2: Some(dhi_measured),
+            dni_wm2: Some(self.s0 * self.dni),
+        }
+    }
+}
+
+impl TrueWorld {
+    fn new(out: &Path, spec: &CampaignSpec) -> Result<Self, SimCampaignError> {
+        let scene = skylux_hps::scene::load(out.join("room/scene.rad"))?;
+        let sensors = skylux_hps::scene::load_sensors(out.join("room/sensors.pts"))?;
+        let world = World::new(&scene)?;
+        let iam = GlazingIam::new(&world, spec.effects.glazing_angular_b0)?;
+        let mut true_device = spec.device.clone();
+        true_device.orientation.axis_azimuth_deg += spec.effects.orientation_azimuth_deg;
+        let (raw_width, raw_height) = (2592 / spec.skip as usize, 1944 / spec.skip as usize);
+        let offset = FixedOffset::east_opt(spec.utc_offset_s)
+            .ok_or_else(|| SimCampaignError::Invalid("UTC offset out of range".into()))?;
+        let responses = if spec.effects.spectral_clear_sky_cct_k > 0.0 {
+            let dir = spec.spectral_data_dir.as_deref().ok_or_else(|| {
+                SimCampaignError::Invalid(
+                    "spectral_mismatch needs the shared spectral data: set SKYLUX_DATA_DIR".into(),
+                )
+            })?;
+            Some(
+                crate::sky_colour::DaylightResponses::load(dir)
+                    .map_err(|e| SimCampaignError::Invalid(e.to_string()))?,
+            )
+        } else {
+            None
+        };
+        Ok(Self {
+            world,
+            sensors,
+            iam,
+            true_camera: CameraModel::new(true_device),
+            raw_width: raw_width & !1,
+            raw_height: raw_height & !1,
+            offset,
+            sun_site: SunSite {
+                latitude_deg: spec.site.latitude_deg,
+                longitude_deg: spec.site.longitude_deg,
+                elevation_m: spec.site.elevation_m,
+            },
+            responses,
+        })
+    }
+
+    /// Simulates one capture time (the k-th): frames, lux-meter readings, the pyranometer's
+    /// row and the truth. Times with the sun under 3° are skipped.
+    #[allow(clippy::too_many_arguments)]
+    fn capture_time(
+        &mut self,
+        out: &Path,
+        spec: &CampaignSpec,
+        date: NaiveDate,
+        kind: DaySky,
+        hour: f64,
+        k: u64,
+        records: &mut Records,
+    ) -> Result<(), SimCampaignError> {
+        let midnight = self
+            .offset
+            .from_local_datetime(&date.and_hms_opt(0, 0, 0).expect("midnight"))
+            .single()
+            .ok_or_else(|| SimCampaignError::Invalid("ambiguous local time".into()))?;
+        let time = midnight + Duration::seconds((hour * 3600.0).round() as i64);
+        let sun = solar_position(time.with_timezone(&Utc), &self.sun_site, None)
+            .map_err(|e| SimCampaignError::Invalid(e.to_string()))?;
+        let altitude = sun.altitude_deg().to_radians();
+        if altitude < 3f64.to_radians() {
+            return Ok(());
+        }
+        let seed = spec.seed ^ (k << 20);
+        let sky = Arc::new(MomentSky::new(
+            spec,
+            date,
+            kind,
+            seed,
+            sun.direction(),
+            altitude,
+        )?);
+        self.render_frames(out, spec, time, seed, &sky)?;
+        let logger = spec.logger.or_else(|| {
+            (kind == DaySky::Partly || spec.effects.clock_offset_s != 0.0)
+                .then(LoggerSchedule::default)
+        });
+        let (room_lux, parts) = self.trace_room(spec, seed, &sky, logger.is_some())?;
+        let names: Vec<&str> = self.sensors.iter().map(|s| s.name.as_str()).collect();
+        let log = LuxmeterLog {
+            spec,
+            seed,
+            time,
+            sky: &sky,
+            sensors: &names,
+        };
+        match (logger, parts) {
+            (Some(schedule), Some(parts)) => log.series(schedule, &parts, &mut records.readings),
+            _ => log.at_capture(&room_lux, &mut records.readings),
+        }
+        records
+            .pyranometer
+            .push(sky.pyranometer_row(time, altitude));
+        records.truth.push(TruthRecord {
+            time,
+            sun_direction: sky.sun_direction,
+            global_horizontal_lux: sky.ghi_lux,
+            room_lux,
+        });
+        Ok(())
+    }
+
+    /// The raw frames of one capture, through the true camera, lens and housing.
+    fn render_frames(
+        &self,
+        out: &Path,
+        spec: &CampaignSpec,
+        time: DateTime<FixedOffset>,
+        seed: u64,
+        sky: &Arc<MomentSky>,
+    ) -> Result<(), SimCampaignError> {
+        // What reaches the sensor through the true lens and housing: the field times the
+        // undeclared extra vignetting, and nothing beyond the baffle's field of view.
+        let field = {
+            let (v, limit_rad) = (
+                spec.effects.extra_vignetting,
+                spec.effects.fov_limit_deg.to_radians(),
+            );
+            let camera = self.true_camera.clone();
+            let sky = Arc::clone(sky);
+            move |d: DVec3| {
+                if v == 0.0 && limit_rad >= std::f64::consts::PI {
+                    return sky.field(d);
+                }
+                let alpha = camera.off_axis_rad(d);
+                if alpha > limit_rad {
+                    0.0
+                } else {
+                    sky.field(d) * extra_vignetting_factor(v, alpha)
+                }
+            }
+        };
+        let stamp = time.format("%Y-%m-%dT%H%M").to_string();
+        let capture_dir = out.join("captures").join(&stamp);
+        let capture_spec = CaptureSpec {
+            time: time.to_rfc3339(),
+            readout: Readout {
+                col_start: 0,
+                row_start: 0,
+                skip: spec.skip,
+            },
+            raw_width: self.raw_width,
+            raw_height: self.raw_height,
+            exposures_us: spec.exposures_us.clone(),
+            gain: 1.0,
+            seed,
+            footprint: crate::sensor::Footprint::Integrated,
+        };
+        let overhead_us = spec.effects.shutter_overhead_us;
+        let Some(responses) = &self.responses else {
+            return Ok(simulate_capture_with_overhead(
+                &capture_dir,
+                &self.true_camera,
+                &field,
+                &capture_spec,
+                overhead_us,
+            )?);
+        };
+        let colour = crate::sky_colour::SkyColour {
+            clear_sky_cct_k: (sky.kind != DaySky::Overcast)
+                .then_some(spec.effects.spectral_clear_sky_cct_k),
+            sun_direction: sky.sun_direction,
+            sun_cos_half: sky.sun_cos_half,
+            sun_visible: sky.sun_cd_m2 > 0.0,
+        };
+        crate::sky_colour::simulate_capture_coloured(
+            &capture_dir,
+            &self.true_camera,
+            &field,
+            &colour,
+            responses,
+            &capture_spec,
+            overhead_us,
+        )?;
+        Ok(())
+    }
+
+    /// Per sensor, the room's illuminance from `above` (the sky; `None`: dark), a ground of
+    /// `ground_cd_m2` and a sun of `sun_cd_m2`, by direct path tracing. A ray leaving the room
+    /// along d crossed the glazing at the angle between d and its normal (glass does not
+    /// refract): the angular effect scales what it sees, and the sun, by the IAM at that
+    /// angle.
+    fn trace(
+        &mut self,
+        settings: &Settings,
+        sky: &MomentSky,
+        above: Option<Arc<MomentSky>>,
+        ground_cd_m2: f64,
+        sun_cd_m2: f64,
+    ) -> Result<Vec<f64>, SimCampaignError> {
+        let iam = self.iam;
+        self.world.set_environment(Some(Arc::new(move |d: DVec3| {
+            let l = if d.z < 0.0 {
+                ground_cd_m2
+            } else {
+                above.as_ref().map_or(0.0, |s| s.sky(d))
+            };
+            DVec3::splat(iam.at(d) * l / engine::WHITE_EFFICACY_LM_PER_W)
+        })));
+        let sun = sun_cd_m2 * iam.at(sky.sun_direction);
+        if sun > 0.0 {
+            self.world.add_distant(DistantEmitter::sun(
+                sky.sun_direction,
+                sky.perez.sun_solid_angle_sr(),
+                sun / engine::WHITE_EFFICACY_LM_PER_W,
+            ));
+        }
+        let lux = engine::illuminance(&self.world, &self.sensors, settings, &|_, _| {})?;
+        self.world.clear_distant();
+        self.world.set_environment(None);
+        Ok(lux.iter().map(|s| s.illuminance_lux).collect())
+    }
+
+    /// Per sensor, the light at the capture; with a logger, also the sky (and its ground) and
+    /// the sun (and its ground) apart.
+    fn trace_room(
+        &mut self,
+        spec: &CampaignSpec,
+        seed: u64,
+        sky: &Arc<MomentSky>,
+        logging: bool,
+    ) -> Result<(Vec<f64>, Option<SkySunParts>), SimCampaignError> {
+        let settings = Settings {
+            ambient_bounces: 5,
+            samples_per_sensor: spec.truth_samples,
+            seed,
+            ..Default::default()
+        };
+        let above = Some(Arc::clone(sky));
+        if !logging {
+            let lux = self.trace(&settings, sky, above, sky.ground_cd_m2, sky.sun_cd_m2)?;
+            return Ok((lux, None));
+        }
+        let rho = spec.effects.ground_reflectance;
+        let pi = std::f64::consts::PI;
+        let sky_lux = self.trace(&settings, sky, above, rho * sky.diffuse_lux / pi, 0.0)?;
+        let sun_lux = if sky.dni > 0.0 {
+            let sun_cd_m2 = sky.perez.sun_luminance_cd_m2();
+            self.trace(&settings, sky, None, rho * sky.beam_lux / pi, sun_cd_m2)?
+        } else {
+            vec![0.0; self.sensors.len()]
+        };
+        let now = sky_lux
+            .iter()
+            .zip(&sun_lux)
+            .map(|(a, b)| a + sky.s0 * b)
+            .collect();
+        Ok((now, Some(SkySunParts { sky_lux, sun_lux })))
+    }
+}
+
+/// The lux-meters at one capture time: the true light through the undeclared effects on the
+/// readings (glazing, leak, clock) and their noise.
+struct LuxmeterLog<'a> {
+    spec: &'a CampaignSpec,
+    seed: u64,
+    time: DateTime<FixedOffset>,
+    sky: &'a MomentSky,
+    sensors: &'a [&'a str],
+}
+
+impl LuxmeterLog<'_> {
+    /// A reproducible standard Gaussian per reading (Box-Muller from the hash).
+    fn gaussian(&self, key: u64) -> f64 {
+        let (u1, u2) = (
+            hash01(self.seed, key).max(1e-12),
+            hash01(self.seed, key + 1),
+        );
+        (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+    }
+
+    /// A reading of `true_lux` (outdoor `outdoor_lux`) at `dt_s` from the capture, stamped
+    /// by the logger's clock.
+    fn reading(
+        &self,
+        sensor: usize,
+        dt_s: f64,
+        true_lux: f64,
+        outdoor_lux: f64,
+        key: u64,
+    ) -> LuxmeterReading {
+        let e = &self.spec.effects;
+        let measured = (true_lux * e.glazing_transmittance + e.light_leak * outdoor_lux)
+            * (1.0 + self.spec.luxmeter_noise * self.gaussian(key));
+        let ms = ((dt_s + e.clock_offset_s) * 1000.0).round() as i64;
+        LuxmeterReading {
+            time: self.time + Duration::milliseconds(ms),
+            sensor: self.sensors[sensor].to_string(),
+            illuminance_lux: measured.max(0.0),
+        }
+    }
+
+    /// One reading per sensor at the capture.
+    fn at_capture(&self, room_lux: &[f64], out: &mut Vec<LuxmeterReading>) {
+        for (s, &e) in room_lux.iter().enumerate() {
+            out.push(self.reading(s, 0.0, e, self.sky.ghi_lux, 1000 + 2 * s as u64));
+        }
+    }
+
+    /// A series per sensor around the capture, the passing clouds scaling the sun's part.
+    fn series(&self, log: LoggerSchedule, parts: &SkySunParts, out: &mut Vec<LuxmeterReading>) {
+        let n = (log.half_window_s / log.cadence_s).floor() as i64;
+        let sensors = self.sensors.len();
+        for j in -n..=n {
+            let dt = j as f64 * log.cadence_s;
+            let st = self.sky.schedule.at(dt);
+            let ghi_then = self.sky.diffuse_lux + st * self.sky.beam_lux;
+            for s in 0..sensors {
+                let e = parts.sky_lux[s] + st * parts.sun_lux[s];
+                let key = 5000 + 2 * ((j + n) as u64 * sensors as u64 + s as u64);
+                out.push(self.reading(s, dt, e, ghi_then, key));
+            }
+        }
+    }
 }
 
 /// [`simulate_capture`] with a shutter that integrates each frame for its declared time plus

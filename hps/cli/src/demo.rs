@@ -132,7 +132,7 @@ fn campaign_and_loop(out_dir: &std::path::Path) -> anyhow::Result<()> {
     let campaign = Campaign::open(&campaign_dir)?;
     let mut options = LoopOptions::default();
     // The published device's first model: the sun stays in the map's patches.
-    options.base.concentrated_sun = false;
+    options.base.model.concentrated_sun = false;
     let outcome = crate::loop_cmd::run_with_progress(&campaign, &options)?;
     let report_dir = out_dir.join("report");
     crate::loop_cmd::write_outcome(&report_dir, &campaign, &outcome)?;

@@ -31,7 +31,7 @@ pub struct LoopArgs {
 pub fn run(args: &LoopArgs) -> anyhow::Result<()> {
     let campaign = Campaign::open(&args.campaign)?;
     let mut options = LoopOptions::default();
-    options.base.concentrated_sun = !args.sun_in_map;
+    options.base.model.concentrated_sun = !args.sun_in_map;
     options.settings.samples_per_sensor = args.samples;
     options.block = chrono::TimeDelta::minutes(args.block_minutes);
     let outcome = run_with_progress(&campaign, &options)?;

@@ -23,7 +23,8 @@ pub enum SimCommand {
 pub struct SimCampaignArgs {
     #[arg(long)]
     pub out: PathBuf,
-    /// An undeclared effect, NAME=VALUE; repeatable. glazing_transmittance (relative, 0.1 to
+    /// An undeclared effect, NAME=VALUE (the loop's effect names, or their aliases);
+    /// repeatable. glazing_transmittance (relative, 0.1 to
     /// 1.5), light_leak (lux per outdoor lux, 0 to 0.2), ground_reflectance (0 to 1),
     /// orientation_error (axis azimuth, degrees, ±10), clock_offset (lux-meter logger minus
     /// device clock, seconds, ±300; visible only when the light changes within minutes: use
@@ -35,8 +36,8 @@ pub struct SimCampaignArgs {
     /// glazing_angular (ASHRAE incidence-angle modifier b0 of the glazing, 0 to 1: light
     /// through it at incidence θ times 1 − b0 (1/cos θ − 1); 0.05 is clean glass).
     /// vignetting (v of an extra relative illumination 1 − v (α/90°)² on top of the declared
-    /// polynomial, 0 to 0.9), fov_limit_deg (a baffle darkens the image beyond this off-axis
-    /// angle, degrees, 20 to 180).
+    /// polynomial, 0 to 0.9), sky_outside_fov (also fov_limit_deg: a baffle darkens the
+    /// image beyond this off-axis angle, degrees, 20 to 180).
     #[arg(long = "effect")]
     pub effects: Vec<String>,
     /// The sky of every day (default: one clear and one overcast day). `partly`: broken

@@ -8,6 +8,7 @@ pub mod engine;
 pub mod fpga;
 pub mod hdr;
 pub mod io;
+pub mod model;
 pub mod numerics;
 pub mod output;
 pub mod photometry;

@@ -21,11 +21,9 @@ use skylux_hps::camera::{CameraModel, DeviceConfig};
 use skylux_hps::engine::sky::DistantEmitter;
 use skylux_hps::engine::{self, DaylightCoefficients, Settings, World};
 use skylux_hps::hdr::{merge, GroupGeometry, LuminanceMap};
+use skylux_hps::model::{capture_terms, predict, CaptureData, CaptureTerms, ModelState, Room};
 use skylux_hps::sky::SkyPatches;
 use skylux_hps::sun::{remove_sun, solar_position, Site, SunFlag, SOLAR_DISK_SR};
-use skylux_hps::validation::device_model::{
-    capture_terms, predict, CaptureData, CaptureTerms, ModelState, Room,
-};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};

@@ -7,9 +7,7 @@ mod common;
 use common::*;
 use skylux_hps::campaign::Campaign;
 use skylux_hps::engine::{DaylightCoefficients, Settings, World};
-use skylux_hps::validation::device_model::{
-    capture_terms, load_captures, predict, ModelState, Room,
-};
+use skylux_hps::model::{capture_terms, load_captures, predict, ModelState, Room};
 use std::time::Duration;
 
 #[test]

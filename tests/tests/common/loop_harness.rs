@@ -1,6 +1,6 @@
 //! The loop's test bed, shared by `loop_effects.rs` and `loop_effects_more.rs`: simulated
 //! campaigns in the reference room in Lausanne with undeclared effects, the loop run on them
-//! with small settings, and the acceptance rule of issue 9 (hold-out error after at most a
+//! with small settings, and the acceptance rule (hold-out error after at most a
 //! third of before, or at the noise floor of the same campaign without effects).
 //!
 //! Campaigns: a clear and an overcast day (or the given sky on both), captures every two
@@ -53,7 +53,7 @@ pub fn simulate(dir: &Path, effects: &[&str], seed: u64) -> Campaign {
 
 pub fn run(campaign: &Campaign, sun_in_map: bool) -> LoopOutcome {
     let mut options = LoopOptions::default();
-    options.base.concentrated_sun = !sun_in_map;
+    options.base.model.concentrated_sun = !sun_in_map;
     options.settings.samples_per_sensor = 30_000;
     run_loop(campaign, &options, &|_, _, _| {}).expect("loop")
 }

@@ -8,7 +8,9 @@
 //! surface scatters what it transmits, so a direction outside does not tell at which angle
 //! the light crossed it; it is not a portal and not glazing here.
 
-use crate::engine::World;
+use super::prediction::Param;
+use super::terms::Terms;
+use crate::engine::{DaylightCoefficients, World};
 use glam::DVec3;
 
 /// Normals within this angle, degrees, are one plane.
@@ -188,6 +190,122 @@ impl Glazing {
     }
 }
 
+/// The glazing's angular transmittance beyond the scene's glass: ASHRAE's incidence-angle
+/// modifier parameter b0 (`glazing_angular`). Applied to the terms ([`AngularGlazing::apply`]),
+/// so terms computed afresh need it re-applied.
+pub const GLAZING_ANGULAR_B0: Param = Param {
+    key: "glazing_angular.b0",
+    default: 0.0,
+};
+
+/// The angular transmittance model: ASHRAE's one-parameter incidence-angle modifier (Souka &
+/// Safwat 1966, "Determination of the optimum orientations for the double-exposure, flat-plate
+/// collector and its reflectors", Solar Energy 10(4); ASHRAE Standard 93; pvlib `iam.ashrae`,
+/// b0 = 0.05 for clean glass): IAM(θ) = 1 − b0 (1/cos θ − 1), clamped to [0, 1]. Since
+/// RADIANCE-style glass does not refract, light that reaches a sensor from the sky direction d
+/// crossed the glazing at the angle between d and the glazing's outward normal.
+/// ASHRAE's incidence-angle modifier at cosine of incidence `cos_theta`, clamped to [0, 1];
+/// 0 at or beyond grazing incidence.
+pub fn iam_ashrae(cos_theta: f64, b0: f64) -> f64 {
+    if cos_theta.is_nan() || cos_theta <= 0.0 {
+        return 0.0;
+    }
+    (1.0 - b0 * (1.0 / cos_theta.min(1.0) - 1.0)).clamp(0.0, 1.0)
+}
+
+/// Per bin (sky patches, then mirrored ground patches), the cosine of incidence on glazing
+/// of outward normal `normal_out` of light arriving from the bin's centre.
+pub fn bin_cosines(dc: &DaylightCoefficients, normal_out: DVec3) -> Vec<f64> {
+    let patches = dc.patches();
+    let n = patches.len();
+    (0..2 * n)
+        .map(|b| {
+            let c = patches.centre(b % n);
+            let d = if b < n { c } else { DVec3::new(c.x, c.y, -c.z) };
+            d.dot(normal_out)
+        })
+        .collect()
+}
+
+/// The terms with the glazing's angular transmittance of parameter `b0` applied to every sky
+/// and ground bin and to the sun: `base` must be the terms without it (as
+/// [`crate::model::capture_terms`] computes them).
+pub fn apply_glazing_angular(
+    dc: &DaylightCoefficients,
+    cosines: &[f64],
+    normal_out: DVec3,
+    base: &[Terms],
+    b0: f64,
+) -> Vec<Terms> {
+    let factor: Vec<f64> = cosines.iter().map(|c| iam_ashrae(*c, b0)).collect();
+    let sensors = dc.sensors.len();
+    let n = cosines.len() / 2;
+    base.iter()
+        .map(|t| {
+            let mut out = t.clone();
+            if t.bins_with_sun_cd_m2.len() != cosines.len() {
+                return out;
+            }
+            let apply = |lum: &[f64]| -> Vec<f64> {
+                (0..sensors)
+                    .map(|s| {
+                        dc.row(s)
+                            .iter()
+                            .zip(lum)
+                            .zip(&factor)
+                            .filter(|((_, l), _)| l.is_finite())
+                            .map(|((c, l), f)| c * l * f)
+                            .sum()
+                    })
+                    .collect()
+            };
+            out.sky_with_sun_lux = apply(&t.bins_with_sun_cd_m2);
+            out.sky_without_sun_lux = apply(&t.bins_without_sun_cd_m2);
+            out.unseen_ground_lux_per_cd_m2 = (0..sensors)
+                .map(|s| {
+                    (0..n)
+                        .filter(|&p| !t.bin_seen[n + p])
+                        .map(|p| dc.row(s)[n + p] * factor[n + p])
+                        .sum()
+                })
+                .collect();
+            if let Some(sun) = &t.sun {
+                let f = iam_ashrae(sun.direction.dot(normal_out), b0);
+                for k in &mut out.sun_lux_per_dn_lux {
+                    *k *= f;
+                }
+            }
+            out
+        })
+        .collect()
+}
+
+/// The glazing the effect acts on: the room's daylight coefficients (a copy: the loop keeps
+/// the room mutable), the bins' cosines of incidence and the outward normal.
+pub struct AngularGlazing {
+    pub dc: DaylightCoefficients,
+    pub normal_out: DVec3,
+    pub cosines: Vec<f64>,
+    /// Per sensor, the distance from the glazing plane, m (for the evidence).
+    pub sensor_depth_m: Vec<f64>,
+}
+
+impl AngularGlazing {
+    pub fn new(dc: &DaylightCoefficients, normal_out: DVec3, sensor_depth_m: Vec<f64>) -> Self {
+        Self {
+            dc: dc.clone(),
+            normal_out,
+            cosines: bin_cosines(dc, normal_out),
+            sensor_depth_m,
+        }
+    }
+
+    /// `base` (terms without the effect) with the effect of parameter `b0`.
+    pub fn apply(&self, base: &[Terms], b0: f64) -> Vec<Terms> {
+        apply_glazing_angular(&self.dc, &self.cosines, self.normal_out, base, b0)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -294,5 +412,87 @@ w polygon right 0 0 12 2 0 1  3 0 1  3 0 2  2 0 2
         // The sensors at 1 and 4.7 m from the façade.
         assert!((g.facade_distance_m(DVec3::new(1.45, 1.0, 0.8)) - 1.0).abs() < 1e-12);
         assert!((g.facade_distance_m(DVec3::new(1.45, 4.7, 0.8)) - 4.7).abs() < 1e-12);
+    }
+}
+
+#[cfg(test)]
+mod angular_tests {
+    use super::*;
+    use crate::model::CaptureTerms;
+
+    /// pvlib's `iam.ashrae` at b = 0.05: 60° → 1 − 0.05 (2 − 1) = 0.95; 80° →
+    /// 1 − 0.05 (5.758770 − 1) = 0.7620615; 0 at 90° and beyond; 1 at normal incidence.
+    #[test]
+    fn ashrae_modifier() {
+        let c = |deg: f64| deg.to_radians().cos();
+        assert!((iam_ashrae(c(60.0), 0.05) - 0.95).abs() < 1e-12);
+        assert!((iam_ashrae(c(80.0), 0.05) - 0.7620615).abs() < 1e-6);
+        assert_eq!(iam_ashrae(1.0, 0.3), 1.0);
+        assert_eq!(iam_ashrae(0.0, 0.05), 0.0);
+        assert_eq!(iam_ashrae(-0.5, 0.05), 0.0);
+        assert_eq!(iam_ashrae(f64::NAN, 0.05), 0.0);
+        // Clamped at grazing: 1/cos − 1 > 1/b0.
+        assert_eq!(iam_ashrae(c(89.0), 0.05), 0.0);
+    }
+
+    /// One sensor lit by one sky bin and one unseen ground bin: the applied terms are the
+    /// coefficients times the luminance times the IAM of each bin centre's incidence on a
+    /// south-facing glazing, computed here from the patch centres.
+    #[test]
+    fn bins_are_rescaled_by_their_incidence() {
+        let patches = crate::sky::SkyPatches::reinhart(1);
+        let n = patches.len();
+        let normal = DVec3::new(0.0, -1.0, 0.0);
+        // A southern sky patch and the mirror of another as unseen ground.
+        let sky = (0..n).find(|&p| patches.centre(p).y < -0.5).unwrap();
+        let ground = (0..n).find(|&p| patches.centre(p).y < -0.8).unwrap();
+        let mut coefficients = vec![0.0; 2 * n];
+        coefficients[sky] = 0.3;
+        coefficients[n + ground] = 0.2;
+        let dc = DaylightCoefficients {
+            sensors: vec!["S1".into()],
+            mf: 1,
+            bins: 2 * n,
+            lux_per_cd_m2: coefficients,
+            samples_per_sensor: 1,
+        };
+        let mut lum = vec![1000.0; 2 * n];
+        lum[n + ground] = f64::NAN;
+        let mut seen = vec![true; 2 * n];
+        seen[n + ground] = false;
+        let terms = CaptureTerms {
+            sun: None,
+            sky_with_sun_lux: vec![300.0],
+            sky_without_sun_lux: vec![300.0],
+            sun_lux_per_dn_lux: vec![0.0],
+            sun_dn_lux: 0.0,
+            unseen_ground_lux_per_cd_m2: vec![0.2],
+            outdoor_horizontal_lux: 1.0,
+            unseen_sky_fraction: 0.0,
+            saturated_fraction: 0.0,
+            bins_with_sun_cd_m2: lum.clone(),
+            bins_without_sun_cd_m2: lum,
+            bin_seen: seen,
+        };
+        let b0 = 0.2;
+        let g = AngularGlazing::new(&dc, normal, vec![1.0]);
+        let terms = Terms::new(terms);
+        let out = &g.apply(std::slice::from_ref(&terms), b0)[0];
+        let iam = |d: DVec3| {
+            let cos = -d.y;
+            (1.0 - b0 * (1.0 / cos - 1.0)).clamp(0.0, 1.0)
+        };
+        let c = patches.centre(sky);
+        let expect = 0.3 * 1000.0 * iam(c);
+        assert!(iam(c) < 0.99);
+        assert!((out.sky_without_sun_lux[0] - expect).abs() < 1e-9);
+        assert!((out.sky_with_sun_lux[0] - expect).abs() < 1e-9);
+        let cg = patches.centre(ground);
+        let expect = 0.2 * iam(DVec3::new(cg.x, cg.y, -cg.z));
+        assert!((out.unseen_ground_lux_per_cd_m2[0] - expect).abs() < 1e-12);
+        // b0 = 0 leaves the terms as they were.
+        let same = &g.apply(std::slice::from_ref(&terms), 0.0)[0];
+        assert!((same.sky_without_sun_lux[0] - 300.0).abs() < 1e-9);
+        assert!((same.unseen_ground_lux_per_cd_m2[0] - 0.2).abs() < 1e-12);
     }
 }

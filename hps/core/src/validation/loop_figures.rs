@@ -2,56 +2,11 @@
 //! the published figures) and, for each effect added, the residual against the variable
 //! that revealed it, before and after.
 
-use super::illuminance_loop::{Diagnostic, LoopOutcome};
+use super::diagnostics::Diagnostic;
+use super::effects::registry;
+use super::illuminance_loop::LoopOutcome;
 use crate::output::plot::{grouped_bars_png, scatter_png, BarGroup, Frame, PlotError, Series};
 use std::path::Path;
-
-/// How a plotted variable is read from a diagnostic.
-type Reading = fn(&Diagnostic) -> f64;
-
-/// Which variable reveals an effect, and how to read it from a diagnostic.
-fn revealing_variable(effect: &str) -> Option<(&'static str, Reading)> {
-    Some(match effect {
-        "sun_undersampling" => ("share of direct sun in the model's light", |d| {
-            d.direct_sun_share
-        }),
-        "light_leak" => ("outdoor horizontal illuminance (klx)", |d| {
-            d.outdoor_lux / 1000.0
-        }),
-        "glazing_transmittance" => ("measured illuminance (klx)", |d| d.measured_lux / 1000.0),
-        "ground_reflectance" => ("share of light from the unseen ground", |d| {
-            d.unseen_ground_share
-        }),
-        "orientation_error" => ("sun sighting offset from SPA, declared camera (deg)", |d| {
-            d.sun_offset_deg
-        }),
-        "shutter_overhead" => ("share of direct sun in the model's light", |d| {
-            d.direct_sun_share
-        }),
-        "clock_offset" => (
-            "rate of change of the logged illuminance (relative, per minute)",
-            |d| d.rate_of_change_per_min,
-        ),
-        "spectral_mismatch" => ("sky colour index (blue / red from the raw frames)", |d| {
-            d.sky_colour_index
-        }),
-        // Its signature on the sunlit readings is the solar incidence angle; over all
-        // readings the clearer one is the depth: near the façade the sky is seen through
-        // the glazing at wider angles.
-        "glazing_angular" => ("sensor's distance from the façade (m)", |d| {
-            d.facade_distance_m
-        }),
-        "vignetting" => (
-            "mean off-axis angle of the light reaching the sensor (deg)",
-            |d| d.light_off_axis_deg,
-        ),
-        "sky_outside_fov" => (
-            "unseen sky fraction of the daylight-coefficient weight",
-            |d| d.unseen_sky_fraction,
-        ),
-        _ => return None,
-    })
-}
 
 /// Writes the figures into `dir` and returns their file names (relative to `dir`).
 pub fn write_loop_figures(dir: &Path, outcome: &LoopOutcome) -> Result<Vec<String>, PlotError> {
@@ -92,7 +47,8 @@ pub fn write_loop_figures(dir: &Path, outcome: &LoopOutcome) -> Result<Vec<Strin
     )?;
     names.push(name);
     for e in &r.effects {
-        let Some((variable, value)) = revealing_variable(&e.name) else {
+        let revealing = registry::find(&e.name).and_then(|x| x.revealing_variable());
+        let Some((variable, value)) = revealing else {
             continue;
         };
         let series = |label: &str, residual: fn(&Diagnostic) -> f64| Series {

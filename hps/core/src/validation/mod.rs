@@ -3,16 +3,18 @@
 //! held-out data.
 
 pub mod closure;
-pub mod device_model;
-pub mod effect_fov;
-pub mod effect_glazing_angular;
-pub mod effect_spectral;
-pub mod effect_vignetting;
+pub mod diagnostics;
 pub mod effects;
 pub mod glazing;
 pub mod illuminance_loop;
 pub mod loop_figures;
+pub mod perez_baseline;
+pub mod prediction;
 pub mod pyranometer_effects;
 pub mod report;
+pub mod sample;
+pub mod scoring;
 pub mod sky_colour;
+pub mod sky_geometry;
 pub mod split;
+pub mod terms;

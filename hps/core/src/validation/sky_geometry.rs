@@ -1,28 +1,43 @@
-//! Effects on the measured sky itself: the lens's relative illumination steeper than the
-//! declared polynomial (`vignetting`, here) and the sky beyond a clipped field of view
-//! (`sky_outside_fov`, [`super::effect_fov`]). Both rescale the per-bin luminances the map
-//! gives ([`CaptureTerms::bins_with_sun_cd_m2`]) and re-apply the daylight coefficients, so a
-//! trial parameter costs a few dot products per capture.
+//! Where the map's light came from in the camera, per capture, and the sky effects that act
+//! on it: the lens's relative illumination steeper than declared (`vignetting`) and the sky
+//! beyond a clipped field of view (`sky_outside_fov`). Both rescale the per-bin luminances the
+//! map gives ([`CaptureTerms::bins_with_sun_cd_m2`]) and re-apply the daylight coefficients
+//! in one pass ([`correct_terms`]), so a trial parameter costs a few dot products per
+//! capture; their parameters are declared here, with that pass.
 //!
-//! Vignetting model: the true relative illumination is the declared V(α) times
-//! `1 − v (α / 90°)²`, the leading term of the even radial polynomial 1 + a₂ r² + … that
-//! models a lens's fall-off (Goldman, "Vignette and exposure calibration and compensation",
-//! IEEE TPAMI 32(12), 2010), with the equidistant fisheye's image radius proportional to α.
-//! The map under-reads a group at α by that factor; the model divides each bin's luminance
-//! by the solid-angle-weighted mean factor of the groups that measured it (linear in v, so
-//! the mean of (α/90°)² per bin is computed once), the sun's direct-normal illuminance by
-//! the factor at the sun's off-axis angle, and re-fills the unseen sky from the corrected
-//! seen sky as [`SkyPatches::aggregate`] fills it.
+//! Vignetting: the true relative illumination is the declared V(α) times `1 − v (α / 90°)²`;
+//! the map under-reads a group at α by that factor, so each bin's luminance is divided by the
+//! solid-angle-weighted mean factor of the groups that measured it (linear in v, so the mean
+//! of (α/90°)² per bin is computed once), the sun's direct-normal illuminance by the factor
+//! at the sun, and the unseen sky re-filled from the corrected seen sky as
+//! [`SkyPatches::aggregate`] fills it. The field of view: the unseen sky patches' filled
+//! luminance times a factor k, and a sun beyond the shown field taken from the pyranometer.
 
-use super::device_model::{CaptureData, CaptureTerms, ModelState};
-use super::effects::{fit_error, pearson_r, residual_points, Candidate, Effect, Sample};
-use super::split::FitSet;
+use super::prediction::{LoopState, Param};
+use super::sample::nearest_in_time;
+use super::terms::Terms;
 use crate::camera::{CameraModel, DeviceConfig};
+use crate::campaign::Campaign;
 use crate::engine::DaylightCoefficients;
 use crate::hdr::{GeometryCache, MapFlag};
+use crate::model::{CaptureData, CaptureTerms, ModelError, Room};
+use crate::sky::perez::{PerezConditions, PerezSky};
 use crate::sky::SkyPatches;
+use chrono::{Datelike, TimeDelta};
 use glam::DVec3;
-use std::collections::BTreeMap;
+
+/// Extra vignetting v: the true relative illumination is the declared one times
+/// 1 − v (α/90°)² (`vignetting`).
+pub const EXTRA_VIGNETTING: Param = Param {
+    key: "vignetting.extra_vignetting",
+    default: 0.0,
+};
+/// The factor on the extrapolated luminance of the sky patches the lens did not see; set, it
+/// also fills the sun beyond the maps' field from the pyranometer (`sky_outside_fov`).
+pub const UNSEEN_SKY_FACTOR: Param = Param {
+    key: "sky_outside_fov.unseen_sky_factor",
+    default: 1.0,
+};
 
 /// `(α / 90°)²`: the variable the extra vignetting is linear in.
 fn radial2(off_axis_rad: f64) -> f64 {
@@ -35,9 +50,14 @@ fn factor(v: f64, a: f64) -> f64 {
     (1.0 - v * a).max(0.05)
 }
 
-/// A sun beyond the maps' field: per sensor, lux per lux of direct-normal illuminance, and
-/// the reference direct-normal illuminance, lux.
-pub type HiddenSun = (Vec<f64>, f64);
+/// A sun beyond the maps' field, taken from the pyranometer.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HiddenSun {
+    /// Per sensor, lux per lux of direct-normal illuminance.
+    pub lux_per_dn_lux: Vec<f64>,
+    /// The pyranometer's direct-normal illuminance, lux.
+    pub dn_lux: f64,
+}
 
 /// Per capture, where the map's light came from in the camera: what the sky effects need
 /// beyond [`CaptureTerms`].
@@ -60,16 +80,29 @@ pub struct SkyGeometry {
     pub sun_off_axis_deg: Vec<f64>,
     /// Per capture, a sun the declared lens would image but the maps' field does not show:
     /// its lux per lux of direct-normal illuminance per sensor and the pyranometer's
-    /// direct-normal illuminance, lux ([`super::effect_fov::hidden_suns`]; empty until set).
+    /// direct-normal illuminance, lux ([`hidden_suns`]; empty until set).
     pub hidden_sun: Vec<Option<HiddenSun>>,
 }
 
 impl SkyGeometry {
+    /// No captures yet.
+    pub fn empty() -> Self {
+        Self {
+            bin_radial2: Vec::new(),
+            sun_radial2: Vec::new(),
+            shown_fov_deg: Vec::new(),
+            lens_fov_deg: 0.0,
+            bin_off_axis_deg: Vec::new(),
+            sun_off_axis_deg: Vec::new(),
+            hidden_sun: Vec::new(),
+        }
+    }
+
     /// Computes the geometry of every capture under the camera `device`.
     pub fn new(
         patches: &SkyPatches,
         captures: &[CaptureData],
-        terms: &[CaptureTerms],
+        terms: &[Terms],
         device: &DeviceConfig,
     ) -> Self {
         let camera = CameraModel::new(device.clone());
@@ -170,25 +203,26 @@ fn refill(patches: &SkyPatches, lum: &mut [f64], seen: &[bool]) {
 /// scaled by the unseen-sky factor, the sun's direct-normal illuminance divided by the extra
 /// vignetting at the sun, and the daylight coefficients re-applied.
 pub fn correct_capture(
-    raw: &CaptureTerms,
+    raw: &Terms,
     dc: &DaylightCoefficients,
     patches: &SkyPatches,
     bin_radial2: &[f64],
     sun_radial2: f64,
     hidden_sun: Option<&HiddenSun>,
-    state: &ModelState,
-) -> CaptureTerms {
+    state: &LoopState,
+) -> Terms {
+    let unseen_sky_factor = state.value(UNSEEN_SKY_FACTOR);
     let (v, k) = (
-        state.extra_vignetting,
-        state.unseen_sky_factor.unwrap_or(1.0),
+        state.get(EXTRA_VIGNETTING),
+        unseen_sky_factor.unwrap_or(1.0),
     );
     let mut out = raw.clone();
-    if v == 0.0 && state.unseen_sky_factor.is_none() {
+    if v == 0.0 && unseen_sky_factor.is_none() {
         return out;
     }
-    if let (Some((per_dn, dn)), Some(_), None) = (hidden_sun, state.unseen_sky_factor, &raw.sun) {
-        out.sun_lux_per_dn_lux = per_dn.clone();
-        out.sun_dn_lux = *dn;
+    if let (Some(hidden), Some(_), None) = (hidden_sun, unseen_sky_factor, &raw.sun) {
+        out.sun_lux_per_dn_lux = hidden.lux_per_dn_lux.clone();
+        out.sun_dn_lux = hidden.dn_lux;
     }
     let n = patches.len();
     let fix = |lum: &[f64]| -> Vec<f64> {
@@ -226,11 +260,11 @@ pub fn correct_capture(
 
 /// [`correct_capture`] for every capture.
 pub fn correct_terms(
-    raw: &[CaptureTerms],
+    raw: &[Terms],
     dc: &DaylightCoefficients,
     geometry: &SkyGeometry,
-    state: &ModelState,
-) -> Vec<CaptureTerms> {
+    state: &LoopState,
+) -> Vec<Terms> {
     let patches = dc.patches();
     raw.iter()
         .enumerate()
@@ -282,77 +316,73 @@ pub fn light_off_axis_deg(
         .collect()
 }
 
-/// Golden-section minimum of `f` on [a, b] after a scan of `steps` + 1 points.
-pub fn minimise_1d(f: &dyn Fn(f64) -> f64, a: f64, b: f64, steps: usize) -> (f64, f64) {
-    let h = (b - a) / steps as f64;
-    let mut best = (a, f(a));
-    for i in 1..=steps {
-        let x = a + h * i as f64;
-        let e = f(x);
-        if e < best.1 {
-            best = (x, e);
-        }
-    }
-    let (lo, hi) = ((best.0 - h).max(a), (best.0 + h).min(b));
-    crate::numerics::golden_section(lo, hi, best, 30, f)
-}
-
-/// Largest extra vignetting the fit considers.
-pub const MAX_EXTRA_VIGNETTING: f64 = 0.9;
-
-/// Fits the extra vignetting v on the fit set: the fit-set error of the terms corrected for
-/// each trial v, minimised over [0, [`MAX_EXTRA_VIGNETTING`]]. `None` if the best v is under
-/// 0.01 above the current one. Returns the candidate and its corrected terms.
-pub fn fit_vignetting(
-    state: &ModelState,
-    raw: &[CaptureTerms],
-    dc: &DaylightCoefficients,
+/// Per capture, the sun the declared lens would image (onto the readout) but the maps'
+/// field does not show (SPA off-axis angle beyond the capture's shown field of view) and the
+/// map did not give: per sensor its lux per lux of direct-normal illuminance and the
+/// pyranometer's direct-normal illuminance (nearest row within 5 min), lux. `None` where the
+/// sun was extracted, is below the horizon, is within the shown field, lies outside the
+/// readout, or no pyranometer row gives a beam.
+pub fn hidden_suns(
+    campaign: &Campaign,
+    room: &mut Room,
+    captures: &[CaptureData],
+    terms: &[Terms],
+    device: &DeviceConfig,
     geometry: &SkyGeometry,
-    fit: &FitSet<Sample>,
-) -> Option<(Candidate, Vec<CaptureTerms>)> {
-    let error = |v: f64| {
-        let st = ModelState {
-            extra_vignetting: v,
-            ..state.clone()
-        };
-        let e = fit_error(&st, &correct_terms(raw, dc, geometry, &st), fit);
-        if e.is_finite() {
-            e
-        } else {
-            f64::INFINITY
+) -> Result<Vec<Option<HiddenSun>>, ModelError> {
+    let camera = CameraModel::new(device.clone());
+    let mut out = Vec::with_capacity(captures.len());
+    for (i, c) in captures.iter().enumerate() {
+        let shown = geometry.shown_fov_deg.get(i).copied().unwrap_or(f64::NAN);
+        let alpha = camera.off_axis_rad(c.spa_sun).to_degrees();
+        let on_readout = camera.project(c.spa_sun).is_some_and(|p| {
+            let (x0, y0) = (
+                f64::from(c.readout.col_start),
+                f64::from(c.readout.row_start),
+            );
+            let skip = f64::from(c.readout.skip.max(1));
+            p.x_px >= x0
+                && p.y_px >= y0
+                && p.x_px < x0 + skip * c.raw_width as f64
+                && p.y_px < y0 + skip * c.raw_height as f64
+        });
+        if terms[i].sun.is_some()
+            || c.spa_sun.z <= 0.0
+            || !on_readout
+            || alpha.partial_cmp(&(shown + 0.5)) != Some(std::cmp::Ordering::Greater)
+        {
+            out.push(None);
+            continue;
         }
-    };
-    let (v, _) = minimise_1d(&error, 0.0, MAX_EXTRA_VIGNETTING, 18);
-    if v < state.extra_vignetting + 0.01 {
-        return None;
+        let Some(dn) = reference_direct_normal_lux(campaign, c) else {
+            out.push(None);
+            continue;
+        };
+        let k = room.sun_coefficients(c.spa_sun)?;
+        out.push(Some(HiddenSun {
+            lux_per_dn_lux: k.into_iter().map(|(c, _)| c).collect(),
+            dn_lux: dn,
+        }));
     }
-    let next = ModelState {
-        extra_vignetting: v,
-        ..state.clone()
-    };
-    // Signature: the relative residual grows (negative: under-read) with the off-axis angle
-    // of the light reaching the sensor.
-    let current = correct_terms(raw, dc, geometry, state);
-    let xy = residual_points(state, &current, fit, |capture, t| {
-        light_off_axis_deg(t, dc, geometry, capture)
-    });
-    let r = pearson_r(&xy);
-    let mut parameters = BTreeMap::new();
-    parameters.insert("extra_vignetting".into(), v);
-    let evidence = format!(
-        "the relative residual falls as the light reaching the sensors comes from further \
-         off the lens's axis (r = {r:.2} over {} readings against its mean off-axis angle): \
-         the lens's fall-off is steeper than the declared polynomial, by 1 − {v:.3} (α/90°)²",
-        xy.len()
-    );
-    let terms = correct_terms(raw, dc, geometry, &next);
-    Some((
-        Candidate {
-            effect: Effect::Vignetting,
-            state: next,
-            parameters,
-            evidence,
-        },
-        terms,
-    ))
+    Ok(out)
 }
+
+/// The pyranometer's direct-normal illuminance at a capture, lux: its DNI (or GHI and DHI)
+/// through the Perez 1990 model as gendaylit converts (the loop's Perez baseline).
+fn reference_direct_normal_lux(campaign: &Campaign, c: &CaptureData) -> Option<f64> {
+    let table = campaign.pyranometer.as_ref()?;
+    let row = nearest_in_time(&table.rows, TimeDelta::minutes(5), |r| r.time - c.time)?;
+    let input = row.perez_input()?;
+    let conditions = PerezConditions {
+        day_of_year: c.time.ordinal() as u16,
+        ..PerezConditions::gendaylit_ang(c.spa_sun)
+    };
+    let dn = PerezSky::new(input, &conditions)
+        .ok()?
+        .direct_normal_illuminance_lux();
+    (dn.is_finite() && dn > 0.0).then_some(dn)
+}
+
+/// The maps must show a field at least this much narrower than the declared lens images,
+/// degrees, for the effect to be considered (a group at skip 4 spans some 0.4°).
+pub const MIN_CLIPPED_DEG: f64 = 2.0;

@@ -1,0 +1,239 @@
+//! The model's illuminance per capture, decomposed into terms computed once: daylight
+//! coefficients of the room times the measured sky (and seen ground) patches, the sun as a
+//! concentrated source, and the unseen ground. What is expensive (sun extraction, daylight and
+//! sun coefficients) is done here once per capture and camera orientation; a change of the
+//! model's parameters then only rescales or adds terms.
+
+use super::captures::CaptureData;
+use super::error::ModelError;
+use super::room::Room;
+use crate::camera::{CameraModel, DeviceConfig};
+use crate::hdr::{GeometryCache, GroupGeometry, LuminanceMap, MapFlag};
+use crate::sky::SkyPatches;
+use crate::sun::{extract_sun, remove_sun, ExtractedSun, SunSearch};
+use glam::DVec3;
+
+/// Minimum fraction of a patch's solid angle the lens must see for the patch to count as
+/// measured.
+pub const MIN_COVERAGE: f64 = 0.3;
+
+/// Per capture, what the model derives from the map under one camera orientation.
+#[derive(Clone, Debug)]
+pub struct CaptureTerms {
+    /// The sun, if the map shows one.
+    pub sun: Option<ExtractedSun>,
+    /// Illuminance per sensor from the measured sky and the seen ground, with the sun left
+    /// inside the map's patches (spread over its patch: the undersampled sun).
+    pub sky_with_sun_lux: Vec<f64>,
+    /// The same with the sun disk removed and filled from the circumsolar sky.
+    pub sky_without_sun_lux: Vec<f64>,
+    /// Per sensor, lux per lux of direct-normal illuminance, for the extracted sun's
+    /// direction (0 without a sun).
+    pub sun_lux_per_dn_lux: Vec<f64>,
+    /// Direct-normal illuminance of the extracted sun, lux (0 without a sun).
+    pub sun_dn_lux: f64,
+    /// Per sensor, lux per cd/m² of the ground the lens does not see.
+    pub unseen_ground_lux_per_cd_m2: Vec<f64>,
+    /// Outdoor horizontal illuminance the map implies, lux.
+    pub outdoor_horizontal_lux: f64,
+    /// Fraction of the sky's daylight-coefficient weight (sensor-averaged) that falls on
+    /// patches the lens did not see.
+    pub unseen_sky_fraction: f64,
+    /// Fraction of valid groups over-range.
+    pub saturated_fraction: f64,
+    /// Per bin (sky patches, then mirrored ground patches: the daylight coefficients'
+    /// order), the map's luminance with the sun left in, cd/m²: unseen sky patches filled as
+    /// [`SkyPatches::aggregate`] fills them, unseen ground NaN. What effects acting on the
+    /// measured sky itself (vignetting, the field of view, the glazing's angular
+    /// transmittance) rescale before the daylight coefficients apply.
+    pub bins_with_sun_cd_m2: Vec<f64>,
+    /// The same with the sun disk removed and filled from the circumsolar sky.
+    pub bins_without_sun_cd_m2: Vec<f64>,
+    /// Per bin, whether the lens saw at least `MIN_COVERAGE` of it.
+    pub bin_seen: Vec<bool>,
+}
+
+/// Sky and ground bin luminances of a map (sky patches then mirrored ground patches, as the
+/// daylight coefficients order them); unseen ground bins are NaN. Returns also the outdoor
+/// horizontal illuminance of the sky part.
+fn bins(
+    patches: &SkyPatches,
+    map: &LuminanceMap,
+    geometry: &GroupGeometry,
+) -> (Vec<f64>, Vec<bool>, f64) {
+    let n = patches.len();
+    let sky = patches.aggregate(
+        map,
+        &geometry.direction,
+        &geometry.solid_angle_sr,
+        MIN_COVERAGE,
+    );
+    let (mut sum, mut omega) = (vec![0.0f64; n], vec![0.0f64; n]);
+    for i in 0..map.luminance_cd_m2.len() {
+        let d = geometry.direction[i];
+        if map.flags[i] != MapFlag::Valid || !d.is_finite() || d.z >= 0.0 {
+            continue;
+        }
+        let d = d.as_dvec3();
+        if let Some(p) = patches.patch_of(DVec3::new(d.x, d.y, -d.z)) {
+            let w = geometry.solid_angle_sr[i] as f64;
+            sum[p] += w * map.luminance_cd_m2[i] as f64;
+            omega[p] += w;
+        }
+    }
+    let mut lum = sky.luminance_cd_m2.clone();
+    let mut seen = vec![true; 2 * n];
+    for &p in &sky.filled {
+        seen[p] = false;
+    }
+    for p in 0..n {
+        if omega[p] >= MIN_COVERAGE * patches.solid_angle_sr(p) {
+            lum.push(sum[p] / omega[p]);
+        } else {
+            lum.push(f64::NAN);
+            seen[n + p] = false;
+        }
+    }
+    let horizontal: f64 = (0..n)
+        .map(|p| {
+            let c = patches.centre(p);
+            let l = sky.luminance_cd_m2[p];
+            if l.is_finite() {
+                l * c.z * patches.solid_angle_sr(p)
+            } else {
+                0.0
+            }
+        })
+        .sum();
+    (lum, seen, horizontal)
+}
+
+/// Computes the terms of every capture for the camera `device` (its orientation is what the
+/// orientation effect changes).
+pub fn capture_terms(
+    room: &mut Room,
+    captures: &[CaptureData],
+    device: &DeviceConfig,
+    progress: &dyn Fn(usize, usize),
+) -> Result<Vec<CaptureTerms>, ModelError> {
+    let camera = CameraModel::new(device.clone());
+    let patches = room.dc.patches();
+    let mut out = Vec::with_capacity(captures.len());
+    // Captures of one campaign share a readout: compute the geometry once per readout.
+    let mut geometries = GeometryCache::default();
+    for (k, c) in captures.iter().enumerate() {
+        progress(k, captures.len());
+        let geometry = geometries.get(&camera, &c.readout, c.raw_width, c.raw_height);
+        out.push(terms_of(room, &patches, c, geometry)?);
+    }
+    Ok(out)
+}
+
+/// One capture's terms: the sun extracted from the map, the bins with and without it, and
+/// the daylight and sun coefficients applied.
+fn terms_of(
+    room: &mut Room,
+    patches: &SkyPatches,
+    c: &CaptureData,
+    geometry: &GroupGeometry,
+) -> Result<CaptureTerms, ModelError> {
+    let sensors = room.sensors.len();
+    let search = SunSearch {
+        predicted_direction: Some(c.spa_sun),
+        max_offset_deg: 12.0,
+        ..Default::default()
+    };
+    let sun = if c.spa_sun.z > 0.0 {
+        extract_sun(&c.map, geometry, &search)
+            .ok()
+            .filter(|s| s.direct_normal_illuminance_lux.is_finite())
+    } else {
+        None
+    };
+    let (with_sun, seen, horizontal_map) = bins(patches, &c.map, geometry);
+    // With a sun extracted, the outdoor horizontal illuminance is the sky without the
+    // disk plus the disk's direct beam (the disk itself may be over-range in the map).
+    let (without_sun, horizontal) = match &sun {
+        Some(s) => {
+            let (b, _, h) = bins(patches, &remove_sun(&c.map, s), geometry);
+            (
+                b,
+                h + s.direct_normal_illuminance_lux * s.direction.z.max(0.0),
+            )
+        }
+        None => (with_sun.clone(), horizontal_map),
+    };
+    let (unseen_ground, unseen_sky_fraction) = unseen_weights(room, &seen);
+    let (sun_lux_per_dn_lux, sun_dn_lux) = match &sun {
+        Some(s) => {
+            let k = room.sun_coefficients(s.direction)?;
+            (
+                k.into_iter().map(|(c, _)| c).collect(),
+                s.direct_normal_illuminance_lux,
+            )
+        }
+        None => (vec![0.0; sensors], 0.0),
+    };
+    Ok(CaptureTerms {
+        sky_with_sun_lux: room.dc.apply_seen(&with_sun),
+        sky_without_sun_lux: room.dc.apply_seen(&without_sun),
+        sun_lux_per_dn_lux,
+        sun_dn_lux,
+        unseen_ground_lux_per_cd_m2: unseen_ground,
+        outdoor_horizontal_lux: horizontal,
+        unseen_sky_fraction,
+        saturated_fraction: saturated_fraction(&c.map),
+        sun,
+        bins_with_sun_cd_m2: with_sun,
+        bins_without_sun_cd_m2: without_sun,
+        bin_seen: seen,
+    })
+}
+
+/// Per sensor, the daylight coefficients of the ground bins the lens did not see (lux per
+/// cd/m²), and the fraction of the sky's coefficient weight (summed over sensors) on sky
+/// patches it did not see.
+fn unseen_weights(room: &Room, seen: &[bool]) -> (Vec<f64>, f64) {
+    let n = seen.len() / 2;
+    let sensors = room.sensors.len();
+    let unseen_ground: Vec<f64> = (0..sensors)
+        .map(|s| {
+            (0..n)
+                .filter(|&p| !seen[n + p])
+                .map(|p| room.dc.row(s)[n + p])
+                .sum()
+        })
+        .collect();
+    let (sky_weight, unseen_weight) = (0..sensors).fold((0.0, 0.0), |(a, b), s| {
+        let row = room.dc.row(s);
+        (
+            a + row[..n].iter().sum::<f64>(),
+            b + (0..n).filter(|&p| !seen[p]).map(|p| row[p]).sum::<f64>(),
+        )
+    });
+    let fraction = if sky_weight > 0.0 {
+        unseen_weight / sky_weight
+    } else {
+        0.0
+    };
+    (unseen_ground, fraction)
+}
+
+/// Fraction of the map's valid (not under-range) groups that are over-range.
+fn saturated_fraction(map: &LuminanceMap) -> f64 {
+    let valid = map
+        .flags
+        .iter()
+        .filter(|f| **f != MapFlag::UnderRange)
+        .count();
+    let over = map
+        .flags
+        .iter()
+        .filter(|f| **f == MapFlag::OverRange)
+        .count();
+    if valid > 0 {
+        over as f64 / valid as f64
+    } else {
+        0.0
+    }
+}
