@@ -12,7 +12,6 @@ pub mod effects;
 pub mod glazing;
 pub mod illuminance_loop;
 pub mod loop_figures;
-pub mod pyranometer_effects;
 pub mod report;
 pub mod sky_colour;
 pub mod split;
