@@ -26,6 +26,7 @@ use skylux_hps::fpga::sensor::SensorConfig;
 use skylux_hps::hdr::merge;
 use skylux_hps::timing::median_ms;
 use skylux_regmap::descriptor::{self, Descriptor};
+use skylux_regmap::words::raw;
 
 /// One core here against one Cortex-A9 core of the DE1-SoC (issue 8: "roughly ten times").
 pub const A9_SLOWDOWN: f64 = 10.0;
@@ -141,8 +142,7 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
             };
             assert!(c.is_good());
             for (pair, w) in samples.chunks_exact_mut(2).zip(&c.words) {
-                pair[0] = (w & 0xFFF) as u16;
-                pair[1] = ((w >> 16) & 0xFFF) as u16;
+                pair.copy_from_slice(&raw::samples(*w));
             }
         }
     });

@@ -33,6 +33,7 @@ use skylux_hps::fpga::sensor::{reg, I2cTiming, SensorConfig, SensorError};
 use skylux_hps::fpga::sequence::{SequenceError, ShieldConfig};
 use skylux_hps::fpga::shield_plan::{plan_openings, OpeningCost};
 use skylux_hps::fpga::{CaptureConfig as RingConfig, ExposureSlot, Fabric, MAX_EXPOSURES};
+use skylux_regmap::words::raw;
 use std::ops::Range;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
@@ -526,10 +527,8 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                     c.words.len()
                 )));
             }
-            // Raw word: even column in [11:0], odd column in [27:16] (ARCHITECTURE.md).
             for (pair, word) in samples_dn.chunks_exact_mut(2).zip(&c.words) {
-                pair[0] = (word & 0xFFF) as u16;
-                pair[1] = ((word >> 16) & 0xFFF) as u16;
+                pair.copy_from_slice(&raw::samples(*word));
             }
         }
         Ok((
