@@ -10,8 +10,8 @@ use skylux_regmap::{LW_BRIDGE_PHYS_BASE, LW_BRIDGE_SPAN_BYTES};
 use std::net::SocketAddr;
 use std::path::{Path, PathBuf};
 
-/// The API address when the config names none: loopback only (issue 8, "bound to 127.0.0.1
-/// by default"); port 8740 is a project choice.
+/// The API address when the config names none: loopback only (the specification: "bound to
+/// 127.0.0.1 by default"); port 8740 is a project choice.
 pub const DEFAULT_API_ADDRESS: &str = "127.0.0.1:8740";
 
 /// The DMA buffers' physical region: the `reserved-memory` node with `no-map` of

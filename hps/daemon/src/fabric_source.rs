@@ -32,7 +32,9 @@ use skylux_hps::fpga::frames::CapturedFrame;
 use skylux_hps::fpga::sensor::{reg, I2cTiming, SensorConfig, SensorError};
 use skylux_hps::fpga::sequence::{SequenceError, ShieldConfig};
 use skylux_hps::fpga::shield_plan::{plan_openings, OpeningCost};
-use skylux_hps::fpga::{CaptureConfig as RingConfig, ExposureSlot, Fabric, MAX_EXPOSURES};
+use skylux_hps::fpga::{
+    CaptureConfig as RingConfig, CaptureFaults, ExposureSlot, Fabric, MAX_EXPOSURES,
+};
 use skylux_regmap::words::raw;
 use std::ops::Range;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -333,6 +335,20 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
     }
 
     fn take(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
+        self.configure()?;
+        self.run_openings()?;
+        let faults = self.take_faults()?;
+        let (frames, frame_flags) = self.read_frames(&faults)?;
+        Ok(CaptureSet {
+            time: at,
+            config: self.capture_config(at),
+            frames,
+            frame_flags,
+        })
+    }
+
+    /// Sensor out of reset and configured for the first exposure, capture path and shield.
+    fn configure(&mut self) -> Result<(), SourceError> {
         let s = &self.settings;
         let f = &mut self.fabric;
         f.sensor_bus_setup(s.i2c)
@@ -356,8 +372,13 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
             .map_err(|e| SourceError::Other(format!("capture path: {e}")))?;
         f.configure_shield(&s.shield)
             .map_err(|e| SourceError::Other(format!("shield: {e}")))?;
+        Ok(())
+    }
+
+    /// One exposure sequence per shield opening, each waited for until its frames are in.
+    fn run_openings(&mut self) -> Result<(), SourceError> {
         let expected = self.plan.slots.len();
-        let clock = f64::from(f.info().sys_clock_hz.max(1));
+        let clock = f64::from(self.fabric.info().sys_clock_hz.max(1));
         let mut received = 0usize;
         for (opening, range) in self.plan.openings.clone().iter().enumerate() {
             let f = &mut self.fabric;
@@ -410,6 +431,11 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                 Err(e) => return Err(SourceError::Other(format!("frame wait: {e}"))),
             }
         }
+        Ok(())
+    }
+
+    /// The capture path's sticky faults; a DMA bus timeout fails the capture.
+    fn take_faults(&mut self) -> Result<CaptureFaults, SourceError> {
         let faults = self
             .fabric
             .capture_take_faults()
@@ -422,6 +448,15 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                     .into(),
             ));
         }
+        Ok(faults)
+    }
+
+    /// Every slot of the capture as a frame, with its flags.
+    fn read_frames(
+        &mut self,
+        faults: &CaptureFaults,
+    ) -> Result<(Vec<RawFrame>, Vec<Vec<String>>), SourceError> {
+        let expected = self.plan.slots.len();
         let mut frames = Vec::with_capacity(expected);
         let mut frame_flags = Vec::with_capacity(expected);
         // Slot k holds exposure k (the ring restarts at slot 0 with each capture); its
@@ -452,7 +487,12 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
         if faults.any() && frame_flags.iter().all(Vec::is_empty) {
             frame_flags[0].push(format!("CAPTURE_STATUS {faults:?}"));
         }
-        let config = CaptureConfig {
+        Ok((frames, frame_flags))
+    }
+
+    /// `capture.toml` of the capture taken at `at`.
+    fn capture_config(&self, at: DateTime<FixedOffset>) -> CaptureConfig {
+        CaptureConfig {
             time: at.to_rfc3339(),
             bayer: bayer_of(&self.settings.sensor),
             sensor_temperature_c: None,
@@ -481,13 +521,7 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                     offset_ms: 0.0,
                 })
                 .collect(),
-        };
-        Ok(CaptureSet {
-            time: at,
-            config,
-            frames,
-            frame_flags,
-        })
+        }
     }
 
     /// A raw-mode slot as samples, with its flags (descriptor flags, a bad checksum, a frame

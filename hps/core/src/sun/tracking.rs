@@ -278,28 +278,7 @@ pub fn track_capture(
     let sun = match extract_sun(&merged.map, &merged.geometry, &search) {
         Ok(sun) => sun,
         Err(reason) => {
-            track.no_sun = Some(no_sun_tag(&reason));
-            track.note = Some(reason.to_string());
-            // Nothing bright, and SPA's sun is off the imaged field: it is out of view, not
-            // hidden (the extraction only knows there is no imaged group near it when none is
-            // within its search radius).
-            if matches!(reason, NoSun::BelowThreshold { .. }) {
-                let cos_nearest = merged
-                    .geometry
-                    .direction
-                    .iter()
-                    .filter(|d| d.is_finite())
-                    .map(|d| d.as_dvec3().dot(spa))
-                    .fold(-1.0f64, f64::max);
-                let nearest_deg = cos_nearest.clamp(-1.0, 1.0).acos().to_degrees();
-                if nearest_deg > OUT_OF_VIEW_DEG {
-                    track.no_sun = Some("outside_field_of_view");
-                    track.note = Some(format!(
-                        "{reason}; SPA's sun is {nearest_deg:.1} deg from the nearest imaged \
-                         group (declared camera): outside the field of view"
-                    ));
-                }
-            }
+            record_no_sun(&mut track, &reason, &merged.geometry.direction, spa);
             return Ok(track);
         }
     };
@@ -308,32 +287,60 @@ pub fn track_capture(
     track.image_point = camera.project(sun.direction);
     track.flags = sun.flags.clone();
     if sun.flags.contains(&SunFlag::Saturated) {
-        match &track.pyranometer {
-            Some(p) if p.dni_lux > 0.0 => {
-                track.dni_lux = Some(p.dni_lux);
-                track.disk_luminance_cd_m2 = Some(p.dni_lux / SOLAR_DISK_SR);
-                track.dni_source = DniSource::Pyranometer;
-            }
-            Some(p) => {
-                track.note = Some(format!(
-                    "the disk is saturated but the pyranometer's DNI is {:.1} W/m2: no DNI",
-                    p.dni_w_m2
-                ));
-            }
-            None => {
-                track.note = Some(
-                    "the disk is saturated even in the shortest exposure and no pyranometer \
-                     DNI matches this time: no DNI"
-                        .into(),
-                );
-            }
-        }
+        take_pyranometer_dni(&mut track);
     } else if sun.direct_normal_illuminance_lux.is_finite() {
         track.dni_lux = Some(sun.direct_normal_illuminance_lux);
         track.disk_luminance_cd_m2 = Some(sun.disk_luminance_cd_m2);
         track.dni_source = DniSource::Map;
     }
     Ok(track)
+}
+
+/// Why no sun was found. Nothing bright, and SPA's sun off the imaged field (`directions`,
+/// per group): it is out of view, not hidden (the extraction only knows there is no imaged
+/// group near it when none is within its search radius).
+fn record_no_sun(track: &mut SunTrack, reason: &NoSun, directions: &[glam::Vec3], spa: DVec3) {
+    track.no_sun = Some(no_sun_tag(reason));
+    track.note = Some(reason.to_string());
+    if matches!(reason, NoSun::BelowThreshold { .. }) {
+        let cos_nearest = directions
+            .iter()
+            .filter(|d| d.is_finite())
+            .map(|d| d.as_dvec3().dot(spa))
+            .fold(-1.0f64, f64::max);
+        let nearest_deg = cos_nearest.clamp(-1.0, 1.0).acos().to_degrees();
+        if nearest_deg > OUT_OF_VIEW_DEG {
+            track.no_sun = Some("outside_field_of_view");
+            track.note = Some(format!(
+                "{reason}; SPA's sun is {nearest_deg:.1} deg from the nearest imaged \
+                 group (declared camera): outside the field of view"
+            ));
+        }
+    }
+}
+
+/// A disk saturated even in the shortest exposure: the pyranometer's DNI where there is one.
+fn take_pyranometer_dni(track: &mut SunTrack) {
+    match &track.pyranometer {
+        Some(p) if p.dni_lux > 0.0 => {
+            track.dni_lux = Some(p.dni_lux);
+            track.disk_luminance_cd_m2 = Some(p.dni_lux / SOLAR_DISK_SR);
+            track.dni_source = DniSource::Pyranometer;
+        }
+        Some(p) => {
+            track.note = Some(format!(
+                "the disk is saturated but the pyranometer's DNI is {:.1} W/m2: no DNI",
+                p.dni_w_m2
+            ));
+        }
+        None => {
+            track.note = Some(
+                "the disk is saturated even in the shortest exposure and no pyranometer \
+                 DNI matches this time: no DNI"
+                    .into(),
+            );
+        }
+    }
 }
 
 /// Tracks the sun in every capture of the campaign; `progress(done, total)`.
