@@ -1,7 +1,7 @@
 //! The TOML files Skylux reads (`device.toml`, `capture.toml`, `campaign.toml`): one error
 //! type for all of them, every message naming the file, and the line or the field.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Why a TOML file could not be used.
 #[derive(Debug, thiserror::Error)]
@@ -24,6 +24,14 @@ pub enum TomlFileError {
 }
 
 impl TomlFileError {
+    /// The file's text, or the error naming it.
+    pub(crate) fn read_text(path: &Path) -> Result<String, Self> {
+        std::fs::read_to_string(path).map_err(|source| Self::Io {
+            path: path.into(),
+            source,
+        })
+    }
+
     /// A TOML error in `text`, read from `path`, with its line spelled out.
     pub(crate) fn parse(path: impl Into<PathBuf>, text: &str, e: &toml::de::Error) -> Self {
         Self::Parse {

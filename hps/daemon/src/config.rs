@@ -541,6 +541,7 @@ impl Config {
         self.hardware.check().map_err(in_section("hardware"))?;
         self.sim.check().map_err(in_section("sim"))?;
         self.fabric.check().map_err(in_section("fabric"))?;
+        self.sim.check_fault_source().map_err(in_section("sim"))?;
         for f in &self.sim.faults {
             f.check().map_err(in_section("sim.fault"))?;
         }
@@ -711,6 +712,11 @@ impl SimConfig {
         if !(1..=64).contains(&self.skip) {
             return refuse("skip", format!("{} is outside 1..=64", self.skip));
         }
+        Ok(())
+    }
+
+    /// Injected faults only with the `sim` source.
+    fn check_fault_source(&self) -> Result<(), FieldError> {
         if self.source == SimSourceKind::Fabric && !self.faults.is_empty() {
             return refuse(
                 "source",

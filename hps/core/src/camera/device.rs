@@ -140,10 +140,7 @@ impl DeviceConfig {
     /// Reads and validates a `device.toml`. Returns the configuration and one warning per
     /// unknown key.
     pub fn read(path: &Path) -> Result<(Self, Vec<String>), DeviceError> {
-        let text = std::fs::read_to_string(path).map_err(|source| DeviceError::Io {
-            path: path.into(),
-            source,
-        })?;
+        let text = DeviceError::read_text(path)?;
         Self::parse(&text, path)
     }
 

@@ -68,10 +68,7 @@ pub enum CampaignError {
 
 impl CampaignConfig {
     pub fn read(path: &Path) -> Result<Self, CampaignError> {
-        let text = std::fs::read_to_string(path).map_err(|source| TomlFileError::Io {
-            path: path.into(),
-            source,
-        })?;
+        let text = TomlFileError::read_text(path)?;
         Self::parse(&text, path)
     }
 

@@ -98,10 +98,7 @@ pub type CaptureError = crate::toml_file::TomlFileError;
 impl CaptureConfig {
     /// Reads and validates `capture.toml`.
     pub fn read(path: &Path) -> Result<Self, CaptureError> {
-        let text = std::fs::read_to_string(path).map_err(|source| CaptureError::Io {
-            path: path.into(),
-            source,
-        })?;
+        let text = CaptureError::read_text(path)?;
         Self::parse(&text, path)
     }
 
