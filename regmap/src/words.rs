@@ -145,6 +145,10 @@ pub mod raw {
     pub const fn odd(word: u32) -> u16 {
         ((word >> ODD_LSB) & SAMPLE_MASK) as u16
     }
+    /// Both samples of a raw word, in read-out order (even column first).
+    pub const fn samples(word: u32) -> [u16; 2] {
+        [even(word), odd(word)]
+    }
     /// Words the block emits for a frame of `width x height` samples (width even).
     pub const fn words_per_frame(width: u32, height: u32) -> u32 {
         (width / 2) * height
@@ -171,6 +175,9 @@ mod tests {
         let w = raw::pack(0xABC, 0x123);
         assert_eq!(w, 0x0123_0ABC);
         assert_eq!((raw::even(w), raw::odd(w)), (0xABC, 0x123));
+        assert_eq!(raw::samples(w), [0xABC, 0x123]);
+        // Bits outside the two 12-bit samples are not part of either.
+        assert_eq!(raw::samples(w | 0xF000_F000), [0xABC, 0x123]);
         // Read as two little-endian u16: the samples in read-out order.
         let b = w.to_le_bytes();
         assert_eq!(u16::from_le_bytes([b[0], b[1]]), 0xABC);

@@ -1,7 +1,8 @@
 //! Writes simulated captures in the campaign format (shared/spec/campaign.md), so every tool
 //! reads simulated data through the same reader as field data.
 
-use skylux_hps::campaign::{CaptureConfig, CaptureError, RawFrame, RawFrameError};
+use skylux_hps::campaign::{CaptureConfig, RawFrame, RawFrameError};
+use skylux_hps::toml_file::TomlFileError;
 use std::path::Path;
 
 /// Why a capture could not be written.
@@ -12,14 +13,13 @@ pub enum WriteCaptureError {
         path: std::path::PathBuf,
         source: std::io::Error,
     },
+    /// `capture.toml` or `device.toml`.
     #[error(transparent)]
-    Capture(#[from] CaptureError),
+    File(#[from] TomlFileError),
     #[error(transparent)]
     Frame(#[from] RawFrameError),
     #[error("{0} frames for {1} exposure entries")]
     Count(usize, usize),
-    #[error(transparent)]
-    Device(#[from] skylux_hps::camera::DeviceError),
 }
 
 /// Writes `dir/capture.toml` and one PGM per exposure (the entries' `file` names).

@@ -18,8 +18,9 @@ use radiance::{
 use skylux_hps::camera::{CameraModel, DeviceConfig, OrientationConfig};
 use skylux_hps::campaign::Readout;
 use skylux_hps::engine::{self, Settings, World};
-use skylux_hps::hdr::{map_capture, write_radiance_sky, CaptureMap, SkyLookup};
+use skylux_hps::hdr::{map_capture, write_radiance_sky, CaptureMap};
 use skylux_hps::scene;
+use skylux_hps::sky::SkyLookup;
 use skylux_sim::capture::{simulate_capture, CaptureSpec};
 use std::path::Path;
 use std::sync::Arc;

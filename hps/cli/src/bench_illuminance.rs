@@ -1,4 +1,4 @@
-//! `skylux bench illuminance`: the engine's speed against `rtrace` at equal error (issue 5).
+//! `skylux bench illuminance`: the engine's speed against `rtrace` at equal error.
 //!
 //! Both programs compute the workplane illuminance of the reference room
 //! (shared/scenes/test-module) under the same sky file. A converged reference comes first:
@@ -63,7 +63,7 @@ pub struct IlluminanceBenchArgs {
     quick: bool,
 }
 
-/// rtrace's pure path tracing, the issue's settings (`-ad` added per run).
+/// rtrace's pure path tracing, the specified settings (`-ad` added per run).
 const PURE_ARGS: &[&str] = &[
     "-h", "-I", "-u+", "-ab", "12", "-lr", "-16", "-aa", "0", "-as", "0", "-lw", "2e-5",
 ];
@@ -352,7 +352,7 @@ fn stats(estimates: &[Vec<f64>], n_points: usize) -> (Vec<f64>, Vec<f64>) {
 /// RMS relative error over points and runs, and the worst point's, against the reference,
 /// with the reference's own variance taken out (E[(x − r)²] = var x + var r for independent
 /// estimates).
-fn rel_errors(estimates: &[Vec<f64>], reference: &Reference) -> (f64, f64) {
+fn rel_errors(estimates: &[Vec<f64>], reference: &Reference) -> RelErrors {
     let mut per_point = Vec::new();
     for (s, (&m, &se)) in reference.mean_lux.iter().zip(&reference.se_lux).enumerate() {
         if m.abs() < 1e-9 {
@@ -367,7 +367,21 @@ fn rel_errors(estimates: &[Vec<f64>], reference: &Reference) -> (f64, f64) {
     }
     let rms = (per_point.iter().sum::<f64>() / per_point.len().max(1) as f64).sqrt();
     let worst = per_point.iter().copied().fold(0.0, f64::max).sqrt();
-    (rms, worst)
+    RelErrors { rms, worst }
+}
+
+/// Relative errors against the reference: RMS over points and runs, and the worst point's.
+#[derive(Clone, Copy, Debug)]
+struct RelErrors {
+    rms: f64,
+    worst: f64,
+}
+
+/// When a configuration reaches the target error, and how that time was found.
+#[derive(Clone, Copy, Debug)]
+struct TimeAtTarget {
+    seconds: f64,
+    how: &'static str,
 }
 
 /// One measured point of a configuration.
@@ -379,13 +393,24 @@ struct Point {
     worst_rel_err: f64,
 }
 
+impl Point {
+    fn new(samples: u32, seconds: f64, errors: RelErrors) -> Self {
+        Self {
+            samples,
+            seconds,
+            rms_rel_err: errors.rms,
+            worst_rel_err: errors.worst,
+        }
+    }
+}
+
 /// Time at which the RMS error reaches `target`: a least-squares line in log-log (error
 /// against time) through the measured points with errors within a factor 2.5 of the target
 /// on either side (each point's RMS, from a few runs, is itself uncertain by ±10-15 %, so one
 /// pair alone could land on a lucky or unlucky point); else log-log interpolation between the
 /// two points that bracket it; else t^-1/2 extrapolation from the point whose error is
 /// nearest; and how it was found.
-fn time_to(points: &[Point], target: f64) -> Option<(f64, &'static str)> {
+fn time_to(points: &[Point], target: f64) -> Option<TimeAtTarget> {
     let ok: Vec<&Point> = points
         .iter()
         .filter(|p| p.rms_rel_err > 0.0 && p.seconds > 0.0)
@@ -407,7 +432,10 @@ fn time_to(points: &[Point], target: f64) -> Option<(f64, &'static str)> {
         let sxy: f64 = near.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
         if sxx > 0.0 && sxy < 0.0 {
             let slope = sxy / sxx;
-            return Some(((mx + (target.ln() - my) / slope).exp(), "log-log fit"));
+            return Some(TimeAtTarget {
+                seconds: (mx + (target.ln() - my) / slope).exp(),
+                how: "log-log fit",
+            });
         }
     }
     for w in ok.windows(2).rev() {
@@ -416,10 +444,10 @@ fn time_to(points: &[Point], target: f64) -> Option<(f64, &'static str)> {
             && a.rms_rel_err != b.rms_rel_err
         {
             let f = (target.ln() - a.rms_rel_err.ln()) / (b.rms_rel_err.ln() - a.rms_rel_err.ln());
-            return Some((
-                (a.seconds.ln() + f * (b.seconds.ln() - a.seconds.ln())).exp(),
-                "interpolated",
-            ));
+            return Some(TimeAtTarget {
+                seconds: (a.seconds.ln() + f * (b.seconds.ln() - a.seconds.ln())).exp(),
+                how: "interpolated",
+            });
         }
     }
     let nearest = ok.iter().min_by(|a, b| {
@@ -428,10 +456,10 @@ fn time_to(points: &[Point], target: f64) -> Option<(f64, &'static str)> {
             .abs()
             .total_cmp(&(b.rms_rel_err / target).ln().abs())
     })?;
-    Some((
-        nearest.seconds * (nearest.rms_rel_err / target).powi(2),
-        "extrapolated (t^-1/2)",
-    ))
+    Some(TimeAtTarget {
+        seconds: nearest.seconds * (nearest.rms_rel_err / target).powi(2),
+        how: "extrapolated (t^-1/2)",
+    })
 }
 
 fn cache_dir() -> PathBuf {
@@ -453,58 +481,9 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
         bail!("--runs {}: expected at least 2", args.runs);
     }
     let radiance = Radiance::find()?;
-    let room = args.room.clone().unwrap_or_else(|| {
-        PathBuf::from(concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/../../../shared/scenes/test-module"
-        ))
-    });
-    let scene_path = room.join("scene.rad");
-    let points_path = room.join(if args.grid {
-        "grid400.pts"
-    } else {
-        "sensors.pts"
-    });
-    let scene_text =
-        std::fs::read(&scene_path).with_context(|| format!("reading {}", scene_path.display()))?;
-    let points = std::fs::read_to_string(&points_path)
-        .with_context(|| format!("reading {}", points_path.display()))?;
-    let sensors = scene::load_sensors(&points_path)?;
-    let n_points = sensors.len();
-    if n_points == 0 {
-        bail!("{}: no points", points_path.display());
-    }
-    let points: String = points
-        .lines()
-        .filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
-        .map(|l| format!("{l}\n"))
-        .collect();
-
-    // The sky, the same file for both programs.
-    let (sky_tool, sky_args): (&str, &[&str]) = match args.sky.as_str() {
-        "perez" => (
-            "gendaylit",
-            &[
-                "5", "8", "12", "-a", "46.52", "-o", "-6.63", "-m", "-15", "-W", "801", "98",
-            ],
-        ),
-        "overcast" => (
-            "gensky",
-            &[
-                "5", "8", "12", "-c", "-a", "46.52", "-o", "-6.63", "-m", "-15", "-B", "98",
-            ],
-        ),
-        other => bail!("--sky {other}: expected perez or overcast"),
-    };
-    let mut sky = radiance.output({
-        let mut c = radiance.tool(sky_tool);
-        c.args(sky_args);
-        c
-    })?;
-    sky.extend_from_slice(
-        b"\nskyfunc glow sky_glow 0 0 4 1 1 1 0\nsky_glow source sky 0 0 4 0 0 1 180\n\
-          skyfunc glow ground_glow 0 0 4 1 1 1 0\nground_glow source ground 0 0 4 0 0 -1 180\n",
-    );
+    let room = Room::read(args)?;
+    let sky_spec = SkySpec::of(&args.sky)?;
+    let sky = sky_spec.write(&radiance)?;
     let dir = cache_dir();
     std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
     let work = tempfile_dir(&dir)?;
@@ -513,7 +492,7 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
     let octree = work.join("room.oct");
     let oct = radiance.output({
         let mut c = radiance.tool("oconv");
-        c.arg(&scene_path).arg(&sky_path);
+        c.arg(&room.scene_path).arg(&sky_path);
         c
     })?;
     std::fs::write(&octree, oct)?;
@@ -521,8 +500,8 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
         radiance: &radiance,
         dir: work.clone(),
         octree,
-        points: points.clone(),
-        n_points,
+        points: room.points.clone(),
+        n_points: room.sensors.len(),
         last_second: 0,
     };
     let log = |msg: String| {
@@ -530,81 +509,221 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
             eprintln!("{msg}");
         }
     };
+    let reference = converged_reference(&mut bench, args, &room, &sky, &dir, &log)?;
+    let mut rtrace_configs = measure_rtrace_pure(&mut bench, args, &reference, &log)?;
+    if !args.skip_cache_config {
+        rtrace_configs.push(measure_rtrace_cache(&mut bench, args, &reference, &log)?);
+    }
+    let scene_files = [room.scene_path.clone(), sky_path.clone()];
+    let skylux_configs = measure_engine(args, &scene_files, &room.sensors, &reference, &log)?;
+    let outcome = Outcome {
+        room: &room,
+        sky: format!("{} {}", sky_spec.tool, sky_spec.args.join(" ")),
+        target: args.target_rel_err,
+        reference: &reference,
+        reference_command: format!("{} -ad {}", PURE_ARGS.join(" "), reference_ad(args)),
+        rtrace_configs: &rtrace_configs,
+        skylux_configs: &skylux_configs,
+    };
+    let summary = outcome.summary()?;
+    let _ = std::fs::remove_dir_all(&work);
+    if args.json {
+        println!("{}", summary.json);
+        return Ok(());
+    }
+    outcome.print_table(&summary);
+    Ok(())
+}
 
-    // 1. The reference.
+/// The reference room's files: the scene, and the points as rtrace reads them.
+struct Room {
+    scene_path: PathBuf,
+    scene_text: Vec<u8>,
+    points_path: PathBuf,
+    /// The points file without blank or comment lines.
+    points: String,
+    sensors: Vec<scene::Sensor>,
+}
+
+impl Room {
+    fn read(args: &IlluminanceBenchArgs) -> anyhow::Result<Self> {
+        let room = args.room.clone().unwrap_or_else(|| {
+            PathBuf::from(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/../../../shared/scenes/test-module"
+            ))
+        });
+        let scene_path = room.join("scene.rad");
+        let points_path = room.join(if args.grid {
+            "grid400.pts"
+        } else {
+            "sensors.pts"
+        });
+        let scene_text = std::fs::read(&scene_path)
+            .with_context(|| format!("reading {}", scene_path.display()))?;
+        let points = std::fs::read_to_string(&points_path)
+            .with_context(|| format!("reading {}", points_path.display()))?;
+        let sensors = scene::load_sensors(&points_path)?;
+        if sensors.is_empty() {
+            bail!("{}: no points", points_path.display());
+        }
+        let points: String = points
+            .lines()
+            .filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
+            .map(|l| format!("{l}\n"))
+            .collect();
+        Ok(Self {
+            scene_path,
+            scene_text,
+            points_path,
+            points,
+            sensors,
+        })
+    }
+}
+
+/// The sky, the same file for both programs: a RADIANCE generator and its arguments.
+struct SkySpec {
+    tool: &'static str,
+    args: &'static [&'static str],
+}
+
+impl SkySpec {
+    fn of(name: &str) -> anyhow::Result<Self> {
+        Ok(match name {
+            "perez" => Self {
+                tool: "gendaylit",
+                args: &[
+                    "5", "8", "12", "-a", "46.52", "-o", "-6.63", "-m", "-15", "-W", "801", "98",
+                ],
+            },
+            "overcast" => Self {
+                tool: "gensky",
+                args: &[
+                    "5", "8", "12", "-c", "-a", "46.52", "-o", "-6.63", "-m", "-15", "-B", "98",
+                ],
+            },
+            other => bail!("--sky {other}: expected perez or overcast"),
+        })
+    }
+
+    /// The generator's output with the glow sources of sky and ground added.
+    fn write(&self, radiance: &Radiance) -> anyhow::Result<Vec<u8>> {
+        let mut sky = radiance.output({
+            let mut c = radiance.tool(self.tool);
+            c.args(self.args);
+            c
+        })?;
+        sky.extend_from_slice(
+            b"\nskyfunc glow sky_glow 0 0 4 1 1 1 0\nsky_glow source sky 0 0 4 0 0 1 180\n\
+              skyfunc glow ground_glow 0 0 4 1 1 1 0\nground_glow source ground 0 0 4 0 0 -1 180\n",
+        );
+        Ok(sky)
+    }
+}
+
+/// The reference: read from the cache, or rtrace's pure path tracing over many seeds until
+/// its standard error per point is small enough (or the budget is spent), then cached.
+fn converged_reference(
+    bench: &mut Bench,
+    args: &IlluminanceBenchArgs,
+    room: &Room,
+    sky: &[u8],
+    dir: &Path,
+    log: &dyn Fn(String),
+) -> anyhow::Result<Reference> {
+    let n_points = room.sensors.len();
     let target_se = args
         .reference_rel_se
         .unwrap_or(if args.grid { 0.01 } else { 0.002 });
     let budget_s = args
         .reference_budget_s
         .unwrap_or(if args.grid { 1500.0 } else { 900.0 });
-    let ref_ad: u32 = if args.grid { 8192 } else { 32768 };
+    let ref_ad = reference_ad(args);
     let ref_ad_text = ref_ad.to_string();
     let mut ref_args: Vec<&str> = PURE_ARGS.to_vec();
     ref_args.extend(["-ad", &ref_ad_text]);
     let key = fnv1a(&[
-        &scene_text,
-        points.as_bytes(),
-        &sky,
+        &room.scene_text,
+        room.points.as_bytes(),
+        sky,
         ref_args.join(" ").as_bytes(),
         format!("{target_se} {budget_s}").as_bytes(),
     ]);
     let cache_file = dir.join(format!("reference-{key:016x}.json"));
-    let reference = match std::fs::read(&cache_file)
+    if let Some(r) = std::fs::read(&cache_file)
         .ok()
         .and_then(|b| serde_json::from_slice::<serde_json::Value>(&b).ok())
         .and_then(|v| Reference::from_json(&v))
         .filter(|r| r.mean_lux.len() == n_points)
     {
-        Some(r) => {
-            log(format!(
-                "reference: cached in {} ({} estimates, worst relative standard error {:.3} %)",
-                cache_file.display(),
-                r.estimates,
-                100.0 * r.worst_rel_se()
-            ));
-            r
+        log(format!(
+            "reference: cached in {} ({} estimates, worst relative standard error {:.3} %)",
+            cache_file.display(),
+            r.estimates,
+            100.0 * r.worst_rel_se()
+        ));
+        return Ok(r);
+    }
+    log(format!(
+        "reference: rtrace {} over many seeds until the standard error is below {:.2} % \
+         per point (at most {budget_s:.0} s; cached in {})",
+        ref_args.join(" "),
+        100.0 * target_se,
+        cache_file.display()
+    ));
+    let start = Instant::now();
+    let per_process = if args.grid { 1 } else { 8 };
+    let mut all: Vec<Vec<f64>> = Vec::new();
+    loop {
+        let (e, _) = bench.run(&ref_args, 2 * per_process, 2)?;
+        all.extend(e);
+        let (mean, se) = stats(&all, n_points);
+        let r = Reference {
+            mean_lux: mean,
+            se_lux: se,
+            estimates: all.len(),
+            rtrace_ad: ref_ad,
+            seconds: start.elapsed().as_secs_f64(),
+            cached: false,
+        };
+        let worst = r.worst_rel_se();
+        log(format!(
+            "  {} estimates, {:.0} s: worst relative standard error {:.3} %",
+            all.len(),
+            r.seconds,
+            100.0 * worst
+        ));
+        if (all.len() >= 8 && worst <= target_se) || r.seconds >= budget_s {
+            std::fs::write(&cache_file, serde_json::to_vec(&r.to_json())?)?;
+            return Ok(r);
         }
-        None => {
-            log(format!(
-                "reference: rtrace {} over many seeds until the standard error is below {:.2} % \
-                 per point (at most {budget_s:.0} s; cached in {})",
-                ref_args.join(" "),
-                100.0 * target_se,
-                cache_file.display()
-            ));
-            let start = Instant::now();
-            let per_process = if args.grid { 1 } else { 8 };
-            let mut all: Vec<Vec<f64>> = Vec::new();
-            loop {
-                let (e, _) = bench.run(&ref_args, 2 * per_process, 2)?;
-                all.extend(e);
-                let (mean, se) = stats(&all, n_points);
-                let r = Reference {
-                    mean_lux: mean,
-                    se_lux: se,
-                    estimates: all.len(),
-                    rtrace_ad: ref_ad,
-                    seconds: start.elapsed().as_secs_f64(),
-                    cached: false,
-                };
-                let worst = r.worst_rel_se();
-                log(format!(
-                    "  {} estimates, {:.0} s: worst relative standard error {:.3} %",
-                    all.len(),
-                    r.seconds,
-                    100.0 * worst
-                ));
-                if (all.len() >= 8 && worst <= target_se) || r.seconds >= budget_s {
-                    std::fs::write(&cache_file, serde_json::to_vec(&r.to_json())?)?;
-                    break r;
-                }
-            }
-        }
-    };
+    }
+}
 
-    // 2. rtrace.
-    let mut rtrace_configs = Vec::new();
+/// The reference's `-ad`: pure path tracing, [`PURE_ARGS`], with this many ambient divisions.
+fn reference_ad(args: &IlluminanceBenchArgs) -> u32 {
+    if args.grid {
+        8192
+    } else {
+        32768
+    }
+}
+
+/// One configuration of a program, and its measured points.
+struct Measured {
+    label: String,
+    points: Vec<Point>,
+}
+
+/// rtrace's pure path tracing at increasing `-ad`, with each `-lw` rule and process layout.
+fn measure_rtrace_pure(
+    bench: &mut Bench,
+    args: &IlluminanceBenchArgs,
+    reference: &Reference,
+    log: &dyn Fn(String),
+) -> anyhow::Result<Vec<Measured>> {
+    let mut configs = Vec::new();
     let ads: &[u32] = if args.grid {
         &[512, 1024, 2048, 4096]
     } else {
@@ -612,9 +731,9 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
     };
     // -lw: with -lr negative, rays whose weight falls below it go on by Russian roulette
     // (unbiased; RADIANCE rayorigin), so -lw trades time per estimate for variance. With
-    // -aa 0 a first-bounce ray weighs about ρ/ad, so the issue's 2e-5 puts roulette on the
-    // first bounce from -ad 32768 on. Both the issue's value and one that keeps the first
-    // two bounces above it (0.1/ad) are timed, and rtrace gets the faster.
+    // -aa 0 a first-bounce ray weighs about ρ/ad, so the specified 2e-5 puts roulette on the
+    // first bounce from -ad 32768 on. Both that value and one that keeps the first two
+    // bounces above it (0.1/ad) are timed, and rtrace gets the faster.
     let lw_of = |fixed: bool, ad: u32| {
         if fixed {
             "2e-5".to_string()
@@ -635,22 +754,17 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
                 a.extend(["-ad", &ad_text]);
                 let runs = if args.grid { 2 } else { args.runs };
                 let (estimates, seconds) = bench.run(&a, runs.max(processes), processes)?;
-                let (rms, worst) = rel_errors(&estimates, &reference);
+                let errors = rel_errors(&estimates, reference);
                 log(format!(
                     "rtrace pure path tracing, {processes} process(es), -ad {ad} -lw {lw_text}: \
                      {seconds:.3} s per run, RMS error {:.2} %, worst point {:.2} %",
-                    100.0 * rms,
-                    100.0 * worst
+                    100.0 * errors.rms,
+                    100.0 * errors.worst
                 ));
-                points_measured.push(Point {
-                    samples: ad,
-                    seconds,
-                    rms_rel_err: rms,
-                    worst_rel_err: worst,
-                });
+                points_measured.push(Point::new(ad, seconds, errors));
             }
-            rtrace_configs.push((
-                format!(
+            configs.push(Measured {
+                label: format!(
                     "pure path tracing {} -ad N, {lw_label}, {processes} process(es){}",
                     PURE_ARGS[3..PURE_LW - 1].join(" "),
                     if processes == 2 {
@@ -659,282 +773,353 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
                         ""
                     }
                 ),
-                points_measured,
-            ));
+                points: points_measured,
+            });
         }
     }
-    if !args.skip_cache_config {
-        let mut estimates = Vec::new();
-        let mut seconds = 0.0;
-        for _ in 0..args.cache_runs.max(1) {
-            // One process per estimate: the cache is shared within a process.
-            let (e, s) = bench.run(CACHE_ARGS, 1, 1)?;
-            estimates.extend(e);
-            seconds += s;
-        }
-        seconds /= args.cache_runs.max(1) as f64;
-        let (rms, worst) = rel_errors(&estimates, &reference);
-        log(format!(
-            "rtrace ambient cache {}: {seconds:.2} s per run, RMS error {:.2} %, worst point {:.2} %",
-            CACHE_ARGS[3..].join(" "),
-            100.0 * rms,
-            100.0 * worst
-        ));
-        rtrace_configs.push((
-            format!("ambient cache {}, 1 process", CACHE_ARGS[3..].join(" ")),
-            vec![Point {
-                samples: 1024,
-                seconds,
-                rms_rel_err: rms,
-                worst_rel_err: worst,
-            }],
-        ));
-    }
+    Ok(configs)
+}
 
-    // 3. Our engine, both cores.
-    let scene_files = [scene_path.clone(), sky_path.clone()];
-    // (label, portal sampling, sky sampling, sun-patch sampling, stratified, path reuse)
-    let all_variants: [(&str, bool, bool, bool, bool, bool); 8] = [
-        (
-            "stratified, portal + sky + sun-patch sampling (MIS), path reuse: the default",
-            true,
-            true,
-            true,
-            true,
-            true,
-        ),
-        (
-            "stratified, portal + sun-patch sampling, path reuse",
-            true,
-            false,
-            true,
-            true,
-            true,
-        ),
-        (
-            "stratified, portal + sun-patch sampling, no path reuse",
-            true,
-            false,
-            true,
-            true,
-            false,
-        ),
-        (
-            "stratified, portal + sky + sun-patch sampling (MIS), no path reuse",
-            true,
-            true,
-            true,
-            true,
-            false,
-        ),
-        (
-            "independent samples, portal + sky + sun-patch sampling, no path reuse",
-            true,
-            true,
-            true,
-            false,
-            false,
-        ),
-        (
-            "independent samples, portal + sun-patch sampling, no path reuse",
-            true,
-            false,
-            true,
-            false,
-            false,
-        ),
-        (
-            "independent samples, portal sampling only, no path reuse",
-            true,
-            false,
-            false,
-            false,
-            false,
-        ),
-        (
-            "independent samples, no next-event estimation of sky or sun patch, no path reuse",
-            false,
-            false,
-            false,
-            false,
-            false,
-        ),
-    ];
-    let our_variants = &all_variants[..if args.quick { 3 } else { all_variants.len() }];
+/// rtrace with the published ambient-cache settings, one process per estimate.
+fn measure_rtrace_cache(
+    bench: &mut Bench,
+    args: &IlluminanceBenchArgs,
+    reference: &Reference,
+    log: &dyn Fn(String),
+) -> anyhow::Result<Measured> {
+    let mut estimates = Vec::new();
+    let mut seconds = 0.0;
+    for _ in 0..args.cache_runs.max(1) {
+        // One process per estimate: the cache is shared within a process.
+        let (e, s) = bench.run(CACHE_ARGS, 1, 1)?;
+        estimates.extend(e);
+        seconds += s;
+    }
+    seconds /= args.cache_runs.max(1) as f64;
+    let errors = rel_errors(&estimates, reference);
+    log(format!(
+        "rtrace ambient cache {}: {seconds:.2} s per run, RMS error {:.2} %, worst point {:.2} %",
+        CACHE_ARGS[3..].join(" "),
+        100.0 * errors.rms,
+        100.0 * errors.worst
+    ));
+    Ok(Measured {
+        label: format!("ambient cache {}, 1 process", CACHE_ARGS[3..].join(" ")),
+        points: vec![Point::new(1024, seconds, errors)],
+    })
+}
+
+/// One sampling configuration of our engine.
+struct EngineVariant {
+    label: &'static str,
+    portal_sampling: bool,
+    sky_sampling: bool,
+    sun_portal_sampling: bool,
+    stratified: bool,
+    path_reuse: bool,
+}
+
+const fn variant(
+    label: &'static str,
+    [portal_sampling, sky_sampling, sun_portal_sampling, stratified, path_reuse]: [bool; 5],
+) -> EngineVariant {
+    EngineVariant {
+        label,
+        portal_sampling,
+        sky_sampling,
+        sun_portal_sampling,
+        stratified,
+        path_reuse,
+    }
+}
+
+/// The engine's configurations, the default first; `--quick` runs the first three.
+/// Flags: portal, sky, sun-patch sampling, stratified, path reuse.
+const ENGINE_VARIANTS: [EngineVariant; 8] = [
+    variant(
+        "stratified, portal + sky + sun-patch sampling (MIS), path reuse: the default",
+        [true, true, true, true, true],
+    ),
+    variant(
+        "stratified, portal + sun-patch sampling, path reuse",
+        [true, false, true, true, true],
+    ),
+    variant(
+        "stratified, portal + sun-patch sampling, no path reuse",
+        [true, false, true, true, false],
+    ),
+    variant(
+        "stratified, portal + sky + sun-patch sampling (MIS), no path reuse",
+        [true, true, true, true, false],
+    ),
+    variant(
+        "independent samples, portal + sky + sun-patch sampling, no path reuse",
+        [true, true, true, false, false],
+    ),
+    variant(
+        "independent samples, portal + sun-patch sampling, no path reuse",
+        [true, false, true, false, false],
+    ),
+    variant(
+        "independent samples, portal sampling only, no path reuse",
+        [true, false, false, false, false],
+    ),
+    variant(
+        "independent samples, no next-event estimation of sky or sun patch, no path reuse",
+        [false, false, false, false, false],
+    ),
+];
+
+/// Our engine, both cores, at increasing paths per point until well past the target.
+fn measure_engine(
+    args: &IlluminanceBenchArgs,
+    scene_files: &[PathBuf],
+    sensors: &[scene::Sensor],
+    reference: &Reference,
+    log: &dyn Fn(String),
+) -> anyhow::Result<Vec<Measured>> {
+    let variants = &ENGINE_VARIANTS[..if args.quick { 3 } else { ENGINE_VARIANTS.len() }];
     let counts: &[u32] = if args.grid {
         &[64, 128, 256, 512, 1024]
     } else {
         &[256, 512, 1024, 2048, 4096, 8192, 16384]
     };
-    let mut skylux_configs = Vec::new();
-    for &(label, portal, sky_nee, sun_patch, stratified, path_reuse) in our_variants {
+    let mut configs = Vec::new();
+    for v in variants {
         let mut measured = Vec::new();
         for &n in counts {
             let mut estimates = Vec::new();
             let mut seconds = 0.0;
             for run in 0..args.runs {
                 let start = Instant::now();
-                let scene = scene::load_files(&scene_files)?;
+                let scene = scene::load_files(scene_files)?;
                 let world = World::new(&scene)?;
                 let settings = Settings {
                     ambient_bounces: OUR_AB,
                     samples_per_sensor: n,
                     seed: 1000 + run as u64,
-                    portal_sampling: portal,
-                    sky_sampling: sky_nee,
-                    sun_portal_sampling: sun_patch,
-                    stratified,
-                    path_reuse,
+                    portal_sampling: v.portal_sampling,
+                    sky_sampling: v.sky_sampling,
+                    sun_portal_sampling: v.sun_portal_sampling,
+                    stratified: v.stratified,
+                    path_reuse: v.path_reuse,
                     ..Settings::default()
                 };
-                let result = engine::illuminance(&world, &sensors, &settings, &|_, _| {})?;
+                let result = engine::illuminance(&world, sensors, &settings, &|_, _| {})?;
                 seconds += start.elapsed().as_secs_f64();
                 estimates.push(result.iter().map(|s| s.illuminance_lux).collect::<Vec<_>>());
             }
             seconds /= args.runs as f64;
-            let (rms, worst) = rel_errors(&estimates, &reference);
+            let errors = rel_errors(&estimates, reference);
             log(format!(
-                "skylux {label}, {n} paths per point: {seconds:.3} s per run, RMS error {:.2} %, \
+                "skylux {}, {n} paths per point: {seconds:.3} s per run, RMS error {:.2} %, \
                  worst point {:.2} %",
-                100.0 * rms,
-                100.0 * worst
+                v.label,
+                100.0 * errors.rms,
+                100.0 * errors.worst
             ));
-            measured.push(Point {
-                samples: n,
-                seconds,
-                rms_rel_err: rms,
-                worst_rel_err: worst,
-            });
+            measured.push(Point::new(n, seconds, errors));
             // Past the target by a margin: larger counts only cost time.
-            if rms < 0.5 * args.target_rel_err {
+            if errors.rms < 0.5 * args.target_rel_err {
                 break;
             }
         }
-        skylux_configs.push((
-            format!(
-                "{label}, -ab {OUR_AB}, {} threads",
+        configs.push(Measured {
+            label: format!(
+                "{}, -ab {OUR_AB}, {} threads",
+                v.label,
                 rayon::current_num_threads()
             ),
-            measured,
-        ));
+            points: measured,
+        });
     }
+    Ok(configs)
+}
 
-    // 4. Times at the target and the ratio.
-    let target = args.target_rel_err;
-    let summarise = |configs: &[(String, Vec<Point>)]| -> Vec<serde_json::Value> {
+/// The fastest configuration of a program at the target.
+#[derive(Clone, Debug)]
+struct Fastest {
+    label: String,
+    at_target: TimeAtTarget,
+}
+
+/// The summary as printed with `--json`, and the fastest of each program.
+struct Summary {
+    json: serde_json::Value,
+    rtrace: Fastest,
+    skylux: Fastest,
+}
+
+/// Everything measured, to summarise and print.
+struct Outcome<'a> {
+    room: &'a Room,
+    /// The sky generator's command line.
+    sky: String,
+    target: f64,
+    reference: &'a Reference,
+    /// The reference's rtrace arguments.
+    reference_command: String,
+    rtrace_configs: &'a [Measured],
+    skylux_configs: &'a [Measured],
+}
+
+impl Outcome<'_> {
+    fn fastest(&self, configs: &[Measured], only_pure: bool) -> Option<Fastest> {
         configs
             .iter()
-            .map(|(label, pts)| {
-                let t = time_to(pts, target);
+            .filter(|c| !only_pure || c.label.starts_with("pure"))
+            .filter_map(|c| {
+                time_to(&c.points, self.target).map(|at_target| Fastest {
+                    label: c.label.clone(),
+                    at_target,
+                })
+            })
+            .min_by(|a, b| a.at_target.seconds.total_cmp(&b.at_target.seconds))
+    }
+
+    /// rtrace's fastest: pure path tracing at the target, or the cache configuration where
+    /// it met the target as measured (its error is mostly its bias, which more time at the
+    /// same settings does not remove).
+    fn rtrace_fastest(&self) -> Option<Fastest> {
+        let cache_at_target = self
+            .rtrace_configs
+            .iter()
+            .filter(|c| c.label.starts_with("ambient"))
+            .filter_map(|c| {
+                c.points
+                    .first()
+                    .filter(|p| p.rms_rel_err <= self.target)
+                    .map(|p| Fastest {
+                        label: c.label.clone(),
+                        at_target: TimeAtTarget {
+                            seconds: p.seconds,
+                            how: "measured",
+                        },
+                    })
+            })
+            .min_by(|a, b| a.at_target.seconds.total_cmp(&b.at_target.seconds));
+        match (self.fastest(self.rtrace_configs, true), cache_at_target) {
+            (Some(a), Some(b)) => Some(if b.at_target.seconds < a.at_target.seconds {
+                b
+            } else {
+                a
+            }),
+            (a, b) => a.or(b),
+        }
+    }
+
+    fn configs_json(&self, configs: &[Measured]) -> Vec<serde_json::Value> {
+        configs
+            .iter()
+            .map(|c| {
+                let t = time_to(&c.points, self.target);
                 serde_json::json!({
-                    "config": label,
-                    "seconds_at_target": t.map(|x| x.0),
-                    "how": t.map(|x| x.1),
-                    "points": pts.iter().map(|p| serde_json::json!({
+                    "config": c.label,
+                    "seconds_at_target": t.map(|x| x.seconds),
+                    "how": t.map(|x| x.how),
+                    "points": c.points.iter().map(|p| serde_json::json!({
                         "samples": p.samples, "seconds": p.seconds,
                         "rms_rel_err": p.rms_rel_err, "worst_rel_err": p.worst_rel_err,
                     })).collect::<Vec<_>>(),
                 })
             })
             .collect()
-    };
-    let best = |configs: &[(String, Vec<Point>)], only_pure: bool| {
-        configs
-            .iter()
-            .filter(|(l, _)| !only_pure || l.starts_with("pure"))
-            .filter_map(|(l, pts)| time_to(pts, target).map(|t| (l.clone(), t.0, t.1)))
-            .min_by(|a, b| a.1.total_cmp(&b.1))
-    };
-    // The cache configuration's error is mostly its bias, which more time at the same
-    // settings does not remove: it counts only where it met the target as measured.
-    let cache_at_target = rtrace_configs
-        .iter()
-        .filter(|(l, _)| l.starts_with("ambient"))
-        .filter_map(|(l, pts)| {
-            pts.first()
-                .filter(|p| p.rms_rel_err <= target)
-                .map(|p| (l.clone(), p.seconds, "measured"))
-        })
-        .min_by(|a, b| a.1.total_cmp(&b.1));
-    let rtrace_best = match (best(&rtrace_configs, true), cache_at_target) {
-        (Some(a), Some(b)) => Some(if b.1 < a.1 { b } else { a }),
-        (a, b) => a.or(b),
-    };
-    // Our fastest configuration (all are the same unbiased estimator with other sampling).
-    let ours_best = best(&skylux_configs, false);
-    let (Some(rb), Some(ob)) = (rtrace_best, ours_best) else {
-        bail!("no configuration reached a measurable error");
-    };
-    let result = serde_json::json!({
-        "sensors": n_points,
-        "points_file": points_path.display().to_string(),
-        "sky": format!("{sky_tool} {}", sky_args.join(" ")),
-        "target_rel_err": target,
-        "error_measure": "RMS over points and runs of (x - reference) / reference, the reference's variance subtracted",
-        "rtrace_s": rb.1,
-        "rtrace_rel_err": target,
-        "rtrace_config": rb.0,
-        "rtrace_how": rb.2,
-        "skylux_s": ob.1,
-        "skylux_rel_err": target,
-        "skylux_config": ob.0,
-        "skylux_how": ob.2,
-        "ratio": ob.1 / rb.1,
-        "threads": rayon::current_num_threads(),
-        "reference": {
-            "rtrace": ref_args.join(" "),
-            "estimates": reference.estimates,
-            "worst_rel_se": reference.worst_rel_se(),
-            "seconds": reference.seconds,
-            "cached": reference.cached,
-        },
-        "rtrace_configs": summarise(&rtrace_configs),
-        "skylux_configs": summarise(&skylux_configs),
-    });
-    let _ = std::fs::remove_dir_all(&work);
-    if args.json {
-        println!("{result}");
-        return Ok(());
     }
-    println!(
-        "{} points, sky `{}`; reference: {} rtrace estimates{} (worst relative standard error {:.3} %)",
-        n_points,
-        result["sky"].as_str().unwrap_or(""),
-        reference.estimates,
-        if reference.cached { ", cached" } else { "" },
-        100.0 * reference.worst_rel_se()
-    );
-    println!("| program | configuration | samples | s per run | RMS error | worst point |");
-    println!("|---|---|---|---|---|---|");
-    for (program, configs) in [("rtrace", &rtrace_configs), ("skylux", &skylux_configs)] {
-        for (label, pts) in configs.iter() {
-            for p in pts {
-                println!(
-                    "| {program} | {label} | {} | {:.3} | {:.2} % | {:.2} % |",
-                    p.samples,
-                    p.seconds,
-                    100.0 * p.rms_rel_err,
-                    100.0 * p.worst_rel_err
-                );
-            }
-            if let Some((t, how)) = time_to(pts, target) {
-                println!(
-                    "| {program} | {label} | at {:.1} % | {t:.3} ({how}) | | |",
-                    100.0 * target
-                );
+
+    /// Times at the target and the ratio, as one JSON object.
+    fn summary(&self) -> anyhow::Result<Summary> {
+        // Our fastest configuration (all are the same unbiased estimator with other sampling).
+        let (Some(rb), Some(ob)) = (
+            self.rtrace_fastest(),
+            self.fastest(self.skylux_configs, false),
+        ) else {
+            bail!("no configuration reached a measurable error");
+        };
+        let reference = self.reference;
+        let json = serde_json::json!({
+            "sensors": self.room.sensors.len(),
+            "points_file": self.room.points_path.display().to_string(),
+            "sky": self.sky,
+            "target_rel_err": self.target,
+            "error_measure": "RMS over points and runs of (x - reference) / reference, the reference's variance subtracted",
+            "rtrace_s": rb.at_target.seconds,
+            "rtrace_rel_err": self.target,
+            "rtrace_config": rb.label,
+            "rtrace_how": rb.at_target.how,
+            "skylux_s": ob.at_target.seconds,
+            "skylux_rel_err": self.target,
+            "skylux_config": ob.label,
+            "skylux_how": ob.at_target.how,
+            "ratio": ob.at_target.seconds / rb.at_target.seconds,
+            "threads": rayon::current_num_threads(),
+            "reference": {
+                "rtrace": self.reference_command,
+                "estimates": reference.estimates,
+                "worst_rel_se": reference.worst_rel_se(),
+                "seconds": reference.seconds,
+                "cached": reference.cached,
+            },
+            "rtrace_configs": self.configs_json(self.rtrace_configs),
+            "skylux_configs": self.configs_json(self.skylux_configs),
+        });
+        Ok(Summary {
+            json,
+            rtrace: rb,
+            skylux: ob,
+        })
+    }
+
+    /// The Markdown table of every measured point, the times at the target, and the ratio.
+    fn print_table(&self, summary: &Summary) {
+        let reference = self.reference;
+        let target = self.target;
+        println!(
+            "{} points, sky `{}`; reference: {} rtrace estimates{} (worst relative standard error {:.3} %)",
+            self.room.sensors.len(),
+            self.sky,
+            reference.estimates,
+            if reference.cached { ", cached" } else { "" },
+            100.0 * reference.worst_rel_se()
+        );
+        println!("| program | configuration | samples | s per run | RMS error | worst point |");
+        println!("|---|---|---|---|---|---|");
+        for (program, configs) in [
+            ("rtrace", self.rtrace_configs),
+            ("skylux", self.skylux_configs),
+        ] {
+            for c in configs {
+                for p in &c.points {
+                    println!(
+                        "| {program} | {} | {} | {:.3} | {:.2} % | {:.2} % |",
+                        c.label,
+                        p.samples,
+                        p.seconds,
+                        100.0 * p.rms_rel_err,
+                        100.0 * p.worst_rel_err
+                    );
+                }
+                if let Some(t) = time_to(&c.points, target) {
+                    println!(
+                        "| {program} | {} | at {:.1} % | {:.3} ({}) | | |",
+                        c.label,
+                        100.0 * target,
+                        t.seconds,
+                        t.how
+                    );
+                }
             }
         }
+        let (rb, ob) = (&summary.rtrace, &summary.skylux);
+        println!(
+            "time to {:.1} % RMS: rtrace {:.3} s ({}), skylux {:.3} s ({}); ratio ours/rtrace {:.4}",
+            100.0 * target,
+            rb.at_target.seconds,
+            rb.label,
+            ob.at_target.seconds,
+            ob.label,
+            ob.at_target.seconds / rb.at_target.seconds
+        );
     }
-    println!(
-        "time to {:.1} % RMS: rtrace {:.3} s ({}), skylux {:.3} s ({}); ratio ours/rtrace {:.4}",
-        100.0 * target,
-        rb.1,
-        rb.0,
-        ob.1,
-        ob.0,
-        ob.1 / rb.1
-    );
-    Ok(())
 }
 
 /// A fresh working folder under `base` for this run's sky, octree and inputs.

@@ -32,7 +32,7 @@ pub fn run(args: &HdrArgs) -> anyhow::Result<()> {
         .with_context(|| "writing the map")?;
     if let Some(dir) = &args.radiance_sky {
         let camera = skylux_hps::camera::CameraModel::new(device.clone());
-        let lookup = skylux_hps::hdr::SkyLookup::new(&camera, &merged, 4);
+        let lookup = skylux_hps::sky::SkyLookup::new(&camera, &merged, 4);
         skylux_hps::hdr::write_radiance_sky(dir, 1024, &|d| lookup.luminance_cd_m2(d))
             .with_context(|| format!("writing the RADIANCE sky to {}", dir.display()))?;
         println!(

@@ -17,5 +17,5 @@ pub mod scene;
 pub mod sky;
 pub mod sun;
 pub mod timing;
-mod toml_diag;
+pub mod toml_file;
 pub mod validation;

@@ -274,8 +274,11 @@ fn holdout_values_do_not_reach_the_fit() {
     assert_eq!(clean.last.fit, altered.last.fit);
     assert_ne!(clean.last.holdout, altered.last.holdout);
     assert_eq!(clean.leave_one_out.len(), altered.leave_one_out.len());
-    for ((e1, s1), (e2, s2)) in clean.leave_one_out.iter().zip(&altered.leave_one_out) {
-        assert_eq!((e1, &s1.model, &s1.fit), (e2, &s2.model, &s2.fit));
+    for (a, b) in clean.leave_one_out.iter().zip(&altered.leave_one_out) {
+        assert_eq!(
+            (a.effect, &a.without.model, &a.without.fit),
+            (b.effect, &b.without.model, &b.without.fit)
+        );
     }
     assert_eq!(clean.report.fit_times, altered.report.fit_times);
 }

@@ -26,6 +26,8 @@ use skylux_hps::fpga::sensor::SensorConfig;
 use skylux_hps::hdr::merge;
 use skylux_hps::timing::median_ms;
 use skylux_regmap::descriptor::{self, Descriptor};
+use skylux_regmap::words::raw;
+use skylux_sim::hdr_case::{HdrCase, EXPOSURES_S, HEIGHT_PX, WIDTH_PX};
 
 /// One core here against one Cortex-A9 core of the DE1-SoC (issue 8: "roughly ten times").
 pub const A9_SLOWDOWN: f64 = 10.0;
@@ -58,49 +60,115 @@ impl DmaMemory for Buffer {
 
 /// Runs the budget; prints JSON (and a table unless `json`).
 pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
-    use skylux_sim::hdr_case::{HdrCase, EXPOSURES_S, HEIGHT_PX, WIDTH_PX};
+    let capture = CaptureModel::new();
+    let read = hps_read(repeat);
+    let processing = processing(repeat)?;
+    let measured = read.ms + processing.hdr_ms + processing.sun_ms + processing.dc_ms;
+    let result = serde_json::json!({
+        "frame": [WIDTH_PX, HEIGHT_PX],
+        "pixclk_hz": PIXCLK_HZ,
+        "row_pixclk": capture.row_pixclk,
+        "readout_ms_per_frame": capture.readout_ms,
+        "exposure_ms": capture.exposure_ms,
+        "capture_ms": capture.capture_ms,
+        "shield_plan": capture.shield_plan,
+        "transfer_bytes": read.transfer_bytes,
+        "dma_rate_mb_s": 4.0 / 2.0 * PIXCLK_HZ / 1e6,
+        "hps_read_5_frames_ms": read.ms,
+        "hdr_5_frames_one_core_ms": processing.hdr_ms,
+        "sun_extraction_ms": processing.sun_ms,
+        "dc_update_400_sensors_sky_and_ground_ms": processing.dc_ms,
+        "dc_update_400_sensors_sky_only_ms": processing.dc_sky_ms,
+        "sky_patches": processing.sky_patches,
+        "processing_here_ms": measured,
+        "a9_slowdown": A9_SLOWDOWN,
+        "processing_a9_estimate_ms": measured * A9_SLOWDOWN,
+        "cycle_a9_estimate_ms": capture.capture_ms + measured * A9_SLOWDOWN,
+        "repeat": repeat,
+    });
+    println!("{result}");
+    if !json {
+        eprintln!(
+            "capture {:.1} ms (model) | HPS read {:.1} ms | HDR {:.1} ms | sun {:.1} ms | DC \
+             {:.2} ms | A9 estimate of the processing {:.0} ms",
+            capture.capture_ms,
+            read.ms,
+            processing.hdr_ms,
+            processing.sun_ms,
+            processing.dc_ms,
+            measured * A9_SLOWDOWN
+        );
+    }
+    Ok(())
+}
 
-    // Capture, from the timing model.
-    let sensor = SensorConfig::default();
-    let row = crate::fabric_source::row_pixclk(&sensor);
-    let readout_ms = crate::fabric_source::readout_pixclk(&sensor) as f64 / PIXCLK_HZ * 1e3;
-    let exposures_us: Vec<f64> = EXPOSURES_S.iter().map(|e| e * 1e6).collect();
-    let settings = crate::fabric_source::FabricSettings {
-        sensor: sensor.clone(),
-        i2c: skylux_hps::fpga::sensor::I2cTiming {
-            half_period_cycles: 500,
-            timeout_cycles: 1_000_000,
-        },
-        shield: skylux_hps::fpga::sequence::ShieldConfig {
-            steps: 3,
-            step_period_cycles: 100_000,
-            limit_cycles: skylux_regmap::seq::shield_limit::CYCLES.reset,
-            trigger_pulse_cycles: 100,
-        },
-        pixclk_hz: PIXCLK_HZ,
-        exposures_us: exposures_us.clone(),
-        gain: 1.0,
-        frame_timeout: std::time::Duration::from_secs(2),
-        reset_settle: std::time::Duration::from_millis(2),
-        active_origin: (16, 54),
-    };
-    let exposure_ms: Vec<f64> = exposures_us
-        .iter()
-        .map(|e| {
-            let sw = ((e * 1e-6 * PIXCLK_HZ + 426.0) / row as f64)
-                .round()
-                .max(1.0);
-            (sw * row as f64 - 426.0).max(0.0) / PIXCLK_HZ * 1e3
-        })
-        .collect();
-    let capture_ms: f64 = exposure_ms.iter().map(|e| e + readout_ms).sum();
-    let shield_plan =
-        match crate::fabric_source::plan_exposures(&settings, skylux_regmap::SYS_CLOCK_HZ) {
-            Ok(p) => format!("{} opening(s): {:?}", p.openings.len(), p.openings),
-            Err(e) => format!("refused: {e}"),
+/// The capture's duration from the timing model: full frames at the default exposures.
+struct CaptureModel {
+    row_pixclk: u64,
+    readout_ms: f64,
+    exposure_ms: Vec<f64>,
+    capture_ms: f64,
+    shield_plan: String,
+}
+
+impl CaptureModel {
+    fn new() -> Self {
+        let sensor = SensorConfig::default();
+        let row = crate::fabric_source::row_pixclk(&sensor);
+        let readout_ms = crate::fabric_source::readout_pixclk(&sensor) as f64 / PIXCLK_HZ * 1e3;
+        let exposures_us: Vec<f64> = EXPOSURES_S.iter().map(|e| e * 1e6).collect();
+        let settings = crate::fabric_source::FabricSettings {
+            sensor: sensor.clone(),
+            i2c: skylux_hps::fpga::sensor::I2cTiming {
+                half_period_cycles: 500,
+                timeout_cycles: 1_000_000,
+            },
+            shield: skylux_hps::fpga::sequence::ShieldConfig {
+                steps: 3,
+                step_period_cycles: 100_000,
+                limit_cycles: skylux_regmap::seq::shield_limit::CYCLES.reset,
+                trigger_pulse_cycles: 100,
+            },
+            pixclk_hz: PIXCLK_HZ,
+            exposures_us: exposures_us.clone(),
+            gain: 1.0,
+            frame_timeout: std::time::Duration::from_secs(2),
+            reset_settle: std::time::Duration::from_millis(2),
+            active_origin: (16, 54),
         };
+        let exposure_ms: Vec<f64> = exposures_us
+            .iter()
+            .map(|e| {
+                let sw = ((e * 1e-6 * PIXCLK_HZ + 426.0) / row as f64)
+                    .round()
+                    .max(1.0);
+                (sw * row as f64 - 426.0).max(0.0) / PIXCLK_HZ * 1e3
+            })
+            .collect();
+        let capture_ms: f64 = exposure_ms.iter().map(|e| e + readout_ms).sum();
+        let shield_plan =
+            match crate::fabric_source::plan_exposures(&settings, skylux_regmap::SYS_CLOCK_HZ) {
+                Ok(p) => format!("{} opening(s): {:?}", p.openings.len(), p.openings),
+                Err(e) => format!("refused: {e}"),
+            };
+        Self {
+            row_pixclk: row,
+            readout_ms,
+            exposure_ms,
+            capture_ms,
+            shield_plan,
+        }
+    }
+}
 
-    // HPS read of five raw full frames from the ring.
+/// The HPS reading five raw full frames back from the ring.
+struct HpsRead {
+    /// Median over the repeats.
+    ms: f64,
+    transfer_bytes: u64,
+}
+
+fn hps_read(repeat: usize) -> HpsRead {
     let payload_words = (WIDTH_PX / 2 * HEIGHT_PX) as u32;
     let stride = (descriptor::PAYLOAD_OFFSET_BYTES + 4 * payload_words).div_ceil(8) * 8;
     let ring = RingLayout {
@@ -110,7 +178,7 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
     };
     let mut buffer = Buffer(vec![0u8; 5 * stride as usize]);
     let words: Vec<u32> = (0..payload_words)
-        .map(|i| (i % 4096) | ((i * 7 % 4096) << 16))
+        .map(|i| raw::pack((i % 4096) as u16, (i * 7 % 4096) as u16))
         .collect();
     for slot in 0..5u32 {
         let d = Descriptor {
@@ -134,20 +202,33 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
         }
     }
     let mut samples = vec![0u16; WIDTH_PX * HEIGHT_PX];
-    let hps_read_ms = median_ms(repeat, || {
+    let ms = median_ms(repeat, || {
         for slot in 0..5 {
             let Ok(Some(c)) = ring.read_slot(&mut buffer, slot) else {
                 return;
             };
             assert!(c.is_good());
             for (pair, w) in samples.chunks_exact_mut(2).zip(&c.words) {
-                pair[0] = (w & 0xFFF) as u16;
-                pair[1] = ((w >> 16) & 0xFFF) as u16;
+                pair.copy_from_slice(&raw::samples(*w));
             }
         }
     });
-    let transfer_bytes = 5 * u64::from(4 * payload_words);
+    HpsRead {
+        ms,
+        transfer_bytes: 5 * u64::from(4 * payload_words),
+    }
+}
 
+/// The processing of one cycle, timed on one core here.
+struct Processing {
+    hdr_ms: f64,
+    sun_ms: f64,
+    dc_ms: f64,
+    dc_sky_ms: f64,
+    sky_patches: usize,
+}
+
+fn processing(repeat: usize) -> anyhow::Result<Processing> {
     // HDR, one core.
     let case = HdrCase::new();
     let one = rayon::ThreadPoolBuilder::new().num_threads(1).build()?;
@@ -171,44 +252,16 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
     // Daylight-coefficient update, 400 sensors, MF4.
     let case = skylux_sim::dc_case::DcCase::new();
     let (dc, lum) = (&case.dc, &case.luminance_cd_m2);
-    let (sensors, patches) = (dc.sensors.len(), case.sky_patches);
-    let mut out = vec![0.0; sensors];
+    let mut out = vec![0.0; dc.sensors.len()];
     let dc_ms = median_ms(repeat.max(11), || {
         let _ = one.install(|| dc.apply_into(lum, &mut out));
     });
     let dc_sky_ms = median_ms(repeat.max(11), || case.sky_only_update(&mut out));
-
-    let measured = hps_read_ms + hdr_ms + sun_ms + dc_ms;
-    let result = serde_json::json!({
-        "frame": [WIDTH_PX, HEIGHT_PX],
-        "pixclk_hz": PIXCLK_HZ,
-        "row_pixclk": row,
-        "readout_ms_per_frame": readout_ms,
-        "exposure_ms": exposure_ms,
-        "capture_ms": capture_ms,
-        "shield_plan": shield_plan,
-        "transfer_bytes": transfer_bytes,
-        "dma_rate_mb_s": 4.0 / 2.0 * PIXCLK_HZ / 1e6,
-        "hps_read_5_frames_ms": hps_read_ms,
-        "hdr_5_frames_one_core_ms": hdr_ms,
-        "sun_extraction_ms": sun_ms,
-        "dc_update_400_sensors_sky_and_ground_ms": dc_ms,
-        "dc_update_400_sensors_sky_only_ms": dc_sky_ms,
-        "sky_patches": patches,
-        "processing_here_ms": measured,
-        "a9_slowdown": A9_SLOWDOWN,
-        "processing_a9_estimate_ms": measured * A9_SLOWDOWN,
-        "cycle_a9_estimate_ms": capture_ms + measured * A9_SLOWDOWN,
-        "repeat": repeat,
-    });
-    println!("{result}");
-    if !json {
-        eprintln!(
-            "capture {capture_ms:.1} ms (model) | HPS read {hps_read_ms:.1} ms | HDR \
-             {hdr_ms:.1} ms | sun {sun_ms:.1} ms | DC {dc_ms:.2} ms | A9 estimate of the \
-             processing {:.0} ms",
-            measured * A9_SLOWDOWN
-        );
-    }
-    Ok(())
+    Ok(Processing {
+        hdr_ms,
+        sun_ms,
+        dc_ms,
+        dc_sky_ms,
+        sky_patches: case.sky_patches,
+    })
 }

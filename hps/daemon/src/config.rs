@@ -10,8 +10,8 @@ use skylux_regmap::{LW_BRIDGE_PHYS_BASE, LW_BRIDGE_SPAN_BYTES};
 use std::net::SocketAddr;
 use std::path::{Path, PathBuf};
 
-/// The API address when the config names none: loopback only (issue 8, "bound to 127.0.0.1
-/// by default"); port 8740 is a project choice.
+/// The API address when the config names none: loopback only (the specification: "bound to
+/// 127.0.0.1 by default"); port 8740 is a project choice.
 pub const DEFAULT_API_ADDRESS: &str = "127.0.0.1:8740";
 
 /// The DMA buffers' physical region: the `reserved-memory` node with `no-map` of
@@ -520,158 +520,232 @@ impl Config {
             .unwrap_or_else(|| self.output.dir.join("cache"))
     }
 
+    /// Each section checks itself; the first field refused is reported with its section, key
+    /// and line.
     fn validate(&self, text: &str) -> Result<(), ConfigError> {
-        let bad = |section: &str, key: &str, message: String| ConfigError::Invalid {
-            path: self.path.clone(),
-            line: line_of(text, section, key),
-            field: if section.is_empty() {
-                key.to_string()
-            } else {
-                format!("{section}.{key}")
-            },
-            message,
+        let in_section = |section: &'static str| {
+            move |e: FieldError| ConfigError::Invalid {
+                path: self.path.clone(),
+                line: line_of(text, section, e.key),
+                field: format!("{section}.{}", e.key),
+                message: e.message,
+            }
         };
-        let s = &self.site;
-        if !(s.latitude_deg.is_finite() && (-90.0..=90.0).contains(&s.latitude_deg)) {
-            return Err(bad(
-                "site",
+        self.site.check().map_err(in_section("site"))?;
+        self.camera.check().map_err(in_section("camera"))?;
+        self.room.check().map_err(in_section("room"))?;
+        self.capture.check().map_err(in_section("capture"))?;
+        self.output.check().map_err(in_section("output"))?;
+        self.api.check().map_err(in_section("api"))?;
+        self.retry.check().map_err(in_section("retry"))?;
+        self.hardware.check().map_err(in_section("hardware"))?;
+        self.sim.check().map_err(in_section("sim"))?;
+        self.fabric.check().map_err(in_section("fabric"))?;
+        self.sim.check_fault_source().map_err(in_section("sim"))?;
+        for f in &self.sim.faults {
+            f.check().map_err(in_section("sim.fault"))?;
+        }
+        Ok(())
+    }
+}
+
+/// A field a section refuses, and why.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FieldError {
+    pub key: &'static str,
+    pub message: String,
+}
+
+fn refuse(key: &'static str, message: impl Into<String>) -> Result<(), FieldError> {
+    Err(FieldError {
+        key,
+        message: message.into(),
+    })
+}
+
+impl SiteConfig {
+    fn check(&self) -> Result<(), FieldError> {
+        if !(self.latitude_deg.is_finite() && (-90.0..=90.0).contains(&self.latitude_deg)) {
+            return refuse(
                 "latitude_deg",
-                format!("{} is outside [-90, 90]", s.latitude_deg),
-            ));
+                format!("{} is outside [-90, 90]", self.latitude_deg),
+            );
         }
-        if !(s.longitude_deg.is_finite() && (-180.0..=180.0).contains(&s.longitude_deg)) {
-            return Err(bad(
-                "site",
+        if !(self.longitude_deg.is_finite() && (-180.0..=180.0).contains(&self.longitude_deg)) {
+            return refuse(
                 "longitude_deg",
-                format!("{} is outside [-180, 180] (east positive)", s.longitude_deg),
-            ));
+                format!(
+                    "{} is outside [-180, 180] (east positive)",
+                    self.longitude_deg
+                ),
+            );
         }
-        if !(s.elevation_m.is_finite() && (-500.0..=9000.0).contains(&s.elevation_m)) {
-            return Err(bad(
-                "site",
+        if !(self.elevation_m.is_finite() && (-500.0..=9000.0).contains(&self.elevation_m)) {
+            return refuse(
                 "elevation_m",
-                format!("{} is outside [-500, 9000] m", s.elevation_m),
-            ));
+                format!("{} is outside [-500, 9000] m", self.elevation_m),
+            );
         }
-        if parse_offset(&s.utc_offset).is_none() {
-            return Err(bad(
-                "site",
+        if parse_offset(&self.utc_offset).is_none() {
+            return refuse(
                 "utc_offset",
-                format!("{:?} is not an offset such as +02:00 or Z", s.utc_offset),
-            ));
+                format!("{:?} is not an offset such as +02:00 or Z", self.utc_offset),
+            );
         }
-        let c = &self.camera;
-        if c.exposures_us.is_empty() || c.exposures_us.len() > skylux_hps::fpga::MAX_EXPOSURES {
-            return Err(bad(
-                "camera",
+        Ok(())
+    }
+}
+
+impl CameraConfig {
+    fn check(&self) -> Result<(), FieldError> {
+        let n = self.exposures_us.len();
+        if n == 0 || n > skylux_hps::fpga::MAX_EXPOSURES {
+            return refuse(
                 "exposures_us",
                 format!(
-                    "{} exposures: a sequence holds 1 to {} (seq.* registers)",
-                    c.exposures_us.len(),
+                    "{n} exposures: a sequence holds 1 to {} (seq.* registers)",
                     skylux_hps::fpga::MAX_EXPOSURES
                 ),
-            ));
+            );
         }
-        if let Some(t) = c
+        if let Some(t) = self
             .exposures_us
             .iter()
             .find(|t| !(t.is_finite() && **t > 0.0 && **t <= 10e6))
         {
-            return Err(bad(
-                "camera",
+            return refuse(
                 "exposures_us",
                 format!("{t} must be a positive time up to 10 s"),
-            ));
+            );
         }
-        if !(c.gain.is_finite() && (1.0..=64.0).contains(&c.gain)) {
-            return Err(bad(
-                "camera",
-                "gain",
-                format!("{} is outside [1, 64]", c.gain),
-            ));
+        if !(self.gain.is_finite() && (1.0..=64.0).contains(&self.gain)) {
+            return refuse("gain", format!("{} is outside [1, 64]", self.gain));
         }
-        let r = &self.room;
-        if r.scene.is_empty() {
-            return Err(bad("room", "scene", "name at least one scene file".into()));
+        Ok(())
+    }
+}
+
+impl RoomConfig {
+    fn check(&self) -> Result<(), FieldError> {
+        if self.scene.is_empty() {
+            return refuse("scene", "name at least one scene file");
         }
-        if !(1..=8).contains(&r.mf) {
-            return Err(bad("room", "mf", format!("{} is outside 1..=8", r.mf)));
+        if !(1..=8).contains(&self.mf) {
+            return refuse("mf", format!("{} is outside 1..=8", self.mf));
         }
-        if r.dc_samples == 0 || r.monte_carlo_samples == 0 {
-            return Err(bad(
-                "room",
-                if r.dc_samples == 0 {
-                    "dc_samples"
-                } else {
-                    "monte_carlo_samples"
-                },
-                "must be at least 1".into(),
-            ));
+        if self.dc_samples == 0 {
+            return refuse("dc_samples", "must be at least 1");
         }
-        if r.ambient_bounces > 100 {
-            return Err(bad(
-                "room",
+        if self.monte_carlo_samples == 0 {
+            return refuse("monte_carlo_samples", "must be at least 1");
+        }
+        if self.ambient_bounces > 100 {
+            return refuse(
                 "ambient_bounces",
-                format!("{} is above 100", r.ambient_bounces),
-            ));
+                format!("{} is above 100", self.ambient_bounces),
+            );
         }
-        let p = self.capture.period_s;
+        Ok(())
+    }
+}
+
+impl ScheduleConfig {
+    fn check(&self) -> Result<(), FieldError> {
+        let p = self.period_s;
         if !(p.is_finite() && (1.0..=86_400.0).contains(&p)) {
-            return Err(bad(
-                "capture",
-                "period_s",
-                format!("{p} is outside [1, 86400] s"),
-            ));
+            return refuse("period_s", format!("{p} is outside [1, 86400] s"));
         }
-        if self.output.dir.as_os_str().is_empty() {
-            return Err(bad("output", "dir", "must name a directory".into()));
+        Ok(())
+    }
+}
+
+impl OutputConfig {
+    fn check(&self) -> Result<(), FieldError> {
+        if self.dir.as_os_str().is_empty() {
+            return refuse("dir", "must name a directory");
         }
-        let addr: SocketAddr = self.api.address.parse().map_err(|_| {
-            bad(
-                "api",
+        Ok(())
+    }
+}
+
+impl ApiConfig {
+    fn check(&self) -> Result<(), FieldError> {
+        let Ok(addr) = self.address.parse::<SocketAddr>() else {
+            return refuse(
                 "address",
-                format!("{:?} is not an IP address and port", self.api.address),
-            )
-        })?;
-        if !addr.ip().is_loopback() && !self.api.allow_remote {
-            return Err(bad(
-                "api",
+                format!("{:?} is not an IP address and port", self.address),
+            );
+        };
+        if !addr.ip().is_loopback() && !self.allow_remote {
+            return refuse(
                 "address",
                 format!(
                     "{addr} is not a loopback address: the API would be reachable from the \
                      network; set api.allow_remote = true to mean it"
                 ),
-            ));
+            );
         }
-        let q = &self.retry;
-        if !(q.initial_s.is_finite() && q.initial_s > 0.0 && q.max_s.is_finite())
-            || q.max_s < q.initial_s
-            || q.max_s > 86_400.0
+        Ok(())
+    }
+}
+
+impl RetryConfig {
+    fn check(&self) -> Result<(), FieldError> {
+        if !(self.initial_s.is_finite() && self.initial_s > 0.0 && self.max_s.is_finite())
+            || self.max_s < self.initial_s
+            || self.max_s > 86_400.0
         {
-            return Err(bad(
-                "retry",
+            return refuse(
                 "initial_s",
                 format!(
                     "initial_s = {} and max_s = {} must satisfy 0 < initial_s <= max_s <= 86400",
-                    q.initial_s, q.max_s
+                    self.initial_s, self.max_s
                 ),
-            ));
+            );
         }
-        check_hardware(&self.hardware).map_err(|(key, message)| bad("hardware", key, message))?;
-        if !(1..=64).contains(&self.sim.skip) {
-            return Err(bad(
-                "sim",
-                "skip",
-                format!("{} is outside 1..=64", self.sim.skip),
-            ));
+        Ok(())
+    }
+}
+
+impl SimConfig {
+    fn check(&self) -> Result<(), FieldError> {
+        if !(1..=64).contains(&self.skip) {
+            return refuse("skip", format!("{} is outside 1..=64", self.skip));
         }
-        let fw = &self.fabric;
+        Ok(())
+    }
+
+    /// Injected faults only with the `sim` source.
+    fn check_fault_source(&self) -> Result<(), FieldError> {
+        if self.source == SimSourceKind::Fabric && !self.faults.is_empty() {
+            return refuse(
+                "source",
+                "injected faults ([[sim.fault]]) belong to the `sim` source; the fabric \
+                 source's faults are the simulated hardware's",
+            );
+        }
+        Ok(())
+    }
+}
+
+impl FaultRule {
+    fn check(&self) -> Result<(), FieldError> {
+        if self.attempt == 0 || self.count == 0 {
+            return refuse("attempt", "attempt (1-based) and count must be at least 1");
+        }
+        Ok(())
+    }
+}
+
+impl FabricConfig {
+    /// The window as the sensor driver would program it, and the frame timeout.
+    fn check(&self) -> Result<(), FieldError> {
         let window = skylux_hps::fpga::sensor::SensorConfig {
-            row_start: fw.row_start,
-            col_start: fw.col_start,
-            width: fw.width,
-            height: fw.height,
-            skip: fw.skip,
+            row_start: self.row_start,
+            col_start: self.col_start,
+            width: self.width,
+            height: self.height,
+            skip: self.skip,
             ..Default::default()
         };
         if let Err(skylux_hps::fpga::sensor::SensorError::OutOfRange {
@@ -687,111 +761,91 @@ impl Config {
                 "width" => "width",
                 _ => "skip",
             };
-            return Err(bad(
-                "fabric",
-                key,
-                format!("{value} is out of range ({allowed})"),
-            ));
+            return refuse(key, format!("{value} is out of range ({allowed})"));
         }
-        if !(fw.frame_timeout_s.is_finite() && (0.0..=600.0).contains(&fw.frame_timeout_s)) {
-            return Err(bad(
-                "fabric",
+        if !(self.frame_timeout_s.is_finite() && (0.0..=600.0).contains(&self.frame_timeout_s)) {
+            return refuse(
                 "frame_timeout_s",
-                format!("{} is outside 0 to 600 s", fw.frame_timeout_s),
-            ));
-        }
-        if self.sim.source == SimSourceKind::Fabric && !self.sim.faults.is_empty() {
-            return Err(bad(
-                "sim",
-                "source",
-                "injected faults ([[sim.fault]]) belong to the `sim` source; the fabric \
-                 source's faults are the simulated hardware's"
-                    .into(),
-            ));
-        }
-        for f in &self.sim.faults {
-            if f.attempt == 0 || f.count == 0 {
-                return Err(bad(
-                    "sim.fault",
-                    "attempt",
-                    "attempt (1-based) and count must be at least 1".into(),
-                ));
-            }
+                format!("{} is outside 0 to 600 s", self.frame_timeout_s),
+            );
         }
         Ok(())
     }
 }
 
-/// The least-privilege rule: the daemon maps the register window of the lightweight
-/// HPS-to-FPGA bridge (physical 0xFF200000, 2 MiB: hardware-facts.md §3.1, docs/registers.md)
-/// and a DMA buffer inside the reserved, `no-map` region ([`DMA_RESERVED_BASE`],
-/// hardware-facts.md §3.4), nothing else: not the H2F window, the SDRAM the kernel uses,
-/// the peripherals (reset manager, SDRAM controller) nor the GIC. Both windows must be
-/// page-aligned and non-empty. Returns the offending key and why.
-pub fn check_hardware(h: &HardwareConfig) -> Result<(), (&'static str, String)> {
-    let lw_base = LW_BRIDGE_PHYS_BASE as u64;
-    let lw_span = LW_BRIDGE_SPAN_BYTES as u64;
-    if h.register_base != lw_base {
-        return Err((
-            "register_base",
-            format!(
-                "{:#x}: the only register window skyluxd maps is the lightweight bridge's at \
+impl HardwareConfig {
+    /// The least-privilege rule: the daemon maps the register window of the lightweight
+    /// HPS-to-FPGA bridge (physical 0xFF200000, 2 MiB: hardware-facts.md §3.1, docs/registers.md)
+    /// and a DMA buffer inside the reserved, `no-map` region ([`DMA_RESERVED_BASE`],
+    /// hardware-facts.md §3.4), nothing else: not the H2F window, the SDRAM the kernel uses,
+    /// the peripherals (reset manager, SDRAM controller) nor the GIC. Both windows must be
+    /// page-aligned and non-empty.
+    pub fn check(&self) -> Result<(), FieldError> {
+        let h = self;
+        let lw_base = LW_BRIDGE_PHYS_BASE as u64;
+        let lw_span = LW_BRIDGE_SPAN_BYTES as u64;
+        if h.register_base != lw_base {
+            return refuse(
+                "register_base",
+                format!(
+                    "{:#x}: the only register window skyluxd maps is the lightweight bridge's at \
                  {lw_base:#x} (hardware-facts.md §3.1)",
-                h.register_base
-            ),
-        ));
-    }
-    if h.register_size == 0
-        || h.register_size > lw_span
-        || !h.register_size.is_multiple_of(PAGE_BYTES)
-    {
-        return Err((
-            "register_size",
-            format!(
-                "{:#x}: must be a non-zero multiple of {PAGE_BYTES:#x} up to the bridge's \
+                    h.register_base
+                ),
+            );
+        }
+        if h.register_size == 0
+            || h.register_size > lw_span
+            || !h.register_size.is_multiple_of(PAGE_BYTES)
+        {
+            return refuse(
+                "register_size",
+                format!(
+                    "{:#x}: must be a non-zero multiple of {PAGE_BYTES:#x} up to the bridge's \
                  {lw_span:#x} bytes",
-                h.register_size
-            ),
-        ));
-    }
-    let end = h.dma_base.checked_add(h.dma_size);
-    let reserved_end = DMA_RESERVED_BASE + DMA_RESERVED_SIZE;
-    if h.dma_size == 0
-        || !h.dma_base.is_multiple_of(PAGE_BYTES)
-        || !h.dma_size.is_multiple_of(PAGE_BYTES)
-        || h.dma_base < DMA_RESERVED_BASE
-        || end.is_none_or(|e| e > reserved_end)
-    {
-        return Err((
-            if h.dma_base < DMA_RESERVED_BASE || !h.dma_base.is_multiple_of(PAGE_BYTES) {
-                "dma_base"
-            } else {
-                "dma_size"
-            },
-            format!(
-                "{:#x} + {:#x}: the DMA buffer must be a non-empty, page-aligned part of the \
+                    h.register_size
+                ),
+            );
+        }
+        let end = h.dma_base.checked_add(h.dma_size);
+        let reserved_end = DMA_RESERVED_BASE + DMA_RESERVED_SIZE;
+        if h.dma_size == 0
+            || !h.dma_base.is_multiple_of(PAGE_BYTES)
+            || !h.dma_size.is_multiple_of(PAGE_BYTES)
+            || h.dma_base < DMA_RESERVED_BASE
+            || end.is_none_or(|e| e > reserved_end)
+        {
+            return refuse(
+                if h.dma_base < DMA_RESERVED_BASE || !h.dma_base.is_multiple_of(PAGE_BYTES) {
+                    "dma_base"
+                } else {
+                    "dma_size"
+                },
+                format!(
+                    "{:#x} + {:#x}: the DMA buffer must be a non-empty, page-aligned part of the \
                  reserved no-map region {DMA_RESERVED_BASE:#x}..{reserved_end:#x} \
                  (bitstream/linux/skylux-overlay.dts; hardware-facts.md §3.4)",
-                h.dma_base, h.dma_size
-            ),
-        ));
-    }
-    if let Some(u) = &h.uio_device {
-        let ok = u
-            .to_str()
-            .and_then(|s| s.strip_prefix("/dev/uio"))
-            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()));
-        if !ok {
-            return Err(("uio_device", format!("{}: expected /dev/uioN", u.display())));
+                    h.dma_base, h.dma_size
+                ),
+            );
         }
+        if let Some(u) = &h.uio_device {
+            let ok = u
+                .to_str()
+                .and_then(|s| s.strip_prefix("/dev/uio"))
+                .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()));
+            if !ok {
+                return refuse("uio_device", format!("{}: expected /dev/uioN", u.display()));
+            }
+        }
+        if h.user.is_empty() || h.user == "root" {
+            return refuse(
+                "user",
+                "name the unprivileged user to run as after mapping (not root)",
+            );
+        }
+        Ok(())
     }
-    if h.user.is_empty() || h.user == "root" {
-        return Err((
-            "user",
-            "name the unprivileged user to run as after mapping (not root)".into(),
-        ));
-    }
-    Ok(())
 }
 
 /// `+HH:MM`, `-HH:MM` or `Z`.

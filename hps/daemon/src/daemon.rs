@@ -126,33 +126,65 @@ impl FaultHook for SimOutputFaults<'_> {
 
 /// Runs the daemon; returns the process exit status.
 pub fn run(options: &Options) -> i32 {
-    let mut config = match Config::load(&options.config, &options.overrides) {
-        Ok(c) => c,
-        Err(e) => {
-            tracing::error!(kind = "config", "refusing to start: {e}");
-            return EXIT_CONFIG;
+    match start(options) {
+        Ok(mut daemon) => {
+            daemon.serve();
+            daemon.notifier.stopping();
+            daemon.api.stop();
+            tracing::info!(
+                cycles_ok = daemon.counts.ok,
+                attempts = daemon.counts.attempts,
+                "skyluxd stopped"
+            );
+            0
         }
-    };
-    if let (Some(_), None) | (None, Some(_)) = (options.time_start, options.time_step_s) {
-        tracing::error!(
-            kind = "config",
-            "--time-start and --time-step-s go together"
-        );
-        return EXIT_CONFIG;
+        Err(code) => code,
     }
-    if options.time_start.is_some() && !options.sim {
-        tracing::error!(
-            kind = "config",
-            "a simulated clock (--time-start) needs --sim"
-        );
-        return EXIT_CONFIG;
-    }
-    if let Some(s) = options.time_step_s {
-        if !(s.is_finite() && (1.0..=86_400.0 * 366.0).contains(&s)) {
-            tracing::error!(kind = "config", "--time-step-s {s}: expected 1 s to a year");
-            return EXIT_CONFIG;
-        }
-    }
+}
+
+/// The stop (SIGTERM, SIGINT) and reload (SIGHUP) flags.
+struct Signals {
+    stop: Arc<AtomicBool>,
+    reload: Arc<AtomicBool>,
+}
+
+/// Cycles counted since start.
+#[derive(Clone, Copy, Debug, Default)]
+struct CycleCounts {
+    /// Cycles that wrote their results.
+    ok: u64,
+    attempts: u64,
+    /// Failures since the last success.
+    consecutive_failures: u64,
+}
+
+/// A started daemon: everything the schedule needs.
+struct Daemon<'a> {
+    options: &'a Options,
+    config: Config,
+    kind: SourceKind,
+    source: Box<dyn CaptureSource>,
+    pipeline: Pipeline,
+    signals: Signals,
+    notifier: Notifier,
+    last_ping: Instant,
+    state: SharedState,
+    api: ApiServer,
+    clock: Clock,
+    /// Opened lazily, so a full or read-only disk at start is retried like any other failure.
+    output: Option<Output>,
+    api_address_written: bool,
+    counts: CycleCounts,
+}
+
+/// Start-up: configuration, signals, hardware and source, the room, the API and the clock.
+/// `Err`: the exit status (0 when a stop was requested during the room's computation).
+fn start(options: &Options) -> Result<Daemon<'_>, i32> {
+    let config = Config::load(&options.config, &options.overrides).map_err(|e| {
+        tracing::error!(kind = "config", "refusing to start: {e}");
+        EXIT_CONFIG
+    })?;
+    check_clock_options(options)?;
     tracing::info!(
         config = %config.path.display(),
         output = %config.output.dir.display(),
@@ -160,23 +192,92 @@ pub fn run(options: &Options) -> i32 {
         "skyluxd {} starting",
         env!("CARGO_PKG_VERSION")
     );
+    let signals = install_signal_handlers()?;
+    let (kind, source) = open_source(options, &config, &signals.stop)?;
+    let notifier = Notifier::from_env();
+    let last_ping = Instant::now();
+    let pipeline = compute_room(&config, &signals.stop, &notifier)?;
+    let (state, api) = start_api(&config)?;
+    let offset = config.utc_offset();
+    let clock = match (options.time_start, options.time_step_s) {
+        (Some(start), Some(step)) => Clock::Sim {
+            now: start.with_timezone(&offset),
+            step: chrono::TimeDelta::milliseconds((step * 1e3).round() as i64),
+        },
+        _ => Clock::Wall {
+            offset,
+            next_due: None,
+        },
+    };
+    notifier.ready(&format!("API on {}", api.address));
+    Ok(Daemon {
+        options,
+        config,
+        kind,
+        source,
+        pipeline,
+        signals,
+        notifier,
+        last_ping,
+        state,
+        api,
+        clock,
+        output: None,
+        api_address_written: false,
+        counts: CycleCounts::default(),
+    })
+}
 
+/// The simulated clock's options: both or neither, only with `--sim`, a step from 1 s to a
+/// year.
+fn check_clock_options(options: &Options) -> Result<(), i32> {
+    if let (Some(_), None) | (None, Some(_)) = (options.time_start, options.time_step_s) {
+        tracing::error!(
+            kind = "config",
+            "--time-start and --time-step-s go together"
+        );
+        return Err(EXIT_CONFIG);
+    }
+    if options.time_start.is_some() && !options.sim {
+        tracing::error!(
+            kind = "config",
+            "a simulated clock (--time-start) needs --sim"
+        );
+        return Err(EXIT_CONFIG);
+    }
+    if let Some(s) = options.time_step_s {
+        if !(s.is_finite() && (1.0..=86_400.0 * 366.0).contains(&s)) {
+            tracing::error!(kind = "config", "--time-step-s {s}: expected 1 s to a year");
+            return Err(EXIT_CONFIG);
+        }
+    }
+    Ok(())
+}
+
+fn install_signal_handlers() -> Result<Signals, i32> {
     let stop = Arc::new(AtomicBool::new(false));
     for signal in [signal_hook::consts::SIGTERM, signal_hook::consts::SIGINT] {
         if let Err(e) = signal_hook::flag::register(signal, stop.clone()) {
             tracing::error!(error = %e, "cannot install the signal handler");
-            return EXIT_SOFTWARE;
+            return Err(EXIT_SOFTWARE);
         }
     }
     let reload = Arc::new(AtomicBool::new(false));
     if let Err(e) = signal_hook::flag::register(signal_hook::consts::SIGHUP, reload.clone()) {
         tracing::error!(error = %e, "cannot install the SIGHUP handler");
-        return EXIT_SOFTWARE;
+        return Err(EXIT_SOFTWARE);
     }
+    Ok(Signals { stop, reload })
+}
 
-    // The hardware: map the two windows, then give up root, then bring the fabric up (before
-    // the long first daylight-coefficient computation, so a dead fabric is reported at once).
-    // In --sim nothing is mapped.
+/// The hardware: map the two windows, then give up root, then bring the fabric up (before
+/// the long first daylight-coefficient computation, so a dead fabric is reported at once).
+/// In --sim nothing is mapped.
+fn open_source(
+    options: &Options,
+    config: &Config,
+    stop: &Arc<AtomicBool>,
+) -> Result<(SourceKind, Box<dyn CaptureSource>), i32> {
     let mut kind = if options.sim {
         tracing::info!(
             source = ?config.sim.source,
@@ -187,29 +288,26 @@ pub fn run(options: &Options) -> i32 {
             SimSourceKind::Fabric => SourceKind::FabricSim,
         }
     } else {
-        match map_hardware(&config) {
-            Ok(windows) => SourceKind::Board(Some(windows)),
-            Err(code) => return code,
-        }
+        SourceKind::Board(Some(map_hardware(config)?))
     };
-    let mut source = match make_source(&mut kind, &config, stop.clone()) {
-        Ok(s) => s,
+    match make_source(&mut kind, config, stop.clone()) {
+        Ok(source) => Ok((kind, source)),
         Err(e) => {
             tracing::error!(kind = e.kind(), "cannot set up the capture source: {e}");
-            return if options.sim {
+            Err(if options.sim {
                 EXIT_CONFIG
             } else {
                 EXIT_UNAVAILABLE
-            };
+            })
         }
-    };
-    let notifier = Notifier::from_env();
-    let mut last_ping = Instant::now();
+    }
+}
 
-    // The room and its daylight coefficients (minutes the first time, then cached), on a
-    // thread of its own so that SIGTERM ends the wait at once: the computation is abandoned
-    // and the cache is never left partly written (cycle.rs writes it whole, then renames it,
-    // and not at all once abandoned).
+/// The room and its daylight coefficients (minutes the first time, then cached), on a thread
+/// of its own so that SIGTERM ends the wait at once: the computation is abandoned and the
+/// cache is never left partly written (cycle.rs writes it whole, then renames it, and not at
+/// all once abandoned).
+fn compute_room(config: &Config, stop: &AtomicBool, notifier: &Notifier) -> Result<Pipeline, i32> {
     notifier.status("computing daylight coefficients");
     let cancel = Arc::new(AtomicBool::new(false));
     let worker = {
@@ -239,150 +337,120 @@ pub fn run(options: &Options) -> i32 {
     };
     while !worker.is_finished() {
         if stop.load(Ordering::Relaxed) {
-            crate::cycle::abandon_dc(&cancel, &config);
+            crate::cycle::abandon_dc(&cancel, config);
             tracing::info!(
                 "stop requested during the daylight-coefficient computation: abandoned, \
                  nothing cached; exiting"
             );
             notifier.stopping();
-            return 0;
+            return Err(0);
         }
         std::thread::sleep(Duration::from_millis(20));
     }
-    let pipeline = match worker.join() {
-        Ok(p) => p,
-        Err(_) => {
-            tracing::error!(
-                kind = "room",
-                "the daylight-coefficient computation panicked"
-            );
-            return EXIT_SOFTWARE;
-        }
+    let Ok(pipeline) = worker.join() else {
+        tracing::error!(
+            kind = "room",
+            "the daylight-coefficient computation panicked"
+        );
+        return Err(EXIT_SOFTWARE);
     };
-    let mut pipeline = match pipeline {
-        Ok(p) => p,
-        Err(e) => {
-            tracing::error!(kind = "room", "cannot set up the pipeline: {e}");
-            return EXIT_CONFIG;
-        }
-    };
+    pipeline.map_err(|e| {
+        tracing::error!(kind = "room", "cannot set up the pipeline: {e}");
+        EXIT_CONFIG
+    })
+}
 
+fn start_api(config: &Config) -> Result<(SharedState, ApiServer), i32> {
     let state: SharedState = Arc::new(std::sync::Mutex::new(ApiState {
         started_unix_s: Utc::now().timestamp_millis() as f64 / 1e3,
         ..ApiState::default()
     }));
-    let api = match ApiServer::start(config.api_address(), state.clone()) {
-        Ok(a) => a,
-        Err(e) => {
-            tracing::error!(kind = "api", "{e}");
-            return EXIT_UNAVAILABLE;
-        }
-    };
+    let api = ApiServer::start(config.api_address(), state.clone()).map_err(|e| {
+        tracing::error!(kind = "api", "{e}");
+        EXIT_UNAVAILABLE
+    })?;
     tracing::info!(address = %api.address, "API listening (GET /v1/latest, /v1/health, /v1/metrics)");
+    Ok((state, api))
+}
 
-    let offset = config.utc_offset();
-    let mut clock = match (options.time_start, options.time_step_s) {
-        (Some(start), Some(step)) => Clock::Sim {
-            now: start.with_timezone(&offset),
-            step: chrono::TimeDelta::milliseconds((step * 1e3).round() as i64),
-        },
-        _ => Clock::Wall {
-            offset,
-            next_due: None,
-        },
-    };
-
-    let mut output: Option<Output> = None;
-    let mut api_address_written = false;
-    notifier.ready(&format!("API on {}", api.address));
-    let (mut ok, mut attempts, mut consecutive) = (0u64, 0u64, 0u64);
-    loop {
-        ping(&notifier, &mut last_ping);
-        if stop.load(Ordering::Relaxed) {
-            tracing::info!("stop requested: exiting");
-            break;
-        }
-        if reload.swap(false, Ordering::Relaxed) {
-            if let Some(s) = reload_config(options, &mut config, &mut kind, &stop, ok + 1) {
-                source = s;
+impl Daemon<'_> {
+    /// The schedule: a cycle whenever one is due, until a stop, or `--cycles` are done.
+    fn serve(&mut self) {
+        let stop = self.signals.stop.clone();
+        loop {
+            ping(&self.notifier, &mut self.last_ping);
+            if stop.load(Ordering::Relaxed) {
+                tracing::info!("stop requested: exiting");
+                break;
             }
-        }
-        if options.cycles.is_some_and(|n| ok >= n) {
-            if options.serve_after {
-                sleep_interruptible(Duration::from_millis(200), &stop, &notifier, &mut last_ping);
-                continue;
-            }
-            tracing::info!(cycles = ok, "requested cycles done: exiting");
-            break;
-        }
-        // Wait for the capture's time (wall clock only).
-        if let Clock::Wall {
-            next_due: Some(due),
-            ..
-        } = &clock
-        {
-            let now = Instant::now();
-            if *due > now {
-                sleep_interruptible(*due - now, &stop, &notifier, &mut last_ping);
-                continue;
-            }
-        }
-        attempts += 1;
-        let at = clock.now();
-        // The output directory, opened (and repaired) lazily so a full or read-only disk at
-        // start is retried like any other failure.
-        if output.is_none() {
-            match Output::open(
-                &config.output.dir,
-                config.output.max_maps,
-                config.output.max_captures,
-            ) {
-                Ok((o, recovery)) => {
-                    if recovery.partial_bytes_dropped > 0 || recovery.stale_files_removed > 0 {
-                        tracing::warn!(
-                            partial_bytes_dropped = recovery.partial_bytes_dropped,
-                            stale_files_removed = recovery.stale_files_removed,
-                            "output: repaired what an interrupted write left"
-                        );
-                    }
-                    output = Some(o);
+            if self.signals.reload.swap(false, Ordering::Relaxed) {
+                let next_sequence = self.counts.ok + 1;
+                if let Some(s) = reload_config(
+                    self.options,
+                    &mut self.config,
+                    &mut self.kind,
+                    &stop,
+                    next_sequence,
+                ) {
+                    self.source = s;
                 }
-                Err(e) => {
-                    let err = CycleError::Output(e.to_string());
-                    consecutive += 1;
-                    fail(
-                        &state,
-                        &config,
-                        &mut clock,
-                        &err,
-                        at,
-                        attempts,
-                        consecutive,
-                        &notifier,
-                    );
+            }
+            if self.options.cycles.is_some_and(|n| self.counts.ok >= n) {
+                if self.options.serve_after {
+                    self.sleep(Duration::from_millis(200));
+                    continue;
+                }
+                tracing::info!(cycles = self.counts.ok, "requested cycles done: exiting");
+                break;
+            }
+            // Wait for the capture's time (wall clock only).
+            if let Clock::Wall {
+                next_due: Some(due),
+                ..
+            } = &self.clock
+            {
+                let now = Instant::now();
+                if *due > now {
+                    let wait = *due - now;
+                    self.sleep(wait);
                     continue;
                 }
             }
-        }
-        if !api_address_written {
-            let p = config.output.dir.join(API_ADDRESS_FILE);
-            match crate::output::write_atomic(&p, format!("{}\n", api.address).as_bytes()) {
-                Ok(()) => api_address_written = true,
-                Err(e) => tracing::warn!(error = %e, "cannot record the API address"),
+            if !self.attempt_cycle() {
+                break;
             }
         }
-        let Some(out) = output.as_mut() else { continue };
+    }
+
+    fn sleep(&mut self, d: Duration) {
+        sleep_interruptible(d, &self.signals.stop, &self.notifier, &mut self.last_ping);
+    }
+
+    /// One attempt at a cycle, its success or failure recorded; `false` when a stop came
+    /// during the capture.
+    fn attempt_cycle(&mut self) -> bool {
+        self.counts.attempts += 1;
+        let at = self.clock.now();
+        if let Err(e) = self.open_output() {
+            self.failed(&e, at);
+            return true;
+        }
+        self.record_api_address();
+        let Some(out) = self.output.as_mut() else {
+            return true;
+        };
         let started = Instant::now();
+        let (attempts, sequence) = (self.counts.attempts, self.counts.ok + 1);
         let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
             run_cycle(
-                source.as_mut(),
-                &mut pipeline,
+                self.source.as_mut(),
+                &mut self.pipeline,
                 out,
-                &config,
+                &self.config,
                 at,
                 attempts,
-                ok + 1,
-                &stop,
+                sequence,
+                &self.signals.stop,
             )
         }))
         .unwrap_or_else(|panic| {
@@ -396,71 +464,103 @@ pub fn run(options: &Options) -> i32 {
             )))
         });
         match result {
-            Ok(Some((record, output_ms))) => {
-                ok += 1;
-                consecutive = 0;
-                tracing::info!(
-                    sequence = record.sequence,
-                    time = %record.time,
-                    sun_altitude_deg = record.sun.spa_altitude_deg,
-                    sun_extracted = record.sun.extracted,
-                    sensors = record.illuminance.len(),
-                    first_lux = record.illuminance.first().map_or(f64::NAN, |s| s.lux),
-                    capture_ms = record.durations_ms.capture_ms,
-                    hdr_ms = record.durations_ms.hdr_ms,
-                    terms_ms = record.durations_ms.terms_ms,
-                    output_ms,
-                    cycle_ms = started.elapsed().as_secs_f64() * 1e3,
-                    "cycle done"
-                );
-                notifier.status(&format!("cycle {} at {}", record.sequence, record.time));
-                {
-                    let mut s = state.lock().unwrap_or_else(|p| p.into_inner());
-                    s.cycles_ok += 1;
-                    s.consecutive_failures = 0;
-                    s.last_durations = Some(record.durations_ms.clone());
-                    s.last_output_ms = output_ms;
-                    s.latest = Some(record);
-                }
-                match &mut clock {
-                    Clock::Sim { now, step } => *now += *step,
-                    Clock::Wall { next_due, .. } => {
-                        let period = Duration::from_secs_f64(config.capture.period_s);
-                        let due = next_due.map_or(started, |d| d) + period;
-                        // Fallen behind (a long cycle): start the schedule again from now.
-                        *next_due = Some(if due < Instant::now() {
-                            Instant::now()
-                        } else {
-                            due
-                        });
-                    }
-                }
-            }
+            Ok(Some((record, output_ms))) => self.succeeded(record, output_ms, started),
             Ok(None) => {
                 tracing::info!(
                     "stop requested during the capture: capture discarded, nothing written"
                 );
-                break;
+                return false;
             }
-            Err(e) => {
-                consecutive += 1;
-                fail(
-                    &state,
-                    &config,
-                    &mut clock,
-                    &e,
-                    at,
-                    attempts,
-                    consecutive,
-                    &notifier,
-                );
+            Err(e) => self.failed(&e, at),
+        }
+        true
+    }
+
+    /// The output directory, opened (and repaired) if it is not yet.
+    fn open_output(&mut self) -> Result<(), CycleError> {
+        if self.output.is_some() {
+            return Ok(());
+        }
+        let output = &self.config.output;
+        let (o, recovery) = Output::open(&output.dir, output.max_maps, output.max_captures)
+            .map_err(|e| CycleError::Output(e.to_string()))?;
+        if recovery.partial_bytes_dropped > 0 || recovery.stale_files_removed > 0 {
+            tracing::warn!(
+                partial_bytes_dropped = recovery.partial_bytes_dropped,
+                stale_files_removed = recovery.stale_files_removed,
+                "output: repaired what an interrupted write left"
+            );
+        }
+        self.output = Some(o);
+        Ok(())
+    }
+
+    fn record_api_address(&mut self) {
+        if self.api_address_written {
+            return;
+        }
+        let p = self.config.output.dir.join(API_ADDRESS_FILE);
+        match crate::output::write_atomic(&p, format!("{}\n", self.api.address).as_bytes()) {
+            Ok(()) => self.api_address_written = true,
+            Err(e) => tracing::warn!(error = %e, "cannot record the API address"),
+        }
+    }
+
+    fn succeeded(&mut self, record: crate::cycle::CycleRecord, output_ms: f64, started: Instant) {
+        self.counts.ok += 1;
+        self.counts.consecutive_failures = 0;
+        tracing::info!(
+            sequence = record.sequence,
+            time = %record.time,
+            sun_altitude_deg = record.sun.spa_altitude_deg,
+            sun_extracted = record.sun.extracted,
+            sensors = record.illuminance.len(),
+            first_lux = record.illuminance.first().map_or(f64::NAN, |s| s.lux),
+            capture_ms = record.durations_ms.capture_ms,
+            hdr_ms = record.durations_ms.hdr_ms,
+            terms_ms = record.durations_ms.terms_ms,
+            output_ms,
+            cycle_ms = started.elapsed().as_secs_f64() * 1e3,
+            "cycle done"
+        );
+        self.notifier
+            .status(&format!("cycle {} at {}", record.sequence, record.time));
+        {
+            let mut s = self.state.lock().unwrap_or_else(|p| p.into_inner());
+            s.cycles_ok += 1;
+            s.consecutive_failures = 0;
+            s.last_durations = Some(record.durations_ms.clone());
+            s.last_output_ms = output_ms;
+            s.latest = Some(record);
+        }
+        match &mut self.clock {
+            Clock::Sim { now, step } => *now += *step,
+            Clock::Wall { next_due, .. } => {
+                let period = Duration::from_secs_f64(self.config.capture.period_s);
+                let due = next_due.map_or(started, |d| d) + period;
+                // Fallen behind (a long cycle): start the schedule again from now.
+                *next_due = Some(if due < Instant::now() {
+                    Instant::now()
+                } else {
+                    due
+                });
             }
         }
     }
-    notifier.stopping();
-    api.stop();
-    tracing::info!(cycles_ok = ok, attempts, "skyluxd stopped");
-    0
+
+    fn failed(&mut self, e: &CycleError, at: DateTime<FixedOffset>) {
+        self.counts.consecutive_failures += 1;
+        fail(
+            &self.state,
+            &self.config,
+            &mut self.clock,
+            e,
+            at,
+            self.counts.attempts,
+            self.counts.consecutive_failures,
+            &self.notifier,
+        );
+    }
 }
 
 /// Logs and counts a failed cycle, then backs off.

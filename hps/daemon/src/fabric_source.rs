@@ -32,7 +32,10 @@ use skylux_hps::fpga::frames::CapturedFrame;
 use skylux_hps::fpga::sensor::{reg, I2cTiming, SensorConfig, SensorError};
 use skylux_hps::fpga::sequence::{SequenceError, ShieldConfig};
 use skylux_hps::fpga::shield_plan::{plan_openings, OpeningCost};
-use skylux_hps::fpga::{CaptureConfig as RingConfig, ExposureSlot, Fabric, MAX_EXPOSURES};
+use skylux_hps::fpga::{
+    CaptureConfig as RingConfig, CaptureFaults, ExposureSlot, Fabric, MAX_EXPOSURES,
+};
+use skylux_regmap::words::raw;
 use std::ops::Range;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
@@ -332,6 +335,20 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
     }
 
     fn take(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
+        self.configure()?;
+        self.run_openings()?;
+        let faults = self.take_faults()?;
+        let (frames, frame_flags) = self.read_frames(&faults)?;
+        Ok(CaptureSet {
+            time: at,
+            config: self.capture_config(at),
+            frames,
+            frame_flags,
+        })
+    }
+
+    /// Sensor out of reset and configured for the first exposure, capture path and shield.
+    fn configure(&mut self) -> Result<(), SourceError> {
         let s = &self.settings;
         let f = &mut self.fabric;
         f.sensor_bus_setup(s.i2c)
@@ -355,8 +372,13 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
             .map_err(|e| SourceError::Other(format!("capture path: {e}")))?;
         f.configure_shield(&s.shield)
             .map_err(|e| SourceError::Other(format!("shield: {e}")))?;
+        Ok(())
+    }
+
+    /// One exposure sequence per shield opening, each waited for until its frames are in.
+    fn run_openings(&mut self) -> Result<(), SourceError> {
         let expected = self.plan.slots.len();
-        let clock = f64::from(f.info().sys_clock_hz.max(1));
+        let clock = f64::from(self.fabric.info().sys_clock_hz.max(1));
         let mut received = 0usize;
         for (opening, range) in self.plan.openings.clone().iter().enumerate() {
             let f = &mut self.fabric;
@@ -409,6 +431,11 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                 Err(e) => return Err(SourceError::Other(format!("frame wait: {e}"))),
             }
         }
+        Ok(())
+    }
+
+    /// The capture path's sticky faults; a DMA bus timeout fails the capture.
+    fn take_faults(&mut self) -> Result<CaptureFaults, SourceError> {
         let faults = self
             .fabric
             .capture_take_faults()
@@ -421,6 +448,15 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                     .into(),
             ));
         }
+        Ok(faults)
+    }
+
+    /// Every slot of the capture as a frame, with its flags.
+    fn read_frames(
+        &mut self,
+        faults: &CaptureFaults,
+    ) -> Result<(Vec<RawFrame>, Vec<Vec<String>>), SourceError> {
+        let expected = self.plan.slots.len();
         let mut frames = Vec::with_capacity(expected);
         let mut frame_flags = Vec::with_capacity(expected);
         // Slot k holds exposure k (the ring restarts at slot 0 with each capture); its
@@ -451,7 +487,12 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
         if faults.any() && frame_flags.iter().all(Vec::is_empty) {
             frame_flags[0].push(format!("CAPTURE_STATUS {faults:?}"));
         }
-        let config = CaptureConfig {
+        Ok((frames, frame_flags))
+    }
+
+    /// `capture.toml` of the capture taken at `at`.
+    fn capture_config(&self, at: DateTime<FixedOffset>) -> CaptureConfig {
+        CaptureConfig {
             time: at.to_rfc3339(),
             bayer: bayer_of(&self.settings.sensor),
             sensor_temperature_c: None,
@@ -480,13 +521,7 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                     offset_ms: 0.0,
                 })
                 .collect(),
-        };
-        Ok(CaptureSet {
-            time: at,
-            config,
-            frames,
-            frame_flags,
-        })
+        }
     }
 
     /// A raw-mode slot as samples, with its flags (descriptor flags, a bad checksum, a frame
@@ -526,10 +561,8 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                     c.words.len()
                 )));
             }
-            // Raw word: even column in [11:0], odd column in [27:16] (ARCHITECTURE.md).
             for (pair, word) in samples_dn.chunks_exact_mut(2).zip(&c.words) {
-                pair[0] = (word & 0xFFF) as u16;
-                pair[1] = ((word >> 16) & 0xFFF) as u16;
+                pair.copy_from_slice(&raw::samples(*word));
             }
         }
         Ok((

@@ -5,7 +5,7 @@
 //! never maps (`no-map`), is non-cached: the FPGA-to-SDRAM port is not cache-coherent and a
 //! cached mapping would return stale frames (hardware-facts.md §3.2, §3.4).
 
-use crate::config::{check_hardware, HardwareConfig};
+use crate::config::HardwareConfig;
 use skylux_bus::MappedWindow;
 use std::path::Path;
 
@@ -29,7 +29,10 @@ pub enum MapError {
 
 /// Maps the windows `h` names, after checking again that they are the allowed ones.
 pub fn map(h: &HardwareConfig) -> Result<Windows, MapError> {
-    check_hardware(h).map_err(|(key, message)| MapError::Refused { key, message })?;
+    h.check().map_err(|e| MapError::Refused {
+        key: e.key,
+        message: e.message,
+    })?;
     let registers = match &h.uio_device {
         // A UIO device's map 0 starts at file offset 0 and stands for the node's `reg`.
         Some(uio) => MappedWindow::open(uio, 0, h.register_size, h.register_base)?,

@@ -1,5 +1,10 @@
 //! The MT9P031 register file as the model implements it: the subset Skylux uses
 //! (hardware-facts.md §1.3, §1.4), 8-bit addresses, 16-bit values.
+//!
+//! The addresses, bits and power-up values here are the model's own transcription of the
+//! datasheet facts (hardware-facts.md §1), deliberately not read from the driver's table
+//! (`skylux_hps::fpga::sensor::reg`): the model of the world must not share the product's
+//! possible mistakes. The test `driver_table_agrees_with_the_model` compares the two.
 
 /// Register addresses (hardware-facts.md §0 item 3, §1.4).
 pub mod addr {
@@ -159,5 +164,69 @@ impl Registers {
     /// The gain applied to the frame (the model's sensor is grey: Green1's gain for all).
     pub fn gain(&self) -> f64 {
         Self::gain_of_code(self.read(addr::GREEN1_GAIN))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every register and bit the driver writes has the address and position the model
+    /// transcribed independently.
+    #[test]
+    fn driver_table_agrees_with_the_model() {
+        use skylux_hps::fpga::sensor::{self as driver, reg};
+        let pairs = [
+            ("CHIP_VERSION", reg::CHIP_VERSION, addr::CHIP_VERSION),
+            ("ROW_START", reg::ROW_START, addr::ROW_START),
+            ("COLUMN_START", reg::COLUMN_START, addr::COLUMN_START),
+            ("ROW_SIZE", reg::ROW_SIZE, addr::ROW_SIZE),
+            ("COLUMN_SIZE", reg::COLUMN_SIZE, addr::COLUMN_SIZE),
+            (
+                "HORIZONTAL_BLANK",
+                reg::HORIZONTAL_BLANK,
+                addr::HORIZONTAL_BLANK,
+            ),
+            ("VERTICAL_BLANK", reg::VERTICAL_BLANK, addr::VERTICAL_BLANK),
+            (
+                "SHUTTER_WIDTH_UPPER",
+                reg::SHUTTER_WIDTH_UPPER,
+                addr::SHUTTER_WIDTH_UPPER,
+            ),
+            (
+                "SHUTTER_WIDTH_LOWER",
+                reg::SHUTTER_WIDTH_LOWER,
+                addr::SHUTTER_WIDTH_LOWER,
+            ),
+            ("SHUTTER_DELAY", reg::SHUTTER_DELAY, addr::SHUTTER_DELAY),
+            ("RESET", reg::RESET, addr::RESET),
+            ("PLL_CONTROL", reg::PLL_CONTROL, addr::PLL_CONTROL),
+            ("PLL_CONFIG_1", reg::PLL_CONFIG_1, addr::PLL_CONFIG_1),
+            ("PLL_CONFIG_2", reg::PLL_CONFIG_2, addr::PLL_CONFIG_2),
+            ("READ_MODE_1", reg::READ_MODE_1, addr::READ_MODE_1),
+            ("READ_MODE_2", reg::READ_MODE_2, addr::READ_MODE_2),
+            (
+                "ROW_ADDRESS_MODE",
+                reg::ROW_ADDRESS_MODE,
+                addr::ROW_ADDRESS_MODE,
+            ),
+            (
+                "COLUMN_ADDRESS_MODE",
+                reg::COLUMN_ADDRESS_MODE,
+                addr::COLUMN_ADDRESS_MODE,
+            ),
+            ("GLOBAL_GAIN", reg::GLOBAL_GAIN, addr::GLOBAL_GAIN),
+        ];
+        for (name, driver_addr, model_addr) in pairs {
+            assert_eq!(driver_addr, model_addr, "{name}");
+        }
+        assert_eq!(driver::MT9P031_CHIP_VERSION, CHIP_VERSION);
+        assert_eq!(driver::READ_MODE_1_SNAPSHOT, READ_MODE_1_SNAPSHOT);
+        assert_eq!(driver::READ_MODE_2_MIRROR_ROW, READ_MODE_2_MIRROR_ROW);
+        assert_eq!(driver::READ_MODE_2_MIRROR_COLUMN, READ_MODE_2_MIRROR_COLUMN);
+        assert_eq!(
+            driver::MT9P031_ADDRESS,
+            crate::mt9p031::i2c_target::MT9P031_ADDRESS
+        );
     }
 }

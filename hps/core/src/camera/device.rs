@@ -5,7 +5,7 @@
 //! infinite or out of range, are errors that name the file and the key.
 
 use serde::{Deserialize, Serialize};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// `[sensor]`: how raw samples are cleaned.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -87,22 +87,7 @@ pub struct DeviceConfig {
 }
 
 /// Why a `device.toml` could not be used.
-#[derive(Debug, thiserror::Error)]
-pub enum DeviceError {
-    #[error("{path}: {source}")]
-    Io {
-        path: PathBuf,
-        source: std::io::Error,
-    },
-    #[error("{path}: {message}")]
-    Parse { path: PathBuf, message: String },
-    #[error("{path}: {field}: {reason}")]
-    Invalid {
-        path: PathBuf,
-        field: &'static str,
-        reason: String,
-    },
-}
+pub type DeviceError = crate::toml_file::TomlFileError;
 
 const KNOWN_KEYS: &[(&str, &[&str])] = &[
     (
@@ -155,19 +140,13 @@ impl DeviceConfig {
     /// Reads and validates a `device.toml`. Returns the configuration and one warning per
     /// unknown key.
     pub fn read(path: &Path) -> Result<(Self, Vec<String>), DeviceError> {
-        let text = std::fs::read_to_string(path).map_err(|source| DeviceError::Io {
-            path: path.into(),
-            source,
-        })?;
+        let text = DeviceError::read_text(path)?;
         Self::parse(&text, path)
     }
 
     /// Parses and validates `device.toml` text; `path` only names the source in messages.
     pub fn parse(text: &str, path: &Path) -> Result<(Self, Vec<String>), DeviceError> {
-        let parse_error = |e: toml::de::Error| DeviceError::Parse {
-            path: path.into(),
-            message: crate::toml_diag::describe(text, &e),
-        };
+        let parse_error = |e: toml::de::Error| DeviceError::parse(path, text, &e);
         let table: toml::Table = toml::from_str(text).map_err(parse_error)?;
         let mut warnings = vec![];
         for (key, value) in &table {
@@ -208,7 +187,7 @@ impl DeviceConfig {
         let bad = |field: &'static str, reason: String| {
             Err(DeviceError::Invalid {
                 path: path.into(),
-                field,
+                field: field.into(),
                 reason,
             })
         };

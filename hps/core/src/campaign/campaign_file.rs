@@ -4,6 +4,7 @@
 use super::luxmeters::{read_luxmeters, LuxmeterReading};
 use super::CaptureConfig;
 use crate::io::irradiance::{read_pyranometer_file, PyranometerTable};
+use crate::toml_file::TomlFileError;
 use chrono::{DateTime, FixedOffset};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -56,21 +57,9 @@ pub struct CampaignConfig {
 /// Why a campaign could not be read.
 #[derive(Debug, thiserror::Error)]
 pub enum CampaignError {
-    #[error("{path}: {source}")]
-    Io {
-        path: PathBuf,
-        source: std::io::Error,
-    },
-    #[error("{path}: {message}")]
-    Parse { path: PathBuf, message: String },
-    #[error("{path}: {field}: {reason}")]
-    Invalid {
-        path: PathBuf,
-        field: String,
-        reason: String,
-    },
+    /// `campaign.toml`, a `capture.toml`, or the captures folder.
     #[error(transparent)]
-    Capture(#[from] super::CaptureError),
+    File(#[from] TomlFileError),
     #[error(transparent)]
     Luxmeters(#[from] super::luxmeters::LuxmeterError),
     #[error(transparent)]
@@ -79,25 +68,20 @@ pub enum CampaignError {
 
 impl CampaignConfig {
     pub fn read(path: &Path) -> Result<Self, CampaignError> {
-        let text = std::fs::read_to_string(path).map_err(|source| CampaignError::Io {
-            path: path.into(),
-            source,
-        })?;
+        let text = TomlFileError::read_text(path)?;
         Self::parse(&text, path)
     }
 
     /// Parses and validates; unknown keys are ignored (the spec: a warning, never an error).
     pub fn parse(text: &str, path: &Path) -> Result<Self, CampaignError> {
-        let c: Self = toml::from_str(text).map_err(|e: toml::de::Error| CampaignError::Parse {
-            path: path.into(),
-            message: crate::toml_diag::describe(text, &e),
-        })?;
+        let c: Self = toml::from_str(text)
+            .map_err(|e: toml::de::Error| TomlFileError::parse(path, text, &e))?;
         let bad = |field: &str, reason: String| {
-            Err(CampaignError::Invalid {
+            Err(CampaignError::File(TomlFileError::Invalid {
                 path: path.into(),
                 field: field.into(),
                 reason,
-            })
+            }))
         };
         if !(c.site.latitude_deg.is_finite() && c.site.latitude_deg.abs() <= 90.0) {
             return bad(
@@ -118,13 +102,15 @@ impl CampaignConfig {
     }
 
     pub fn write(&self, path: &Path) -> Result<(), CampaignError> {
-        let text = toml::to_string(self).map_err(|e| CampaignError::Parse {
+        let text = toml::to_string(self).map_err(|e| TomlFileError::Parse {
             path: path.into(),
             message: e.to_string(),
         })?;
-        std::fs::write(path, text).map_err(|source| CampaignError::Io {
-            path: path.into(),
-            source,
+        std::fs::write(path, text).map_err(|source| {
+            CampaignError::File(TomlFileError::Io {
+                path: path.into(),
+                source,
+            })
         })
     }
 }
@@ -154,13 +140,13 @@ impl Campaign {
     pub fn open(dir: &Path) -> Result<Self, CampaignError> {
         let config = CampaignConfig::read(&dir.join("campaign.toml"))?;
         let captures_dir = dir.join(&config.files.captures);
-        let listing = std::fs::read_dir(&captures_dir).map_err(|source| CampaignError::Io {
+        let listing = std::fs::read_dir(&captures_dir).map_err(|source| TomlFileError::Io {
             path: captures_dir.clone(),
             source,
         })?;
         let mut captures = Vec::new();
         for entry in listing {
-            let entry = entry.map_err(|source| CampaignError::Io {
+            let entry = entry.map_err(|source| TomlFileError::Io {
                 path: captures_dir.clone(),
                 source,
             })?;
@@ -171,7 +157,7 @@ impl Campaign {
             }
             let capture = CaptureConfig::read(&toml_path)?;
             let time = DateTime::parse_from_rfc3339(&capture.time).map_err(|e| {
-                CampaignError::Invalid {
+                TomlFileError::Invalid {
                     path: toml_path.clone(),
                     field: "time".into(),
                     reason: format!("`{}` is not RFC 3339 with an offset: {e}", capture.time),
@@ -185,11 +171,12 @@ impl Campaign {
         }
         captures.sort_by_key(|c| c.time);
         if captures.is_empty() {
-            return Err(CampaignError::Invalid {
+            return Err(TomlFileError::Invalid {
                 path: captures_dir,
                 field: "captures".into(),
                 reason: "no capture folder with a capture.toml".into(),
-            });
+            }
+            .into());
         }
         let (luxmeters, luxmeter_gaps) = read_luxmeters(&dir.join(&config.files.luxmeters))?;
         let pyr_path = dir.join(&config.files.pyranometer);

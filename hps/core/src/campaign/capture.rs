@@ -1,7 +1,7 @@
 //! `captures/<stamp>/capture.toml`: one HDR capture (campaign.md).
 
 use serde::{Deserialize, Serialize};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// Colours of the first 2x2 block of the raw frames.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -93,30 +93,12 @@ pub struct CaptureConfig {
 }
 
 /// Why a capture could not be used.
-#[derive(Debug, thiserror::Error)]
-pub enum CaptureError {
-    #[error("{path}: {source}")]
-    Io {
-        path: PathBuf,
-        source: std::io::Error,
-    },
-    #[error("{path}: {message}")]
-    Parse { path: PathBuf, message: String },
-    #[error("{path}: {field}: {reason}")]
-    Invalid {
-        path: PathBuf,
-        field: String,
-        reason: String,
-    },
-}
+pub type CaptureError = crate::toml_file::TomlFileError;
 
 impl CaptureConfig {
     /// Reads and validates `capture.toml`.
     pub fn read(path: &Path) -> Result<Self, CaptureError> {
-        let text = std::fs::read_to_string(path).map_err(|source| CaptureError::Io {
-            path: path.into(),
-            source,
-        })?;
+        let text = CaptureError::read_text(path)?;
         Self::parse(&text, path)
     }
 
@@ -135,11 +117,8 @@ impl CaptureConfig {
 
     /// Parses and validates `capture.toml` text; `path` names the source in messages.
     pub fn parse(text: &str, path: &Path) -> Result<Self, CaptureError> {
-        let config: Self =
-            toml::from_str(text).map_err(|e: toml::de::Error| CaptureError::Parse {
-                path: path.into(),
-                message: crate::toml_diag::describe(text, &e),
-            })?;
+        let config: Self = toml::from_str(text)
+            .map_err(|e: toml::de::Error| CaptureError::parse(path, text, &e))?;
         let bad = |field: String, reason: String| {
             Err(CaptureError::Invalid {
                 path: path.into(),

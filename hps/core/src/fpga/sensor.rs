@@ -34,6 +34,12 @@ pub mod reg {
     pub const GLOBAL_GAIN: u8 = 0x35;
 }
 
+/// Read_Mode_1 bit 8: snapshot mode (hardware-facts.md §1.6).
+pub const READ_MODE_1_SNAPSHOT: u16 = 1 << 8;
+/// Read_Mode_2 bits 15 and 14: Mirror_Row, Mirror_Column (hardware-facts.md §1.4).
+pub const READ_MODE_2_MIRROR_ROW: u16 = 1 << 15;
+pub const READ_MODE_2_MIRROR_COLUMN: u16 = 1 << 14;
+
 /// PLL settings: `f_PIXCLK = f_EXT M / (N P1)` (hardware-facts.md §1.2, Linux limits).
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub struct PllConfig {
@@ -218,11 +224,19 @@ impl SensorConfig {
         let mode = |bin: u32| (((bin - 1) << 4) | (self.skip - 1)) as u16;
         let mut read_mode_1 = 0x4000u16; // bit 14 set as in the reset value (S15)
         if self.snapshot {
-            read_mode_1 |= 1 << 8;
+            read_mode_1 |= READ_MODE_1_SNAPSHOT;
         }
         let read_mode_2 = 0x0040u16 // Row_BLC, the Linux default
-            | if self.mirror_row { 1 << 15 } else { 0 }
-            | if self.mirror_column { 1 << 14 } else { 0 };
+            | if self.mirror_row {
+                READ_MODE_2_MIRROR_ROW
+            } else {
+                0
+            }
+            | if self.mirror_column {
+                READ_MODE_2_MIRROR_COLUMN
+            } else {
+                0
+            };
         vec![
             (reg::ROW_START, self.row_start as u16),
             (reg::COLUMN_START, self.col_start as u16),

@@ -4,14 +4,12 @@
 mod capture;
 mod exr_file;
 mod geometry;
-mod lookup;
 mod merge;
 mod radiance_sky;
 
 pub use capture::{map_capture, CaptureMap, CaptureMapError};
 pub use exr_file::{read_exr, write_exr, MapFileError, DEVICE_ATTRIBUTE, READOUT_ATTRIBUTE};
 pub use geometry::{GeometryCache, GroupGeometry};
-pub use lookup::SkyLookup;
 pub use merge::{
     merge, Exposure, ExposureFrame, GroupParams, GroupedFrame, HdrError, LuminanceMap, MapFlag,
     Samples,

@@ -660,25 +660,6 @@ pub struct PyranometerRow {
     pub dni_wm2: Option<f64>,
 }
 
-impl PyranometerRow {
-    /// The row as the Perez model's input: DNI and DHI when both were measured (as
-    /// gendaylit `-W`), else GHI and DHI (`-G`); None when neither pair is there.
-    pub fn perez_input(&self) -> Option<crate::sky::perez::PerezInput> {
-        use crate::sky::perez::PerezInput;
-        match (self.dni_wm2, self.dhi_wm2, self.ghi_wm2) {
-            (Some(dni), Some(dhi), _) => Some(PerezInput::DirectNormalDiffuse {
-                direct_normal_w_m2: dni,
-                diffuse_horizontal_w_m2: dhi,
-            }),
-            (None, Some(dhi), Some(ghi)) => Some(PerezInput::GlobalDiffuse {
-                global_horizontal_w_m2: ghi,
-                diffuse_horizontal_w_m2: dhi,
-            }),
-            _ => None,
-        }
-    }
-}
-
 /// A read `pyranometer.csv`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PyranometerTable {

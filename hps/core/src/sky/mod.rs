@@ -2,6 +2,7 @@
 //! daylight coefficients are computed for.
 
 pub mod cie;
+mod lookup;
 mod patches;
 pub mod perez;
 
@@ -9,5 +10,6 @@ pub use cie::{
     hemisphere_integral, CieDistribution, CieError, CieParameters, CieSky, HemisphereGrid,
     ScaledCieSky, CIE_STANDARD_SKIES,
 };
+pub use lookup::SkyLookup;
 pub use patches::{PatchSky, SkyPatches};
 pub use perez::{ErrorSky, GendaylitUnits, PerezConditions, PerezError, PerezInput, PerezSky};

@@ -8,6 +8,7 @@ pub mod orientation;
 pub mod position;
 pub mod principal_point;
 pub mod tracking;
+mod tracking_files;
 
 pub use delta_t::{delta_t_s, DELTA_T_YEARS};
 pub use extract::{

@@ -14,17 +14,19 @@ use super::extract::{extract_sun, NoSun, SunFlag, SunSearch, SOLAR_DISK_SR};
 use super::orientation::{fit_orientation, OrientationError, SunObservation};
 use super::position::{angle_between_deg, solar_position, Atmosphere, Site};
 use super::principal_point::{fit_orientation_and_principal_point, CameraFitError};
-use crate::camera::{alt_az_from_direction, CameraModel, DeviceConfig, ImagePoint};
+use crate::camera::{CameraModel, DeviceConfig, ImagePoint};
 use crate::campaign::{Campaign, CaptureEntry};
 use crate::hdr::{map_capture, CaptureMapError};
 use crate::io::irradiance::PyranometerTable;
-use crate::output::plot::{panels_png, Frame, Panel, PlotError, Series};
-use crate::output::{write_atomic, WriteError};
+use crate::output::plot::PlotError;
+use crate::output::WriteError;
 use crate::sky::perez::{PerezConditions, PerezInput, PerezSky};
-use chrono::{DateTime, Datelike, FixedOffset, TimeDelta, Timelike, Utc};
+use chrono::{DateTime, Datelike, FixedOffset, TimeDelta, Utc};
 use glam::DVec3;
 use serde::Serialize;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
+
+pub use super::tracking_files::{csv_text, write_csv, write_plot, CSV_HEADER};
 
 /// How the sun is looked for and referenced.
 #[derive(Clone, Debug)]
@@ -276,28 +278,7 @@ pub fn track_capture(
     let sun = match extract_sun(&merged.map, &merged.geometry, &search) {
         Ok(sun) => sun,
         Err(reason) => {
-            track.no_sun = Some(no_sun_tag(&reason));
-            track.note = Some(reason.to_string());
-            // Nothing bright, and SPA's sun is off the imaged field: it is out of view, not
-            // hidden (the extraction only knows there is no imaged group near it when none is
-            // within its search radius).
-            if matches!(reason, NoSun::BelowThreshold { .. }) {
-                let cos_nearest = merged
-                    .geometry
-                    .direction
-                    .iter()
-                    .filter(|d| d.is_finite())
-                    .map(|d| d.as_dvec3().dot(spa))
-                    .fold(-1.0f64, f64::max);
-                let nearest_deg = cos_nearest.clamp(-1.0, 1.0).acos().to_degrees();
-                if nearest_deg > OUT_OF_VIEW_DEG {
-                    track.no_sun = Some("outside_field_of_view");
-                    track.note = Some(format!(
-                        "{reason}; SPA's sun is {nearest_deg:.1} deg from the nearest imaged \
-                         group (declared camera): outside the field of view"
-                    ));
-                }
-            }
+            record_no_sun(&mut track, &reason, &merged.geometry.direction, spa);
             return Ok(track);
         }
     };
@@ -306,32 +287,60 @@ pub fn track_capture(
     track.image_point = camera.project(sun.direction);
     track.flags = sun.flags.clone();
     if sun.flags.contains(&SunFlag::Saturated) {
-        match &track.pyranometer {
-            Some(p) if p.dni_lux > 0.0 => {
-                track.dni_lux = Some(p.dni_lux);
-                track.disk_luminance_cd_m2 = Some(p.dni_lux / SOLAR_DISK_SR);
-                track.dni_source = DniSource::Pyranometer;
-            }
-            Some(p) => {
-                track.note = Some(format!(
-                    "the disk is saturated but the pyranometer's DNI is {:.1} W/m2: no DNI",
-                    p.dni_w_m2
-                ));
-            }
-            None => {
-                track.note = Some(
-                    "the disk is saturated even in the shortest exposure and no pyranometer \
-                     DNI matches this time: no DNI"
-                        .into(),
-                );
-            }
-        }
+        take_pyranometer_dni(&mut track);
     } else if sun.direct_normal_illuminance_lux.is_finite() {
         track.dni_lux = Some(sun.direct_normal_illuminance_lux);
         track.disk_luminance_cd_m2 = Some(sun.disk_luminance_cd_m2);
         track.dni_source = DniSource::Map;
     }
     Ok(track)
+}
+
+/// Why no sun was found. Nothing bright, and SPA's sun off the imaged field (`directions`,
+/// per group): it is out of view, not hidden (the extraction only knows there is no imaged
+/// group near it when none is within its search radius).
+fn record_no_sun(track: &mut SunTrack, reason: &NoSun, directions: &[glam::Vec3], spa: DVec3) {
+    track.no_sun = Some(no_sun_tag(reason));
+    track.note = Some(reason.to_string());
+    if matches!(reason, NoSun::BelowThreshold { .. }) {
+        let cos_nearest = directions
+            .iter()
+            .filter(|d| d.is_finite())
+            .map(|d| d.as_dvec3().dot(spa))
+            .fold(-1.0f64, f64::max);
+        let nearest_deg = cos_nearest.clamp(-1.0, 1.0).acos().to_degrees();
+        if nearest_deg > OUT_OF_VIEW_DEG {
+            track.no_sun = Some("outside_field_of_view");
+            track.note = Some(format!(
+                "{reason}; SPA's sun is {nearest_deg:.1} deg from the nearest imaged \
+                 group (declared camera): outside the field of view"
+            ));
+        }
+    }
+}
+
+/// A disk saturated even in the shortest exposure: the pyranometer's DNI where there is one.
+fn take_pyranometer_dni(track: &mut SunTrack) {
+    match &track.pyranometer {
+        Some(p) if p.dni_lux > 0.0 => {
+            track.dni_lux = Some(p.dni_lux);
+            track.disk_luminance_cd_m2 = Some(p.dni_lux / SOLAR_DISK_SR);
+            track.dni_source = DniSource::Pyranometer;
+        }
+        Some(p) => {
+            track.note = Some(format!(
+                "the disk is saturated but the pyranometer's DNI is {:.1} W/m2: no DNI",
+                p.dni_w_m2
+            ));
+        }
+        None => {
+            track.note = Some(
+                "the disk is saturated even in the shortest exposure and no pyranometer \
+                 DNI matches this time: no DNI"
+                    .into(),
+            );
+        }
+    }
 }
 
 /// Tracks the sun in every capture of the campaign; `progress(done, total)`.
@@ -583,236 +592,6 @@ pub fn reproject(tracks: &[SunTrack], device: &DeviceConfig) -> Vec<Option<DVec3
         .collect()
 }
 
-fn opt(v: Option<f64>, decimals: usize) -> String {
-    match v {
-        Some(v) if v.is_finite() => format!("{v:.decimals$}"),
-        _ => String::new(),
-    }
-}
-
-fn sci(v: Option<f64>) -> String {
-    match v {
-        Some(v) if v.is_finite() => format!("{v:.6e}"),
-        _ => String::new(),
-    }
-}
-
-/// The header of `sun.csv`.
-pub const CSV_HEADER: &str = "time,capture,measured_altitude_deg,measured_azimuth_deg,\
-spa_altitude_deg,spa_azimuth_deg,error_deg,image_x_px,image_y_px,disk_luminance_cd_m2,dni_lux,\
-dni_source,pyranometer_dni_w_m2,pyranometer_dni_lux,fitted_altitude_deg,fitted_azimuth_deg,\
-fitted_error_deg,flags,note";
-
-/// `sun.csv`: one row per capture. Measured angles are through the declared camera; the
-/// `fitted_*` columns through the fitted one (empty without a fit). `flags` lists the
-/// extraction's flags separated by `;`, or `no_sun:<reason>`; `note` says it in words.
-pub fn csv_text(tracks: &[SunTrack], fitted: Option<&[Option<DVec3>]>) -> String {
-    let mut s = String::from(CSV_HEADER);
-    s.push('\n');
-    for (i, t) in tracks.iter().enumerate() {
-        let (spa_alt, spa_az) = alt_az_from_direction(t.spa_direction);
-        let measured = t.measured_direction.map(alt_az_from_direction);
-        let fit_dir = fitted.and_then(|f| f.get(i).copied().flatten());
-        let fit = fit_dir.map(alt_az_from_direction);
-        let mut flags: Vec<String> = t.flags.iter().map(|f| flag_name(*f).to_string()).collect();
-        if let Some(tag) = t.no_sun {
-            flags.push(format!("no_sun:{tag}"));
-        }
-        let capture = t
-            .capture_dir
-            .file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        let fields = [
-            t.time.to_rfc3339(),
-            quote(&capture),
-            opt(measured.map(|m| m.0), 5),
-            opt(measured.map(|m| m.1), 5),
-            format!("{spa_alt:.5}"),
-            format!("{spa_az:.5}"),
-            opt(t.error_deg(), 5),
-            opt(t.image_point.map(|p| p.x_px), 3),
-            opt(t.image_point.map(|p| p.y_px), 3),
-            sci(t.disk_luminance_cd_m2),
-            opt(t.dni_lux, 1),
-            t.dni_source.as_str().into(),
-            opt(t.pyranometer.as_ref().map(|p| p.dni_w_m2), 2),
-            opt(t.pyranometer.as_ref().map(|p| p.dni_lux), 1),
-            opt(fit.map(|m| m.0), 5),
-            opt(fit.map(|m| m.1), 5),
-            opt(fit_dir.map(|d| angle_between_deg(d, t.spa_direction)), 5),
-            flags.join(";"),
-            quote(t.note.as_deref().unwrap_or("")),
-        ];
-        s.push_str(&fields.join(","));
-        s.push('\n');
-    }
-    s
-}
-
-/// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
-fn quote(text: &str) -> String {
-    if text.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", text.replace('"', "\"\""))
-    } else {
-        text.to_string()
-    }
-}
-
-/// Writes `sun.csv` atomically.
-pub fn write_csv(
-    path: &Path,
-    tracks: &[SunTrack],
-    fitted: Option<&[Option<DVec3>]>,
-) -> Result<(), TrackingError> {
-    write_atomic(path, csv_text(tracks, fitted).as_bytes())?;
-    Ok(())
-}
-
-/// Hours since local midnight of the first capture's day (in the first capture's offset), so
-/// a day reads as clock time and later days continue past 24.
-fn hours_axis(tracks: &[SunTrack]) -> Vec<f64> {
-    let Some(first) = tracks.first() else {
-        return vec![];
-    };
-    let offset = *first.time.offset();
-    let midnight = first
-        .time
-        .with_hour(0)
-        .and_then(|t| t.with_minute(0))
-        .and_then(|t| t.with_second(0))
-        .and_then(|t| t.with_nanosecond(0))
-        .unwrap_or(first.time);
-    tracks
-        .iter()
-        .map(|t| (t.time.with_timezone(&offset) - midnight).num_seconds() as f64 / 3600.0)
-        .collect()
-}
-
-/// `sun.png`: disk luminance, altitude and azimuth against time, measured and reference (SPA;
-/// the pyranometer's DNI for the luminance), and the angle between measured and SPA sun, one
-/// panel each; the fitted camera's angles too when `fitted` is given. Lines break between
-/// days and where there is no reference.
-pub fn write_plot(
-    path: &Path,
-    title: &str,
-    tracks: &[SunTrack],
-    fitted: Option<&[Option<DVec3>]>,
-) -> Result<(), TrackingError> {
-    let hours = hours_axis(tracks);
-    // A NaN between captures more than 8 hours apart breaks reference lines across nights.
-    let with_breaks = |points: Vec<(f64, f64)>| -> Vec<(f64, f64)> {
-        let mut out = Vec::with_capacity(points.len());
-        for p in points {
-            if out
-                .last()
-                .is_some_and(|q: &(f64, f64)| p.0 - q.0 > 8.0 && q.0.is_finite())
-            {
-                out.push((f64::NAN, f64::NAN));
-            }
-            out.push(p);
-        }
-        out
-    };
-    let series = |label: &str, f: &dyn Fn(usize, &SunTrack) -> Option<f64>| Series {
-        label: label.into(),
-        points: tracks
-            .iter()
-            .enumerate()
-            .filter_map(|(i, t)| f(i, t).map(|v| (hours[i], v)))
-            .collect(),
-    };
-    let line = |label: &str, f: &dyn Fn(usize, &SunTrack) -> Option<f64>| Series {
-        label: label.into(),
-        points: with_breaks(
-            tracks
-                .iter()
-                .enumerate()
-                .map(|(i, t)| (hours[i], f(i, t).unwrap_or(f64::NAN)))
-                .collect(),
-        ),
-    };
-    let fit_dir = |i: usize| fitted.and_then(|f| f.get(i).copied().flatten());
-    let mut luminance = Panel {
-        y_label: "disk luminance (Gcd/m2)".into(),
-        lines: vec![line("pyranometer DNI / disk", &|_, t| {
-            t.reference_luminance_cd_m2().map(|l| l / 1e9)
-        })],
-        points: vec![series("map", &|_, t| {
-            (t.dni_source == DniSource::Map)
-                .then_some(t.disk_luminance_cd_m2)
-                .flatten()
-                .map(|l| l / 1e9)
-        })],
-    };
-    if tracks
-        .iter()
-        .any(|t| t.dni_source == DniSource::Pyranometer)
-    {
-        luminance
-            .points
-            .push(series("saturated: pyranometer", &|_, t| {
-                (t.dni_source == DniSource::Pyranometer)
-                    .then_some(t.disk_luminance_cd_m2)
-                    .flatten()
-                    .map(|l| l / 1e9)
-            }));
-    }
-    let angle_panel = |label: &str, k: usize| {
-        let pick = move |d: DVec3| {
-            let (alt, az) = alt_az_from_direction(d);
-            if k == 0 {
-                alt
-            } else {
-                az
-            }
-        };
-        let mut p = Panel {
-            y_label: label.into(),
-            lines: vec![line("SPA", &|_, t| Some(pick(t.spa_direction)))],
-            points: vec![series("measured, declared camera", &|_, t| {
-                t.measured_direction.map(pick)
-            })],
-        };
-        if fitted.is_some() {
-            p.points.push(series("measured, fitted camera", &|i, _| {
-                fit_dir(i).map(pick)
-            }));
-        }
-        p
-    };
-    let mut error = Panel {
-        y_label: "angle to SPA's sun (deg)".into(),
-        lines: vec![line("SPA", &|_, _| Some(0.0))],
-        points: vec![series("declared camera", &|_, t| t.error_deg())],
-    };
-    if fitted.is_some() {
-        error.points.push(series("fitted camera", &|i, t| {
-            fit_dir(i).map(|d| angle_between_deg(d, t.spa_direction))
-        }));
-    }
-    let offset = tracks
-        .first()
-        .map(|t| t.time.offset().to_string())
-        .unwrap_or_default();
-    let frame = Frame {
-        width_px: 900,
-        height_px: 1200,
-        ..Frame::new(title, &format!("local time (h, UTC{offset})"), "")
-    };
-    panels_png(
-        path,
-        &frame,
-        &[
-            luminance,
-            angle_panel("altitude (deg)", 0),
-            angle_panel("azimuth (deg)", 1),
-            error,
-        ],
-    )?;
-    Ok(())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -857,36 +636,5 @@ mod tests {
         assert!((p.dni_w_m2 - 850.0).abs() < 1e-9, "{}", p.dni_w_m2);
         // The sun below the horizon: no DNI.
         assert!(pyranometer_dni(&table, t, -sun, TimeDelta::minutes(5)).is_none());
-    }
-
-    #[test]
-    fn csv_quotes_and_tags() {
-        let t = SunTrack {
-            time: time("2017-05-08T12:00:00+02:00"),
-            capture_dir: PathBuf::from("captures/a,b"),
-            spa_direction: DVec3::new(0.0, -0.5, 0.8).normalize(),
-            measured_direction: None,
-            image_point: None,
-            disk_luminance_cd_m2: None,
-            dni_lux: None,
-            dni_source: DniSource::None,
-            pyranometer: None,
-            flags: vec![],
-            no_sun: Some("below_threshold"),
-            note: Some("no group reaches \"5e8\", no sun".into()),
-        };
-        let text = csv_text(&[t], None);
-        let line = text.lines().nth(1).unwrap();
-        assert!(line.contains("\"a,b\""), "{line}");
-        assert!(line.contains(",none,"), "{line}");
-        assert!(line.contains("no_sun:below_threshold"), "{line}");
-        assert!(
-            line.ends_with("\"no group reaches \"\"5e8\"\", no sun\""),
-            "{line}"
-        );
-        assert_eq!(
-            text.lines().next().unwrap().split(',').count(),
-            line.split(',').count() - 2 // the two quoted commas
-        );
     }
 }

@@ -10,7 +10,6 @@ pub mod illuminance_loop;
 pub mod loop_figures;
 pub mod perez_baseline;
 pub mod prediction;
-pub mod pyranometer_effects;
 pub mod report;
 pub mod sample;
 pub mod scoring;

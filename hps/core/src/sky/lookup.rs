@@ -1,10 +1,10 @@
 //! The measured sky in any direction: the map where the lens saw a valid group, the filled
 //! sky patches elsewhere (outside the field of view, or over/under-range groups).
 
-use super::{CaptureMap, MapFlag};
+use super::{PatchSky, SkyPatches};
 use crate::camera::CameraModel;
 use crate::campaign::Readout;
-use crate::sky::{PatchSky, SkyPatches};
+use crate::hdr::{CaptureMap, MapFlag};
 use glam::DVec3;
 
 /// Luminance lookup over the whole upper hemisphere.

@@ -8,7 +8,7 @@
 //! Two faults with one signature cannot be told apart by the closure alone; where that is so
 //! the doc comment says which.
 
-use super::closure::ClosureSample;
+use super::sample::ClosureSample;
 use std::collections::BTreeMap;
 
 /// A fault of the reference instruments, as seen through the closure.

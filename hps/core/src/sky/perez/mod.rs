@@ -20,10 +20,20 @@
 //! cd/m² directly (which RADIANCE would then multiply by 179 again when asked for luminance).
 
 use super::cie::{hemisphere_integral, HemisphereGrid};
+use crate::io::irradiance::PyranometerRow;
 use crate::photometry::WHITE_EFFICACY_LM_PER_W;
 use glam::DVec3;
 use std::f64::consts::PI;
-use std::fmt::Write as _;
+use tables::{
+    CLEARNESS_BIN_UPPER, DIFFUSE_EFFICACY, DIRECT_EFFICACY, PEREZ_COEFFICIENTS, TREGENZA_BANDS,
+};
+
+mod gendaylit_text;
+mod radiance_sun;
+mod tables;
+
+pub use gendaylit_text::c_exp;
+pub use radiance_sun::{radiance_day_number, radiance_sun_position};
 
 /// Solar constant, W/m² (`gendaylit.c` `solar_constant_e`).
 pub const SOLAR_CONSTANT_W_M2: f64 = 1367.0;
@@ -51,90 +61,6 @@ const CLEARNESS_KAPPA: f64 = 1.041;
 /// solar solid angle gendaylit rounds to 6.8e-5 sr.
 const GROUND_SUN_SOLID_ANGLE_SR: f64 = 6.8e-5;
 
-/// Upper ε bounds of the eight Perez bins (Perez 1993 Table 1), the last one RADIANCE's cap.
-const CLEARNESS_BIN_UPPER: [f64; 8] = [1.065, 1.230, 1.500, 1.950, 2.800, 4.500, 6.200, 12.01];
-
-/// Perez 1993 coefficients a1..a4, b1..b4, c1..c4, d1..d4, e1..e4 per ε bin, as `gendaylit.c`
-/// embeds them (`coeff_perez[]`, identical to RADIANCE `src/gen/coeff_perez.dat`;
-/// hardware-facts.md §5.2). Kept as `f32` because gendaylit stores them as `float`.
-#[rustfmt::skip]
-const PEREZ_COEFFICIENTS: [[f32; 20]; 8] = [
-    // bin 1 (overcast, ε < 1.065): c and d use the special forms of Perez 1993
-    [1.3525, -0.2576, -0.2690, -1.4366,   -0.7670, 0.0007, 1.2734, -0.1233,
-     2.8000, 0.6004, 1.2375, 1.000,       1.8734, 0.6297, 0.9738, 0.2809,
-     0.0356, -0.1246, -0.5718, 0.9938],
-    // bin 2
-    [-1.2219, -0.7730, 1.4148, 1.1016,    -0.2054, 0.0367, -3.9128, 0.9156,
-     6.9750, 0.1774, 6.4477, -0.1239,     -1.5798, -0.5081, -1.7812, 0.1080,
-     0.2624, 0.0672, -0.2190, -0.4285],
-    // bin 3
-    [-1.1000, -0.2515, 0.8952, 0.0156,    0.2782, -0.1812, -4.5000, 1.1766,
-     24.7219, -13.0812, -37.7000, 34.8438, -5.0000, 1.5218, 3.9229, -2.6204,
-     -0.0156, 0.1597, 0.4199, -0.5562],
-    // bin 4
-    [-0.5484, -0.6654, -0.2672, 0.7117,   0.7234, -0.6219, -5.6812, 2.6297,
-     33.3389, -18.3000, -62.2500, 52.0781, -3.5000, 0.0016, 1.1477, 0.1062,
-     0.4659, -0.3296, -0.0876, -0.0329],
-    // bin 5
-    [-0.6000, -0.3566, -2.5000, 2.3250,   0.2937, 0.0496, -5.6812, 1.8415,
-     21.0000, -4.7656, -21.5906, 7.2492,  -3.5000, -0.1554, 1.4062, 0.3988,
-     0.0032, 0.0766, -0.0656, -0.1294],
-    // bin 6
-    [-1.0156, -0.3670, 1.0078, 1.4051,    0.2875, -0.5328, -3.8500, 3.3750,
-     14.0000, -0.9999, -7.1406, 7.5469,   -3.4000, -0.1078, -1.0750, 1.5702,
-     -0.0672, 0.4016, 0.3017, -0.4844],
-    // bin 7
-    [-1.0000, 0.0211, 0.5025, -0.5119,    -0.3000, 0.1922, 0.7023, -1.6317,
-     19.0000, -5.0000, 1.2438, -1.9094,   -4.0000, 0.0250, 0.3844, 0.2656,
-     1.0468, -0.3788, -2.4517, 1.4656],
-    // bin 8 (clear, ε ≥ 6.2)
-    [-1.0500, 0.0289, 0.4260, 0.3590,     -0.3250, 0.1156, 0.7781, 0.0025,
-     31.0625, -14.5000, -46.1148, 55.3750, -7.2312, 0.4050, 13.3500, 0.6234,
-     1.5000, -0.6426, 1.8564, 0.5636],
-];
-
-/// Perez 1990 diffuse luminous efficacy a + b·W + c·cos Z + d·ln Δ (lm/W), per ε bin
-/// (`gendaylit.c` `glob_h_diffuse_effi_PEREZ`, Perez 1990 Table 4).
-#[rustfmt::skip]
-const DIFFUSE_EFFICACY: [[f64; 4]; 8] = [
-    [97.24, -0.46, 12.00, -8.91],
-    [107.22, 1.15, 0.59, -3.95],
-    [104.97, 2.96, -5.53, -8.77],
-    [102.39, 5.59, -13.95, -13.90],
-    [100.71, 5.94, -22.75, -23.74],
-    [106.42, 3.83, -36.15, -28.83],
-    [141.88, 1.90, -53.24, -14.03],
-    [152.23, 0.35, -45.27, -7.98],
-];
-
-/// Perez 1990 direct luminous efficacy a + b·W + c·exp(5.73 Z − 5) + d·Δ (lm/W), per ε bin
-/// (`gendaylit.c` `direct_n_effi_PEREZ`, Perez 1990 Table 4), floored at 0.
-#[rustfmt::skip]
-const DIRECT_EFFICACY: [[f64; 4]; 8] = [
-    [57.20, -4.55, -2.98, 117.12],
-    [98.99, -3.46, -1.21, 12.38],
-    [109.83, -4.90, -1.71, -8.81],
-    [110.34, -5.84, -1.99, -4.56],
-    [106.36, -3.97, -1.75, -6.16],
-    [107.19, -1.25, -1.51, -26.73],
-    [105.75, 0.77, -1.26, -34.44],
-    [101.18, 1.58, -1.10, -8.29],
-];
-
-/// Tregenza's 145 directions as gendaylit lists them (`defangle_theta`/`defangle_phi`: zenith
-/// angle of each band and the azimuth step, relative to the sun): the nodes of its
-/// normalisation sum.
-const TREGENZA_BANDS: [(f64, usize); 8] = [
-    (84.0, 30),
-    (72.0, 30),
-    (60.0, 24),
-    (48.0, 24),
-    (36.0, 18),
-    (24.0, 12),
-    (12.0, 6),
-    (0.0, 1),
-];
-
 /// What the sky is computed from, as the `gendaylit` option that takes it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PerezInput {
@@ -150,6 +76,32 @@ pub enum PerezInput {
     },
     /// `-P`: the Perez parameters themselves, irradiances derived from them.
     ClearnessBrightness { clearness: f64, brightness: f64 },
+}
+
+impl PerezInput {
+    /// A `pyranometer.csv` row as the model's input: DNI and DHI when both were measured (as
+    /// gendaylit `-W`), else GHI and DHI (`-G`); `None` when neither pair is there.
+    pub fn from_pyranometer(row: &PyranometerRow) -> Option<Self> {
+        match (row.dni_wm2, row.dhi_wm2, row.ghi_wm2) {
+            (Some(dni), Some(dhi), _) => Some(PerezInput::DirectNormalDiffuse {
+                direct_normal_w_m2: dni,
+                diffuse_horizontal_w_m2: dhi,
+            }),
+            (None, Some(dhi), Some(ghi)) => Some(PerezInput::GlobalDiffuse {
+                global_horizontal_w_m2: ghi,
+                diffuse_horizontal_w_m2: dhi,
+            }),
+            _ => None,
+        }
+    }
+}
+
+// Defined here, not beside the reader, so that `io` does not reach into the sky model.
+impl PyranometerRow {
+    /// [`PerezInput::from_pyranometer`].
+    pub fn perez_input(&self) -> Option<PerezInput> {
+        PerezInput::from_pyranometer(self)
+    }
 }
 
 /// Everything that shapes a Perez sky besides the irradiance.
@@ -257,57 +209,6 @@ pub struct PerezSky {
     illuminance_error: Option<ErrorSky>,
 }
 
-/// gendaylit's day number for a month (1..=12) and day: RADIANCE `sun.c` `jdate`, a
-/// non-leap-year count.
-pub fn radiance_day_number(month: u32, day: u32) -> Option<u16> {
-    const BEFORE: [u16; 12] = [0, 31, 59, 90, 120, 151, 181, 212, 243, 273, 304, 334];
-    if !(1..=12).contains(&month) || !(1..=31).contains(&day) {
-        return None;
-    }
-    Some(BEFORE[month as usize - 1] + day as u16)
-}
-
-/// The sun where `gendaylit month day hour -a lat -o lon -m mer` (no `-y`) puts it: RADIANCE
-/// `src/common/sun.c` v2.7 (2019: `jdate`, `sdec` with its 365-day period, `stadj`, `salt`,
-/// `sazi`), an approximation good to a few tenths of a degree. `standard_hour` is local standard time
-/// at `meridian_east_deg`; longitudes here are east-positive (RADIANCE's are west-positive).
-/// Returns the direction (world frame) and the local solar time in hours; `None` for an
-/// invalid month or day. gendaylit's own sunrise/sunset test is not applied.
-pub fn radiance_sun_position(
-    month: u32,
-    day: u32,
-    standard_hour: f64,
-    latitude_deg: f64,
-    longitude_east_deg: f64,
-    meridian_east_deg: f64,
-) -> Option<(DVec3, f64)> {
-    let jd = f64::from(radiance_day_number(month, day)?);
-    let latitude = latitude_deg * (PI / 180.0);
-    let longitude_west = -longitude_east_deg * (PI / 180.0);
-    let meridian_west = -meridian_east_deg * (PI / 180.0);
-    let declination = 0.4093 * ((2.0 * PI / 365.0) * (jd - 81.0)).sin();
-    let solar_time = standard_hour
-        + (0.170 * ((4.0 * PI / 373.0) * (jd - 80.0)).sin()
-            - 0.129 * ((2.0 * PI / 355.0) * (jd - 8.0)).sin()
-            + (12.0 / PI) * (meridian_west - longitude_west));
-    let hour_angle = solar_time * (PI / 12.0);
-    let altitude = (latitude.sin() * declination.sin()
-        - latitude.cos() * declination.cos() * hour_angle.cos())
-    .asin();
-    let azimuth = -(declination.cos() * hour_angle.sin()).atan2(
-        -latitude.cos() * declination.sin() - latitude.sin() * declination.cos() * hour_angle.cos(),
-    );
-    let direction = DVec3::new(
-        -azimuth.sin() * altitude.cos(),
-        -azimuth.cos() * altitude.cos(),
-        altitude.sin(),
-    );
-    if !direction.is_finite() || !solar_time.is_finite() {
-        return None;
-    }
-    Some((direction, solar_time))
-}
-
 /// Eccentricity correction (R0/R)² for a day number: Spencer's series as gendaylit's
 /// `get_eccentricity` (day angle 2π(n − 1)/365).
 pub fn eccentricity_factor(day_of_year: u16) -> f64 {
@@ -399,206 +300,30 @@ impl PerezSky {
     /// Builds the sky as gendaylit does for `input` under `conditions`.
     pub fn new(input: PerezInput, conditions: &PerezConditions) -> Result<Self, PerezError> {
         let c = conditions;
-        let len = c.sun_direction.length();
-        if !(len.is_finite() && len > 0.0) {
-            return Err(PerezError::SunDirection {
-                value: c.sun_direction,
-            });
-        }
-        if c.day_of_year > 366 {
-            return Err(PerezError::DayOfYear {
-                value: c.day_of_year,
-            });
-        }
-        let dew_point_c = match c.dew_point_c {
-            None => DEFAULT_DEW_POINT_C,
-            Some(td) if (-40.0..=40.0).contains(&td) => td,
-            Some(td) => return Err(PerezError::DewPoint { value: td }),
-        };
-        if !(0.0..=1.0).contains(&c.ground_reflectance) {
-            return Err(PerezError::GroundReflectance {
-                value: c.ground_reflectance,
-            });
-        }
-        if let Some(t) = c.local_solar_time_h {
-            finite("local_solar_time_h", t)?;
-        }
-
-        // The sun: altitude and azimuth as gendaylit derives its vector, lowered to 87°.
-        let d = c.sun_direction / len;
-        let mut altitude_rad = d.z.clamp(-1.0, 1.0).asin();
-        let horizontal = (d.x * d.x + d.y * d.y).sqrt();
-        let (east, north) = if horizontal > 0.0 {
-            (d.x / horizontal, d.y / horizontal)
-        } else {
-            (0.0, -1.0) // exactly overhead: gendaylit's azimuth 0 (south)
-        };
-        if altitude_rad > MAX_SUN_ALTITUDE_DEG.to_radians() {
-            altitude_rad = MAX_SUN_ALTITUDE_DEG.to_radians();
-        }
-        let sun_direction = DVec3::new(
-            east * altitude_rad.cos(),
-            north * altitude_rad.cos(),
-            altitude_rad.sin(),
-        );
-        let zenith_deg = (90.0 - altitude_rad.to_degrees()).min(90.0);
-        let zenith_rad = zenith_deg.to_radians();
-        let m = air_mass(zenith_deg);
-        let e0 = eccentricity_factor(c.day_of_year);
-        let z3 = CLEARNESS_KAPPA * zenith_rad.powi(3);
-        let extraterrestrial = SOLAR_CONSTANT_W_M2 * e0;
-
-        // Irradiances and ε, Δ (gendaylit `computesky`, inputs 0, 1 and 3).
-        let check_irradiances = |dni: f64, dhi: f64| -> (f64, f64, Option<ErrorSky>) {
-            let (dni, dhi) = (dni.max(0.0), dhi.max(0.0));
-            let error = if dni + dhi == 0.0 && altitude_rad > 0.0 {
-                Some(ErrorSky::NoIrradiance)
-            } else if dni > SOLAR_CONSTANT_W_M2 {
-                Some(ErrorSky::DirectAboveSolarConstant)
-            } else {
-                None
-            };
-            (dni, dhi, error)
-        };
-        let clamp_parameters = |eps: f64, delta: f64| -> (f64, f64) {
-            // NaN passes through, as in gendaylit (its comparisons are all false).
-            let eps = if eps < CLEARNESS_MIN {
-                CLEARNESS_MIN
-            } else if eps > CLEARNESS_SUP {
-                CLEARNESS_SUP - 0.001
-            } else {
-                eps
-            };
-            // f64::clamp keeps NaN, as gendaylit's comparisons do.
-            let delta = delta.clamp(BRIGHTNESS_MIN, BRIGHTNESS_MAX);
-            (eps, delta)
-        };
-        let from_irradiances = |dni: f64, dhi: f64| {
-            let (dni, dhi, error) = check_irradiances(dni, dhi);
-            let delta = dhi * m / extraterrestrial;
-            let eps = ((dhi + dni) / dhi + z3) / (1.0 + z3);
-            let (eps, delta) = clamp_parameters(eps, delta);
-            (dni, dhi, eps, delta, error)
-        };
-        let (dni, dhi, clearness, brightness, irradiance_error) = match input {
-            PerezInput::DirectNormalDiffuse {
-                direct_normal_w_m2,
-                diffuse_horizontal_w_m2,
-            } => from_irradiances(
-                finite("direct_normal_w_m2", direct_normal_w_m2)?,
-                finite("diffuse_horizontal_w_m2", diffuse_horizontal_w_m2)?,
-            ),
-            PerezInput::GlobalDiffuse {
-                global_horizontal_w_m2,
-                diffuse_horizontal_w_m2,
-            } => {
-                let ghi = finite("global_horizontal_w_m2", global_horizontal_w_m2)?;
-                let dhi = finite("diffuse_horizontal_w_m2", diffuse_horizontal_w_m2)?;
-                if altitude_rad <= 0.0 {
-                    from_irradiances(0.0, 0.0)
-                } else {
-                    from_irradiances((ghi - dhi) / altitude_rad.sin(), dhi)
-                }
-            }
-            PerezInput::ClearnessBrightness {
-                clearness,
-                brightness,
-            } => {
-                let (eps, delta) = clamp_parameters(
-                    finite("clearness", clearness)?,
-                    finite("brightness", brightness)?,
-                );
-                let dhi = delta / m * extraterrestrial;
-                let dni = dhi * ((eps - 1.0) * (1.0 + z3));
-                let (dni, dhi, error) = check_irradiances(dni, dhi);
-                (dni, dhi, eps, delta, error)
-            }
-        };
-        let irradiance_error = irradiance_error.or(if clearness.is_nan() {
-            Some(ErrorSky::UndefinedClearness)
-        } else {
-            None
-        });
-
-        // Luminous efficacies (Perez 1990), then gendaylit's `check_illuminances`.
+        let dew_point_c = check_conditions(c)?;
+        let sun = SunGeometry::lowered(c.sun_direction);
+        let parameters = SkyParameters::from_input(input, &sun, c.day_of_year)?;
         let w = precipitable_water_cm(dew_point_c);
-        let (mut diffuse_lux, mut direct_lux) = (0.0, 0.0);
-        if let Some(bin) = efficacy_bin(clearness, CLEARNESS_SUP) {
-            let [a, b, cc, dd] = DIFFUSE_EFFICACY[bin];
-            diffuse_lux = dhi * (a + b * w + cc * zenith_rad.cos() + dd * brightness.ln());
-        }
-        if let Some(bin) = efficacy_bin(clearness, 12.1) {
-            let [a, b, cc, dd] = DIRECT_EFFICACY[bin];
-            let efficacy = a + b * w + cc * (5.73 * zenith_rad - 5.0).exp() + dd * brightness;
-            direct_lux = dni * efficacy.max(0.0);
-        }
-        let (diffuse_lux, direct_lux) = (diffuse_lux.max(0.0), direct_lux.max(0.0));
-        let illuminance_error = if direct_lux + diffuse_lux == 0.0 && altitude_rad > 0.0 {
-            Some(ErrorSky::NoIlluminance)
-        } else if direct_lux > SOLAR_CONSTANT_LUX {
-            Some(ErrorSky::DirectAboveLuminousSolarConstant)
-        } else {
-            None
-        };
-
-        let (coefficients, tregenza_sum, ground_per_normalisation) = if clearness.is_nan() {
-            ([0.0; 5], f64::NAN, 0.0)
-        } else {
-            let coefficients = perez_coefficients(zenith_rad, clearness, brightness);
-            // integ_lv: 145 directions, azimuth measured from the sun, lv stored as float.
-            let mut sum = 0.0;
-            for (theta_deg, count) in TREGENZA_BANDS {
-                let theta = theta_deg.to_radians();
-                for k in 0..count {
-                    let phi = (360.0 / count as f64 * k as f64).to_radians();
-                    let cos_gamma =
-                        zenith_rad.cos() * theta.cos() + zenith_rad.sin() * theta.sin() * phi.cos();
-                    let gamma = if cos_gamma > 1.0 {
-                        0.0
-                    } else {
-                        cos_gamma.acos()
-                    };
-                    let lv = perez_relative_luminance(&coefficients, theta, gamma) as f32;
-                    sum += f64::from(lv) * theta.cos();
-                }
-            }
-            let tregenza_sum = sum * (2.0 * PI / 145.0);
-            // Ground: zenith lv times gendaylit's horizontal-to-zenith factor by ε class.
-            let zenith_lv = perez_relative_luminance(&coefficients, 0.0, zenith_rad);
-            let normfactor = if clearness == 1.0 {
-                0.777778
-            } else if clearness >= 6.0 {
-                let f2 = 0.274
-                    * (0.91
-                        + 10.0 * (-3.0 * (PI / 2.0 - altitude_rad)).exp()
-                        + 0.45 * sun_direction.z * sun_direction.z);
-                normsc(altitude_rad, false) / f2 / PI
-            } else {
-                let f2 = (2.739 + 0.9891 * (0.3119 + 2.6 * altitude_rad).sin())
-                    * (-(PI / 2.0 - altitude_rad) * (0.4441 + 1.48 * altitude_rad)).exp();
-                normsc(altitude_rad, true) / f2 / PI
-            };
-            (coefficients, tregenza_sum, zenith_lv * normfactor)
-        };
-
+        let illuminance = Illuminances::perez_1990(&parameters, &sun, w);
+        let shape = SkyShape::normalised(&parameters, &sun);
         Ok(Self {
-            sun_direction,
-            altitude_rad,
-            zenith_rad,
+            sun_direction: sun.direction,
+            altitude_rad: sun.altitude_rad,
+            zenith_rad: sun.zenith_rad,
             precipitable_water_cm: w,
             ground_reflectance: c.ground_reflectance,
             local_solar_time_h: c.local_solar_time_h,
-            clearness,
-            brightness,
-            direct_normal_w_m2: dni,
-            diffuse_horizontal_w_m2: dhi,
-            direct_normal_lux: direct_lux,
-            diffuse_horizontal_lux: diffuse_lux,
-            coefficients,
-            tregenza_sum,
-            ground_per_normalisation,
-            irradiance_error,
-            illuminance_error,
+            clearness: parameters.clearness,
+            brightness: parameters.brightness,
+            direct_normal_w_m2: parameters.direct_normal_w_m2,
+            diffuse_horizontal_w_m2: parameters.diffuse_horizontal_w_m2,
+            direct_normal_lux: illuminance.direct_normal_lux,
+            diffuse_horizontal_lux: illuminance.diffuse_horizontal_lux,
+            coefficients: shape.coefficients,
+            tregenza_sum: shape.tregenza_sum,
+            ground_per_normalisation: shape.ground_per_normalisation,
+            irradiance_error: parameters.error,
+            illuminance_error: illuminance.error,
         })
     }
 
@@ -764,79 +489,280 @@ impl PerezSky {
     pub fn sky_horizontal_illuminance_lux(&self, grid: HemisphereGrid) -> f64 {
         hemisphere_integral(|d| self.luminance_cd_m2(d), grid)
     }
+}
 
-    /// The sky description gendaylit writes on stdout for these inputs in `units`, after its
-    /// first line (the command line echoed as a comment): the same lines and number formats,
-    /// sun as `light`/`source`, sky as `brightfunc skyfunc` over `perezlum.cal`.
-    pub fn gendaylit_text(&self, units: GendaylitUnits) -> String {
-        let mut out = String::new();
-        let st = self.local_solar_time_h.unwrap_or(0.0);
-        let azimuth_deg = (-self.sun_direction.x)
-            .atan2(-self.sun_direction.y)
-            .to_degrees();
-        let _ = writeln!(out, "# Local solar time: {st:.2}");
-        let _ = writeln!(
-            out,
-            "# Solar altitude and azimuth: {:.1} {:.1}",
-            self.altitude_rad.to_degrees(),
-            azimuth_deg
-        );
-        let s = self.sun_direction;
-        if self.error_sky(units).is_some() {
-            let _ = write!(
-                out,
-                "\nvoid brightfunc skyfunc\n2 skybright perezlum.cal\n0\n\
-                 10 0.00 0.00  0.000 0.000 0.000 0.000 0.000  {:.6} {:.6} {:.6} \n",
-                s.x, s.y, s.z
-            );
-            return out;
-        }
-        let _ = writeln!(
-            out,
-            "# epsilon, delta, atmospheric precipitable water content : {:.4} {:.4} {:.4} ",
-            self.clearness, self.brightness, self.precipitable_water_cm
-        );
-        let (normalisation, sun, ground) = self.radiometry(units);
-        let sun_text = if self.clearness > 1.0 {
-            let r = c_exp(sun, 3);
-            format!("{r} {r} {r}")
-        } else {
-            "0.0 0.0 0.0".to_string()
-        };
-        let _ = write!(
-            out,
-            "\nvoid light solar\n0\n0\n3 {sun_text}\n\nsolar source sun\n0\n0\n\
-             4 {:.6} {:.6} {:.6} {:.6}\n",
-            s.x,
-            s.y,
-            s.z,
-            2.0 * GENDAYLIT_HALF_SUN_ANGLE_DEG
-        );
-        let [a, b, c, d, e] = self.coefficients;
-        let _ = write!(
-            out,
-            "\nvoid brightfunc skyfunc\n2 skybright perezlum.cal\n0\n\
-             10 {} {} {a:.6} {b:.6} {c:.6} {d:.6} {e:.6} {:.6} {:.6} {:.6} \n",
-            c_exp(normalisation, 3),
-            c_exp(ground, 3),
-            s.x,
-            s.y,
-            s.z
-        );
-        out
+/// Checks what the model cannot take; returns the dew point to use.
+fn check_conditions(c: &PerezConditions) -> Result<f64, PerezError> {
+    let len = c.sun_direction.length();
+    if !(len.is_finite() && len > 0.0) {
+        return Err(PerezError::SunDirection {
+            value: c.sun_direction,
+        });
     }
+    if c.day_of_year > 366 {
+        return Err(PerezError::DayOfYear {
+            value: c.day_of_year,
+        });
+    }
+    let dew_point_c = match c.dew_point_c {
+        None => DEFAULT_DEW_POINT_C,
+        Some(td) if (-40.0..=40.0).contains(&td) => td,
+        Some(td) => return Err(PerezError::DewPoint { value: td }),
+    };
+    if !(0.0..=1.0).contains(&c.ground_reflectance) {
+        return Err(PerezError::GroundReflectance {
+            value: c.ground_reflectance,
+        });
+    }
+    if let Some(t) = c.local_solar_time_h {
+        finite("local_solar_time_h", t)?;
+    }
+    Ok(dew_point_c)
+}
 
-    /// A complete RADIANCE sky in the default units: [`Self::gendaylit_text`] with the
-    /// conventional glows that make `skyfunc` visible, the sky over the upper hemisphere and
-    /// the ground (brightness A2, set by the ground reflectance) over the lower one.
-    pub fn radiance_sky(&self) -> String {
-        let mut out = self.gendaylit_text(GendaylitUnits::VisibleRadiance);
-        out.push_str(
-            "\nskyfunc glow sky_glow\n0\n0\n4 1 1 1 0\n\nsky_glow source sky\n0\n0\n4 0 0 1 180\n\
-             \nskyfunc glow ground_glow\n0\n0\n4 1 1 1 0\n\n\
-             ground_glow source ground\n0\n0\n4 0 0 -1 180\n",
+/// The sun as the model sees it: altitude and azimuth as gendaylit derives its vector,
+/// lowered to [`MAX_SUN_ALTITUDE_DEG`].
+struct SunGeometry {
+    direction: DVec3,
+    /// Radians; may be negative.
+    altitude_rad: f64,
+    /// 90° − altitude, at most 90°.
+    zenith_deg: f64,
+    zenith_rad: f64,
+}
+
+impl SunGeometry {
+    /// `sun_direction` must be a non-zero finite vector ([`check_conditions`]).
+    fn lowered(sun_direction: DVec3) -> Self {
+        let d = sun_direction / sun_direction.length();
+        let mut altitude_rad = d.z.clamp(-1.0, 1.0).asin();
+        let horizontal = (d.x * d.x + d.y * d.y).sqrt();
+        let (east, north) = if horizontal > 0.0 {
+            (d.x / horizontal, d.y / horizontal)
+        } else {
+            (0.0, -1.0) // exactly overhead: gendaylit's azimuth 0 (south)
+        };
+        if altitude_rad > MAX_SUN_ALTITUDE_DEG.to_radians() {
+            altitude_rad = MAX_SUN_ALTITUDE_DEG.to_radians();
+        }
+        let direction = DVec3::new(
+            east * altitude_rad.cos(),
+            north * altitude_rad.cos(),
+            altitude_rad.sin(),
         );
-        out
+        let zenith_deg = (90.0 - altitude_rad.to_degrees()).min(90.0);
+        Self {
+            direction,
+            altitude_rad,
+            zenith_deg,
+            zenith_rad: zenith_deg.to_radians(),
+        }
+    }
+}
+
+/// Irradiances and the Perez parameters ε, Δ after gendaylit's checks and clamps.
+struct SkyParameters {
+    direct_normal_w_m2: f64,
+    diffuse_horizontal_w_m2: f64,
+    clearness: f64,
+    brightness: f64,
+    error: Option<ErrorSky>,
+}
+
+impl SkyParameters {
+    /// gendaylit `computesky`, inputs 0, 1 and 3.
+    fn from_input(
+        input: PerezInput,
+        sun: &SunGeometry,
+        day_of_year: u16,
+    ) -> Result<Self, PerezError> {
+        let altitude_rad = sun.altitude_rad;
+        let m = air_mass(sun.zenith_deg);
+        let e0 = eccentricity_factor(day_of_year);
+        let z3 = CLEARNESS_KAPPA * sun.zenith_rad.powi(3);
+        let extraterrestrial = SOLAR_CONSTANT_W_M2 * e0;
+        let from_irradiances = |dni: f64, dhi: f64| {
+            let (dni, dhi, error) = check_irradiances(dni, dhi, altitude_rad);
+            let delta = dhi * m / extraterrestrial;
+            let eps = ((dhi + dni) / dhi + z3) / (1.0 + z3);
+            let (eps, delta) = clamp_parameters(eps, delta);
+            (dni, dhi, eps, delta, error)
+        };
+        let (dni, dhi, clearness, brightness, error) = match input {
+            PerezInput::DirectNormalDiffuse {
+                direct_normal_w_m2,
+                diffuse_horizontal_w_m2,
+            } => from_irradiances(
+                finite("direct_normal_w_m2", direct_normal_w_m2)?,
+                finite("diffuse_horizontal_w_m2", diffuse_horizontal_w_m2)?,
+            ),
+            PerezInput::GlobalDiffuse {
+                global_horizontal_w_m2,
+                diffuse_horizontal_w_m2,
+            } => {
+                let ghi = finite("global_horizontal_w_m2", global_horizontal_w_m2)?;
+                let dhi = finite("diffuse_horizontal_w_m2", diffuse_horizontal_w_m2)?;
+                if altitude_rad <= 0.0 {
+                    from_irradiances(0.0, 0.0)
+                } else {
+                    from_irradiances((ghi - dhi) / altitude_rad.sin(), dhi)
+                }
+            }
+            PerezInput::ClearnessBrightness {
+                clearness,
+                brightness,
+            } => {
+                let (eps, delta) = clamp_parameters(
+                    finite("clearness", clearness)?,
+                    finite("brightness", brightness)?,
+                );
+                let dhi = delta / m * extraterrestrial;
+                let dni = dhi * ((eps - 1.0) * (1.0 + z3));
+                let (dni, dhi, error) = check_irradiances(dni, dhi, altitude_rad);
+                (dni, dhi, eps, delta, error)
+            }
+        };
+        let error = error.or(if clearness.is_nan() {
+            Some(ErrorSky::UndefinedClearness)
+        } else {
+            None
+        });
+        Ok(Self {
+            direct_normal_w_m2: dni,
+            diffuse_horizontal_w_m2: dhi,
+            clearness,
+            brightness,
+            error,
+        })
+    }
+}
+
+/// Negative irradiances count as zero; gendaylit's error skies for none at all with the sun
+/// up, and for a direct beam above the solar constant.
+fn check_irradiances(dni: f64, dhi: f64, altitude_rad: f64) -> (f64, f64, Option<ErrorSky>) {
+    let (dni, dhi) = (dni.max(0.0), dhi.max(0.0));
+    let error = if dni + dhi == 0.0 && altitude_rad > 0.0 {
+        Some(ErrorSky::NoIrradiance)
+    } else if dni > SOLAR_CONSTANT_W_M2 {
+        Some(ErrorSky::DirectAboveSolarConstant)
+    } else {
+        None
+    };
+    (dni, dhi, error)
+}
+
+/// ε and Δ within gendaylit's limits.
+fn clamp_parameters(eps: f64, delta: f64) -> (f64, f64) {
+    // NaN passes through, as in gendaylit (its comparisons are all false).
+    let eps = if eps < CLEARNESS_MIN {
+        CLEARNESS_MIN
+    } else if eps > CLEARNESS_SUP {
+        CLEARNESS_SUP - 0.001
+    } else {
+        eps
+    };
+    // f64::clamp keeps NaN, as gendaylit's comparisons do.
+    let delta = delta.clamp(BRIGHTNESS_MIN, BRIGHTNESS_MAX);
+    (eps, delta)
+}
+
+/// Direct normal and diffuse horizontal illuminance from the Perez 1990 luminous efficacies,
+/// then gendaylit's `check_illuminances`.
+struct Illuminances {
+    direct_normal_lux: f64,
+    diffuse_horizontal_lux: f64,
+    error: Option<ErrorSky>,
+}
+
+impl Illuminances {
+    fn perez_1990(p: &SkyParameters, sun: &SunGeometry, precipitable_water_cm: f64) -> Self {
+        let (clearness, brightness, w) = (p.clearness, p.brightness, precipitable_water_cm);
+        let zenith_rad = sun.zenith_rad;
+        let (mut diffuse_lux, mut direct_lux) = (0.0, 0.0);
+        if let Some(bin) = efficacy_bin(clearness, CLEARNESS_SUP) {
+            let [a, b, cc, dd] = DIFFUSE_EFFICACY[bin];
+            diffuse_lux = p.diffuse_horizontal_w_m2
+                * (a + b * w + cc * zenith_rad.cos() + dd * brightness.ln());
+        }
+        if let Some(bin) = efficacy_bin(clearness, 12.1) {
+            let [a, b, cc, dd] = DIRECT_EFFICACY[bin];
+            let efficacy = a + b * w + cc * (5.73 * zenith_rad - 5.0).exp() + dd * brightness;
+            direct_lux = p.direct_normal_w_m2 * efficacy.max(0.0);
+        }
+        let (diffuse_lux, direct_lux) = (diffuse_lux.max(0.0), direct_lux.max(0.0));
+        let error = if direct_lux + diffuse_lux == 0.0 && sun.altitude_rad > 0.0 {
+            Some(ErrorSky::NoIlluminance)
+        } else if direct_lux > SOLAR_CONSTANT_LUX {
+            Some(ErrorSky::DirectAboveLuminousSolarConstant)
+        } else {
+            None
+        };
+        Self {
+            direct_normal_lux: direct_lux,
+            diffuse_horizontal_lux: diffuse_lux,
+            error,
+        }
+    }
+}
+
+/// The sky's relative shape and gendaylit's normalisation of it.
+struct SkyShape {
+    coefficients: [f64; 5],
+    /// gendaylit's `integ_lv` over the Tregenza directions.
+    tregenza_sum: f64,
+    /// Ground brightness per unit of the normalisation.
+    ground_per_normalisation: f64,
+}
+
+impl SkyShape {
+    fn normalised(p: &SkyParameters, sun: &SunGeometry) -> Self {
+        let (clearness, zenith_rad, altitude_rad) = (p.clearness, sun.zenith_rad, sun.altitude_rad);
+        if clearness.is_nan() {
+            return Self {
+                coefficients: [0.0; 5],
+                tregenza_sum: f64::NAN,
+                ground_per_normalisation: 0.0,
+            };
+        }
+        let coefficients = perez_coefficients(zenith_rad, clearness, p.brightness);
+        // integ_lv: 145 directions, azimuth measured from the sun, lv stored as float.
+        let mut sum = 0.0;
+        for (theta_deg, count) in TREGENZA_BANDS {
+            let theta = theta_deg.to_radians();
+            for k in 0..count {
+                let phi = (360.0 / count as f64 * k as f64).to_radians();
+                let cos_gamma =
+                    zenith_rad.cos() * theta.cos() + zenith_rad.sin() * theta.sin() * phi.cos();
+                let gamma = if cos_gamma > 1.0 {
+                    0.0
+                } else {
+                    cos_gamma.acos()
+                };
+                let lv = perez_relative_luminance(&coefficients, theta, gamma) as f32;
+                sum += f64::from(lv) * theta.cos();
+            }
+        }
+        let tregenza_sum = sum * (2.0 * PI / 145.0);
+        // Ground: zenith lv times gendaylit's horizontal-to-zenith factor by ε class.
+        let zenith_lv = perez_relative_luminance(&coefficients, 0.0, zenith_rad);
+        let normfactor = if clearness == 1.0 {
+            0.777778
+        } else if clearness >= 6.0 {
+            let f2 = 0.274
+                * (0.91
+                    + 10.0 * (-3.0 * (PI / 2.0 - altitude_rad)).exp()
+                    + 0.45 * sun.direction.z * sun.direction.z);
+            normsc(altitude_rad, false) / f2 / PI
+        } else {
+            let f2 = (2.739 + 0.9891 * (0.3119 + 2.6 * altitude_rad).sin())
+                * (-(PI / 2.0 - altitude_rad) * (0.4441 + 1.48 * altitude_rad)).exp();
+            normsc(altitude_rad, true) / f2 / PI
+        };
+        Self {
+            coefficients,
+            tregenza_sum,
+            ground_per_normalisation: zenith_lv * normfactor,
+        }
     }
 }
 
@@ -850,21 +776,6 @@ fn normsc(altitude_rad: f64, intermediate: bool) -> f64 {
     let nf = &NFC[usize::from(intermediate)];
     let x = (altitude_rad - PI / 4.0) / (PI / 4.0);
     nf.iter().rev().fold(0.0, |acc, &c| acc * x + c)
-}
-
-/// C's `%.{precision}e`: mantissa, `e`, sign and at least two exponent digits.
-pub fn c_exp(value: f64, precision: usize) -> String {
-    let text = format!("{value:.precision$e}");
-    match text.split_once('e') {
-        Some((mantissa, exponent)) => {
-            let (sign, digits) = match exponent.strip_prefix('-') {
-                Some(d) => ('-', d),
-                None => ('+', exponent),
-            };
-            format!("{mantissa}e{sign}{digits:0>2}")
-        }
-        None => text, // inf, NaN
-    }
 }
 
 #[cfg(test)]
@@ -881,15 +792,6 @@ mod tests {
             &PerezConditions::gendaylit_ang(sun_direction(zenith_deg, 160.0)),
         )
         .unwrap()
-    }
-
-    #[test]
-    fn c_exponent_format() {
-        assert_eq!(c_exp(4.872e6, 3), "4.872e+06");
-        assert_eq!(c_exp(3.992e1, 3), "3.992e+01");
-        assert_eq!(c_exp(0.0012345, 3), "1.234e-03");
-        assert_eq!(c_exp(0.0, 3), "0.000e+00");
-        assert_eq!(c_exp(1e123, 2), "1.00e+123");
     }
 
     /// ε from its definition: with no direct light ε = 1 (overcast), more direct light → clearer.
