@@ -3,8 +3,7 @@
 
 use super::model::ClosureModel;
 use super::pyranometer_effects::PyranometerEffect;
-use super::sample::ClosureSample;
-use super::NIGHT_MIN_ZENITH_DEG;
+use super::sample::{ClosureSample, NIGHT_MIN_ZENITH_DEG};
 use crate::validation::report::EffectReport;
 use crate::validation::split::Score;
 

@@ -35,9 +35,7 @@ use pyranometer_effects::PyranometerEffect;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
-/// Beyond nautical twilight (sun 12° below the horizon) the sky adds well under 0.01 W/m²:
-/// what a pyranometer reads then is its own offset.
-pub const NIGHT_MIN_ZENITH_DEG: f64 = 102.0;
+pub use sample::NIGHT_MIN_ZENITH_DEG;
 
 /// Half the step of the central difference for d(cos Z)/dt.
 const DERIVATIVE_HALF_STEP_S: i64 = 30;

@@ -3,6 +3,10 @@
 use crate::validation::split::Timed;
 use chrono::{DateTime, Utc};
 
+/// Beyond nautical twilight (sun 12° below the horizon) the sky adds well under 0.01 W/m²:
+/// what a pyranometer reads then is its own offset.
+pub const NIGHT_MIN_ZENITH_DEG: f64 = 102.0;
+
 /// One averaging interval with all three channels, and where the sun was.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ClosureSample {
