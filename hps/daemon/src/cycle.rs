@@ -2,7 +2,7 @@
 //!
 //! The illuminance is the offline pipeline's, by the same functions: the HDR merge of
 //! `skylux_hps::hdr` (as `hdr::map_capture` does it for a folder), the SPA sun, and
-//! `validation::device_model::{capture_terms, predict}` with the default model state (sun
+//! the device model `skylux_hps::model::{capture_terms, predict}` with its default state (sun
 //! extracted from the map and handed over as a concentrated source, daylight coefficients
 //! for the sky and the seen ground, the model's ground reflectance where the lens does not
 //! see). So a capture kept by the daemon and run through the loop's code gives the same lux.
@@ -50,8 +50,6 @@ pub fn abandon_dc(cancel: &AtomicBool, config: &Config) {
 
 /// Version of the cache key: bump when the matrix's meaning changes.
 const DC_CACHE_VERSION: &str = "skyluxd-dc-v1";
-/// Minimum patch coverage for the Monte-Carlo sky (as `device_model`'s `MIN_COVERAGE`).
-const MC_MIN_COVERAGE: f64 = 0.3;
 
 /// Why a cycle failed (after the capture itself).
 #[derive(Debug, thiserror::Error)]
@@ -418,7 +416,7 @@ impl Pipeline {
             .map_err(|e| CycleError::Hdr(e.to_string()))?;
         let hdr_ms = ms(t);
 
-        // Sun: SPA, as validation::device_model::load_captures computes it.
+        // Sun: SPA, as the device model's `load_captures` computes it.
         let t = Instant::now();
         let spa = solar_position(set.time.with_timezone(&Utc), &self.site, None)
             .map_err(|e| CycleError::Sun(e.to_string()))?;
@@ -521,7 +519,7 @@ impl Pipeline {
             &without_sun,
             &geometry.direction,
             &geometry.solid_angle_sr,
-            MC_MIN_COVERAGE,
+            skylux_hps::model::terms::MIN_COVERAGE,
         );
         let ground_cd_m2 =
             self.state.ground_reflectance * terms.outdoor_horizontal_lux / std::f64::consts::PI;

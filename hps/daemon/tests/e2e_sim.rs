@@ -1,6 +1,6 @@
 //! End to end: `skyluxd --sim --cycles 3 --config hps/skyluxd.toml` runs three cycles,
 //! serves `/v1/latest` and `/v1/health` over HTTP, exits 0 on SIGTERM, and its illuminance
-//! equals the offline pipeline's (`validation::device_model`) on the same frames.
+//! equals the offline pipeline's (the device model, `skylux_hps::model`) on the same frames.
 
 mod common;
 

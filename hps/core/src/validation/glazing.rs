@@ -109,7 +109,7 @@ impl Glazing {
             }
             let n = n / (2.0 * area);
             let escapes = |side: DVec3| -> usize {
-                let (u, v) = crate::engine::material::basis(side);
+                let (u, v) = crate::engine::sampling::basis(side);
                 let mut dirs = vec![side];
                 for k in 0..8 {
                     let phi = k as f64 * std::f64::consts::FRAC_PI_4;

@@ -20,7 +20,6 @@ pub mod normal;
 pub mod scattering;
 
 /// Where `validation::glazing` finds it; its home is [`crate::engine::sampling`].
-pub use super::sampling::basis;
 pub use emitter::Emitter;
 pub use glass::GlassMaterial;
 pub use mirror::MirrorMaterial;
