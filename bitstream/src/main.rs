@@ -97,6 +97,7 @@ fn run_formal(args: &[String]) -> Result<(), String> {
         (formal::dma_window_proof(), true),
         (formal::shield_broken(), false),
         (formal::dma_broken(), false),
+        (formal::dma_window_full_range(), false),
     ];
     let selected: Vec<_> = proofs
         .into_iter()
@@ -127,7 +128,12 @@ fn run_formal(args: &[String]) -> Result<(), String> {
             ),
             None => (
                 format!("BMC {}", formal::BROKEN_DEPTH),
-                formal::check(&proof, formal::Check::Bmc { depth: formal::BROKEN_DEPTH }),
+                formal::check(
+                    &proof,
+                    formal::Check::Bmc {
+                        depth: formal::BROKEN_DEPTH,
+                    },
+                ),
             ),
         };
         let verdict = verdict.map_err(|e| format!("{}: {e}", proof.name))?;
