@@ -27,10 +27,11 @@ fn counterexample_to_property(proof: &formal::Proof) {
     };
     let wrapper = formal::wrapper(proof);
     let lines: Vec<&str> = wrapper.lines().collect();
-    // The failed assertions are reported as `wrapper.v:LINE.COL-...`; one must be the
-    // property, not only an induction invariant.
+    // The failed assertions are reported as `wrapper.v:L1.C1-L2.C2 (...)`, the statement
+    // ending at line L2; one must be the property, not only an induction invariant.
     let hit_property = asserts.iter().any(|a| {
         a.strip_prefix("wrapper.v:")
+            .and_then(|r| r.split(['-', ' ']).nth(1))
             .and_then(|r| r.split('.').next())
             .and_then(|n| n.parse::<usize>().ok())
             .and_then(|n| lines.get(n - 1))
