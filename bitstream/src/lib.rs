@@ -3,4 +3,5 @@
 //! cases where rust-hdl's simulation and its Verilog disagree).
 
 pub mod blocks;
+pub mod formal;
 pub mod xcheck;

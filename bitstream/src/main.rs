@@ -4,8 +4,13 @@
 //!   and the whole core as `bitstream/quartus/core/skylux_core.v`, the copy Quartus compiles.
 //! - `check`: lints, structurally checks and synthesises every block for the Cyclone V and
 //!   prints the resource table (Markdown) that BENCHMARKS.md carries.
+//! - `formal [PROOF [bmc|ind DEPTH]]`: the formal proofs on the exported core (yosys-smtbmc
+//!   with z3): each property by a bounded check and k-induction, and each broken variant
+//!   must fail (see the README's "Formal proofs"). With a proof name (`shield`, `dma_window`,
+//!   `shield_broken`, `dma_broken`), only that one, optionally one check at one depth.
 
 use skylux_bitstream::blocks::{core_verilog, BLOCKS, CORE_VERILOG_PATH};
+use skylux_bitstream::formal;
 use skylux_bitstream::xcheck;
 use std::path::PathBuf;
 
@@ -26,7 +31,11 @@ fn main() {
                 .map(PathBuf::from),
         ),
         Some("check") => check(),
-        _ => Err("usage: skylux-bitstream verilog [--out DIR] | check".to_string()),
+        Some("formal") => run_formal(&args[1..]),
+        _ => Err(
+            "usage: skylux-bitstream verilog [--out DIR] | check | formal [PROOF [bmc|ind DEPTH]]"
+                .to_string(),
+        ),
     };
     if let Err(e) = result {
         eprintln!("skylux-bitstream: {e}");
@@ -80,4 +89,66 @@ fn check() -> Result<(), String> {
         );
     }
     Ok(())
+}
+
+fn run_formal(args: &[String]) -> Result<(), String> {
+    let proofs: Vec<(formal::Proof, bool)> = vec![
+        (formal::shield_proof(), true),
+        (formal::dma_window_proof(), true),
+        (formal::shield_broken(), false),
+        (formal::dma_broken(), false),
+        (formal::dma_window_full_range(), false),
+    ];
+    let selected: Vec<_> = proofs
+        .into_iter()
+        .filter(|(p, _)| args.first().is_none_or(|n| n == p.name))
+        .collect();
+    if selected.is_empty() {
+        return Err(format!("no proof named {:?}", args[0]));
+    }
+    let one = match (args.get(1).map(String::as_str), args.get(2)) {
+        (Some(kind), Some(depth)) => {
+            let depth: u32 = depth.parse().map_err(|_| format!("bad depth {depth}"))?;
+            match kind {
+                "bmc" => Some(formal::Check::Bmc { depth }),
+                "ind" => Some(formal::Check::Induction { depth }),
+                _ => return Err(format!("unknown check {kind}")),
+            }
+        }
+        _ => None,
+    };
+    let mut wrong = Vec::new();
+    for (proof, must_hold) in selected {
+        let t = std::time::Instant::now();
+        let (what, verdict) = match one {
+            Some(c) => (format!("{c:?}"), formal::check(&proof, c)),
+            None if must_hold => (
+                format!("BMC + {}-induction", formal::PROOF_DEPTH),
+                formal::prove(&proof, formal::PROOF_DEPTH),
+            ),
+            None => (
+                format!("BMC {}", formal::BROKEN_DEPTH),
+                formal::check(
+                    &proof,
+                    formal::Check::Bmc {
+                        depth: formal::BROKEN_DEPTH,
+                    },
+                ),
+            ),
+        };
+        let verdict = verdict.map_err(|e| format!("{}: {e}", proof.name))?;
+        println!(
+            "{}: {what}: {verdict:?} ({:.1} s)",
+            proof.name,
+            t.elapsed().as_secs_f64()
+        );
+        if one.is_none() && verdict.passed() != must_hold {
+            wrong.push(proof.name);
+        }
+    }
+    if wrong.is_empty() {
+        Ok(())
+    } else {
+        Err(format!("unexpected verdicts: {wrong:?}"))
+    }
 }

@@ -6,7 +6,7 @@
 //! (every top-level input at every settle step) and every output must agree at every step.
 
 mod replay;
-mod tools;
+pub(crate) mod tools;
 mod yosys;
 
 pub use replay::{replay, Mismatch, ReplayReport};

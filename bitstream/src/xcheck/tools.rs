@@ -10,6 +10,10 @@ pub enum Tool {
     Vvp,
     Yosys,
     Verilator,
+    /// yosys' SMT bounded model checker and k-induction driver (the formal proofs).
+    SmtBmc,
+    /// The SMT solver behind `yosys-smtbmc` (Debian package `z3`).
+    Z3,
 }
 
 impl Tool {
@@ -19,6 +23,8 @@ impl Tool {
             Tool::Vvp => "vvp",
             Tool::Yosys => "yosys",
             Tool::Verilator => "verilator",
+            Tool::SmtBmc => "yosys-smtbmc",
+            Tool::Z3 => "z3",
         }
     }
 }
@@ -26,7 +32,7 @@ impl Tool {
 /// Why a tool run failed.
 #[derive(Debug, thiserror::Error)]
 pub enum ToolError {
-    #[error("{0} is not installed (apt-get install iverilog yosys verilator)")]
+    #[error("{0} is not installed (apt-get install iverilog yosys verilator z3)")]
     Missing(&'static str),
     #[error("{tool} failed:\n{output}")]
     Failed { tool: &'static str, output: String },
