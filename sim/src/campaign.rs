@@ -192,8 +192,8 @@ const WORLD_PARAMETERS: &[WorldParameter] = &[
     },
     WorldParameter {
         effect: &effects::clock_offset::ClockOffset,
-        valid: |v| v.abs() <= 300.0,
-        range: "within ±300 seconds",
+        valid: |v| v.abs() <= 3600.0,
+        range: "within ±3600 seconds",
         set: |w, v| w.clock_offset_s = v,
     },
     WorldParameter {

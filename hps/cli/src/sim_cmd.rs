@@ -27,7 +27,7 @@ pub struct SimCampaignArgs {
     /// repeatable. glazing_transmittance (relative, 0.1 to
     /// 1.5), light_leak (lux per outdoor lux, 0 to 0.2), ground_reflectance (0 to 1),
     /// orientation_error (axis azimuth, degrees, ±10), clock_offset (lux-meter logger minus
-    /// device clock, seconds, ±300; visible only when the light changes within minutes: use
+    /// device clock, seconds, ±3600; visible only when the light changes within minutes: use
     /// --sky partly), shutter_overhead (µs added to every declared exposure, 0 to 100),
     /// spectral_mismatch (the clear sky's colour temperature far from the sun, K, 4000 to
     /// 25000: frames rendered with the sky's real colour through measured camera

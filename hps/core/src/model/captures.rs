@@ -11,6 +11,7 @@ use glam::DVec3;
 use std::path::Path;
 
 /// One capture as the model sees it: the merged map and the sun position from SPA.
+#[derive(Clone)]
 pub struct CaptureData {
     pub time: DateTime<FixedOffset>,
     pub map: LuminanceMap,

@@ -4,8 +4,10 @@
 //!    coefficients, the Perez baseline and the sky's colour.
 //! 2. Samples: split the capture times into fit and hold-out blocks ([`super::split`]).
 //! 3. Select effects: fit each candidate of the library ([`registry::EFFECTS`]) on the fit
-//!    set; rank them by fit-set error; add the best if the hold-out error falls by more than
-//!    its noise ([`scoring::improves`]); repeat. The hold-out set is only ever scored, never
+//!    set; rank them (an effect identified apart, by the raw frames or the logger's series,
+//!    first, then by fit-set error); add
+//!    the best if the hold-out error falls significantly and relevantly ([`scoring::judge`]),
+//!    else the best pair fitted jointly; repeat. The hold-out set is only ever scored, never
 //!    fitted.
 //! 4. Diagnostics and output: before and after on the hold-out set, with the Perez baseline
 //!    from the pyranometer, and the residual table.
@@ -18,7 +20,7 @@ use super::perez_baseline::perez_predictions;
 use super::prediction::{predict, LoopState, CLOCK_OFFSET_S};
 use super::report::{EffectReport, Report, ResidualRow};
 use super::sample::{reading_at, LoggerSeries, Sample, SERIES_HALF_WINDOW_S};
-use super::scoring::{improves, noise, score, summary};
+use super::scoring::{block_falls, judge, noise, score, summary, Verdict, ACTING_CHANGE};
 use super::sky_colour::CaptureColour;
 use super::sky_geometry::{correct_terms, hidden_suns, SkyGeometry, MIN_CLIPPED_DEG};
 use super::split::{compare, split, Figure, FitSet, HoldoutSet, Score, SplitPlan};
@@ -261,6 +263,7 @@ fn samples(
 }
 
 /// The model as the loop builds it: its parameters, the camera, the captures and their terms.
+#[derive(Clone)]
 struct Model {
     state: LoopState,
     device: DeviceConfig,
@@ -429,11 +432,15 @@ fn try_geometry_effects(
             })
         };
         let (sun_before, sun_after) = (offset(&model.terms), offset(new_terms));
-        let sun = compare(&sun_before, &sun_after, Figure::MeanAbs);
         let (after_all, _) =
             Model::score_with(&model.state, new_terms, sets, &prepared.sensor_names);
         let illum = compare(&selection.current_holdout, &after_all, Figure::MeanAbs);
-        if sun_after.n > 0 && improves(&sun) && illum.gain >= -noise(&illum) {
+        let verdict = judge(
+            &block_falls(&sun_before, &sun_after, Figure::MeanAbs),
+            sun_before.mean_abs,
+            sun_after.mean_abs,
+        );
+        if sun_after.n > 0 && verdict.accepted && illum.gain >= -noise(&illum) {
             selection.effects.push(EffectReport {
                 name: effect.name().into(),
                 parameters: fitted.parameters.clone(),
@@ -451,12 +458,12 @@ fn try_geometry_effects(
             adopt(model, fitted);
         } else {
             selection.rejected.push(format!(
-                "{}: hold-out sun offset {:.2}° → {:.2}° (noise {:.2}°), illuminance error \
-                 change {:+.2} %: not added",
+                "{}: hold-out sun offset {:.2}° → {:.2}° ({}), illuminance error change \
+                 {:+.2} %: not added",
                 effect.name(),
                 sun_before.mean_abs,
                 sun_after.mean_abs,
-                noise(&sun),
+                verdict.describe(),
                 -100.0 * illum.gain
             ));
         }
@@ -479,12 +486,15 @@ fn adopt(model: &mut Model, fitted: Fitted) {
 }
 
 /// A candidate effect, fitted.
+#[derive(Clone)]
 struct Ranked {
     effect: &'static dyn LoopEffect,
     fitted: Fitted,
 }
 
-/// Fits every effect not yet added, ranked by fit-set error (ties: registry order).
+/// Fits every effect not yet added, ranked: those identified apart (the raw frames, the
+/// logger's series) first, then by
+/// fit-set error (ties: registry order).
 fn ranked_candidates(
     prepared: &mut Prepared,
     sets: &Sets,
@@ -500,12 +510,109 @@ fn ranked_candidates(
             candidates.push(Ranked { effect, fitted });
         }
     }
-    candidates.sort_by(|a, b| a.fitted.fit_error.total_cmp(&b.fitted.fit_error));
+    candidates.sort_by(|a, b| {
+        b.fitted
+            .identified_apart
+            .cmp(&a.fitted.identified_apart)
+            .then(a.fitted.fit_error.total_cmp(&b.fitted.fit_error))
+    });
     Ok(candidates)
 }
 
-/// Stage 3: adds the best candidate while it lowers the fit-set error by more than 0.2 % and
-/// the hold-out error by more than its noise.
+/// Least fall of the fit-set error for a candidate to be tried on the hold-out set.
+const MIN_FIT_GAIN: f64 = 0.002;
+
+/// How many of the best single candidates are combined into pairs when none is accepted
+/// alone.
+const PAIR_CANDIDATES: usize = 3;
+
+/// A candidate's hold-out score against the model as it stands, and the verdict.
+struct Trial {
+    after: Score,
+    verdict: Verdict,
+}
+
+impl Trial {
+    /// `candidate` against `current` (whose hold-out score is `current_score`). The paired
+    /// test's units are the hold-out captures where the candidate changes the predictions
+    /// ([`ACTING_CHANGE`]; decided by how much the comparison moves, not by whether it
+    /// improves), each the symmetric relative fall (b − a) / (b + a) of its mean |relative
+    /// error| over its sensors: scale-free, so one capture where the sun strikes a sensor does
+    /// not swamp the others, and bounded, so a capture whose error was already at the noise
+    /// does not either.
+    fn of(
+        current: &Model,
+        candidate: &Model,
+        sets: &Sets,
+        names: &[String],
+        current_score: &Score,
+    ) -> Self {
+        let (after, _) = Model::score_with(&candidate.state, &candidate.terms, sets, names);
+        let per_capture = |m: &Model| {
+            let offset = m.state.get(CLOCK_OFFSET_S);
+            sets.holdout
+                .evaluate_grouped(|s: &Sample| {
+                    let p = predict(&m.state, &m.terms[s.capture]);
+                    let e: Vec<f64> = (0..p.len())
+                        .filter_map(|k| {
+                            let y = s.measured(k, offset).filter(|y| *y > 0.0)?;
+                            Some((p[k] / y - 1.0).abs())
+                        })
+                        .filter(|e| e.is_finite())
+                        .collect();
+                    (!e.is_empty()).then(|| (s.capture, e.iter().sum::<f64>() / e.len() as f64))
+                })
+                .1
+        };
+        // How much the candidate changes each capture's comparison: its predictions, and for
+        // a clock offset which readings they are compared with (not whether they agree).
+        let change = sets
+            .holdout
+            .evaluate_grouped(|s: &Sample| {
+                let (oa, ob) = (
+                    current.state.get(CLOCK_OFFSET_S),
+                    candidate.state.get(CLOCK_OFFSET_S),
+                );
+                let a = predict(&current.state, &current.terms[s.capture]);
+                let b = predict(&candidate.state, &candidate.terms[s.capture]);
+                let d: Vec<f64> = (0..a.len().min(b.len()))
+                    .filter_map(|k| {
+                        let (ma, mb) = (s.measured(k, oa)?, s.measured(k, ob)?);
+                        let r = (b[k] / mb) / (a[k] / ma);
+                        r.is_finite().then(|| (r - 1.0).abs())
+                    })
+                    .collect();
+                (!d.is_empty()).then(|| (s.capture, d.iter().sum::<f64>() / d.len() as f64))
+            })
+            .1;
+        let (before_c, after_c) = (per_capture(current), per_capture(candidate));
+        let diffs: Vec<f64> = before_c
+            .iter()
+            .filter(|(c, _)| change.get(*c).is_some_and(|s| s.mean >= ACTING_CHANGE))
+            .filter_map(|(c, b)| {
+                after_c
+                    .get(c)
+                    .filter(|a| a.mean + b.mean > 0.0)
+                    .map(|a| (b.mean - a.mean) / (b.mean + a.mean))
+            })
+            .collect();
+        if std::env::var_os("SKYLUX_DEBUG_LOOP").is_some() {
+            eprintln!("acceptance units (relative falls): {diffs:?}");
+        }
+        let verdict = judge(
+            &diffs,
+            current_score.figure(Figure::MeanAbs),
+            after.figure(Figure::MeanAbs),
+        );
+        Self { after, verdict }
+    }
+}
+
+/// Stage 3: adds the best candidate while the hold-out error falls significantly and
+/// relevantly ([`judge`]); when the best single is not accepted, the best pair of the
+/// [`PAIR_CANDIDATES`] best singles, fitted one after the other (the second given the first),
+/// is tested instead: two effects that each explain part of the residual are found together
+/// even where each alone leaves the other's error in the hold-out set.
 fn select_effects(
     options: &LoopOptions,
     prepared: &mut Prepared,
@@ -514,6 +621,7 @@ fn select_effects(
     selection: &mut Selection,
     progress: &(dyn Fn(&str, u64, u64) + Sync),
 ) -> Result<(), LoopError> {
+    let names = prepared.sensor_names.clone();
     while selection.effects.len() < options.max_effects {
         progress(
             "fitting effects",
@@ -522,48 +630,43 @@ fn select_effects(
         );
         let base_fit = fit_error(&model.state, &model.terms, &sets.fit);
         let candidates = ranked_candidates(prepared, sets, model, &selection.added)?;
-        let Some(Ranked { effect, fitted }) = candidates.into_iter().next() else {
+        let Some(best) = candidates.first() else {
             break;
         };
-        let best_fit = fitted.fit_error;
-        if best_fit.is_nan() || best_fit >= base_fit - 0.002 {
+        let best_fit = best.fitted.fit_error;
+        if best_fit.is_nan() || best_fit >= base_fit - MIN_FIT_GAIN {
             selection.notes.push(format!(
                 "no remaining effect lowers the fit-set error by more than 0.2 % (best: {} from \
                  {:.2} % to {:.2} %)",
-                effect.name(),
+                best.effect.name(),
                 100.0 * base_fit,
                 100.0 * best_fit
             ));
             break;
         }
-        let candidate_terms = fitted.terms.as_deref().unwrap_or(&model.terms);
-        let (after_all, _) =
-            Model::score_with(&fitted.state, candidate_terms, sets, &prepared.sensor_names);
-        let cmp = compare(&selection.current_holdout, &after_all, Figure::MeanAbs);
-        if !improves(&cmp) {
-            selection.rejected.push(format!(
-                "{}: fit-set error {:.2} % → {:.2} %, but the hold-out error changed by {:+.2} % \
-                 (noise {:.2} %): not added",
-                effect.name(),
-                100.0 * base_fit,
-                100.0 * best_fit,
-                -100.0 * cmp.gain,
-                100.0 * noise(&cmp)
-            ));
+        let mut single = model.clone();
+        apply(prepared, &mut single, best.fitted.clone())?;
+        let trial = Trial::of(model, &single, sets, &names, &selection.current_holdout);
+        if trial.verdict.accepted {
+            let report = effect_report(best, base_fit, &trial, best.fitted.evidence.clone());
+            accept(model, selection, best.effect, single, report, trial.after);
+            continue;
+        }
+        selection.rejected.push(format!(
+            "{}: fit-set error {:.2} % → {:.2} %, hold-out error {:.2} % → {:.2} % ({}): not \
+             added alone",
+            best.effect.name(),
+            100.0 * base_fit,
+            100.0 * best_fit,
+            100.0 * selection.current_holdout.figure(Figure::MeanAbs),
+            100.0 * trial.after.figure(Figure::MeanAbs),
+            trial.verdict.describe()
+        ));
+        if selection.effects.len() + 2 > options.max_effects
+            || !try_pair(prepared, sets, model, selection, &candidates, base_fit)?
+        {
             break;
         }
-        selection.effects.push(EffectReport {
-            name: effect.name().into(),
-            parameters: fitted.parameters.clone(),
-            evidence: fitted.evidence.clone(),
-            gain: cmp.gain,
-            fit_error_before: Some(base_fit),
-            fit_error_after: Some(best_fit),
-        });
-        selection.added.push(effect);
-        add(prepared, model, selection, fitted)?;
-        selection.current_holdout =
-            Model::score_with(&model.state, &model.terms, sets, &prepared.sensor_names).0;
     }
     if selection.effects.is_empty() {
         selection.notes.push(
@@ -573,15 +676,166 @@ fn select_effects(
     Ok(())
 }
 
-/// Adds a fitted effect to the model; after a re-merge, the sky effects already added are
-/// re-applied to the new maps. The reported parameters of the effects added before are read
-/// back (a joint fit may have moved them).
-fn add(
+/// The report of a candidate about to be added.
+fn effect_report(
+    candidate: &Ranked,
+    base_fit: f64,
+    trial: &Trial,
+    evidence: String,
+) -> EffectReport {
+    EffectReport {
+        name: candidate.effect.name().into(),
+        parameters: candidate.fitted.parameters.clone(),
+        evidence,
+        gain: trial.verdict.gain,
+        fit_error_before: Some(base_fit),
+        fit_error_after: Some(candidate.fitted.fit_error),
+    }
+}
+
+/// The best pair among the best singles: each ordered pair (a, b) fitted as a, then b given
+/// a; the pair of least fit-set error is tested on the hold-out set, and added if accepted and
+/// if each member is needed (the pair's hold-out error is below either member's alone by at
+/// least half the relevance margin). Whether a pair was added.
+fn try_pair(
     prepared: &mut Prepared,
+    sets: &Sets,
     model: &mut Model,
     selection: &mut Selection,
-    fitted: Fitted,
-) -> Result<(), LoopError> {
+    candidates: &[Ranked],
+    base_fit: f64,
+) -> Result<bool, LoopError> {
+    let names = prepared.sensor_names.clone();
+    let top = &candidates[..candidates.len().min(PAIR_CANDIDATES)];
+    if top.len() < 2 {
+        return Ok(false);
+    }
+    let mut best: Option<(usize, Ranked, Model)> = None;
+    for (i, first) in top.iter().enumerate() {
+        let mut with_first = model.clone();
+        apply(prepared, &mut with_first, first.fitted.clone())?;
+        let mut added = selection.added.clone();
+        added.push(first.effect);
+        for (j, second) in top.iter().enumerate() {
+            if i == j {
+                continue;
+            }
+            let Some(fitted) =
+                second
+                    .effect
+                    .fit(&mut fit_context(prepared, sets, &with_first, &added))?
+            else {
+                continue;
+            };
+            if best
+                .as_ref()
+                .is_none_or(|(_, b, _)| fitted.fit_error < b.fitted.fit_error)
+            {
+                let mut pair = with_first.clone();
+                apply(prepared, &mut pair, fitted.clone())?;
+                let ranked = Ranked {
+                    effect: second.effect,
+                    fitted,
+                };
+                best = Some((i, ranked, pair));
+            }
+        }
+    }
+    let Some((i, second, pair)) = best else {
+        return Ok(false);
+    };
+    let first = &top[i];
+    let trial = Trial::of(model, &pair, sets, &names, &selection.current_holdout);
+    // Each member alone, on the hold-out set: the pair must do better than either.
+    let alone = |ranked: &Fitted, prepared: &mut Prepared| -> Result<f64, LoopError> {
+        let mut m = model.clone();
+        apply(prepared, &mut m, ranked.clone())?;
+        Ok(
+            Trial::of(model, &m, sets, &names, &selection.current_holdout)
+                .after
+                .figure(Figure::MeanAbs),
+        )
+    };
+    let second_alone = match top.iter().find(|c| c.effect.name() == second.effect.name()) {
+        Some(c) => alone(&c.fitted, prepared)?,
+        None => f64::INFINITY,
+    };
+    let first_alone = alone(&first.fitted, prepared)?;
+    let pair_error = trial.after.figure(Figure::MeanAbs);
+    let margin = 1.0 - 0.5 * super::scoring::MIN_RELATIVE_GAIN;
+    let needed = pair_error <= margin * first_alone && pair_error <= margin * second_alone;
+    let before = selection.current_holdout.figure(Figure::MeanAbs);
+    let joint = format!(
+        "found jointly with {} and {}: neither alone was accepted (hold-out error {:.2} % alone \
+         {:.2} % and {:.2} %), together {:.2} % ({})",
+        first.effect.name(),
+        second.effect.name(),
+        100.0 * before,
+        100.0 * first_alone,
+        100.0 * second_alone,
+        100.0 * pair_error,
+        trial.verdict.describe()
+    );
+    if !(trial.verdict.accepted && needed) {
+        selection.rejected.push(format!(
+            "the pair {} + {}: {}{}: not added",
+            first.effect.name(),
+            second.effect.name(),
+            joint,
+            if needed {
+                ""
+            } else {
+                "; one member does not lower the error over the other alone"
+            }
+        ));
+        return Ok(false);
+    }
+    let first_report = effect_report(
+        first,
+        base_fit,
+        &trial,
+        format!("{}; {joint}", first.fitted.evidence),
+    );
+    let second_report = effect_report(
+        &second,
+        first.fitted.fit_error,
+        &trial,
+        format!("{}; {joint}", second.fitted.evidence),
+    );
+    selection.effects.push(first_report);
+    selection.added.push(first.effect);
+    accept(
+        model,
+        selection,
+        second.effect,
+        pair,
+        second_report,
+        trial.after,
+    );
+    Ok(true)
+}
+
+/// Adds an effect whose model (`with`) the loop has already built.
+fn accept(
+    model: &mut Model,
+    selection: &mut Selection,
+    effect: &'static dyn LoopEffect,
+    with: Model,
+    report: EffectReport,
+    holdout: Score,
+) {
+    selection.effects.push(report);
+    selection.added.push(effect);
+    *model = with;
+    for (effect, report) in selection.added.iter().zip(selection.effects.iter_mut()) {
+        effect.refresh(&model.state, &mut report.parameters);
+    }
+    selection.current_holdout = holdout;
+}
+
+/// Applies a fitted effect to a model; after a re-merge, the sky effects already in the model
+/// are re-applied to the new maps.
+fn apply(prepared: &mut Prepared, model: &mut Model, fitted: Fitted) -> Result<(), LoopError> {
     let remerged = fitted.captures.is_some();
     adopt(model, fitted);
     if remerged {
@@ -592,9 +846,6 @@ fn add(
             &model.sky_geometry,
             &model.state,
         );
-    }
-    for (effect, report) in selection.added.iter().zip(selection.effects.iter_mut()) {
-        effect.refresh(&model.state, &mut report.parameters);
     }
     Ok(())
 }

@@ -5,6 +5,7 @@
 pub mod closure;
 pub mod diagnostics;
 pub mod effects;
+pub mod frame_evidence;
 pub mod glazing;
 pub mod illuminance_loop;
 pub mod loop_figures;

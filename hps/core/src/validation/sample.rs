@@ -6,8 +6,11 @@ use crate::campaign::Campaign;
 use chrono::{TimeDelta, Utc};
 use std::collections::BTreeMap;
 
-/// Widest logger clock offset the loop considers, seconds.
-pub const MAX_CLOCK_OFFSET_S: f64 = 300.0;
+/// Widest logger clock offset the loop considers, seconds: ±30 min. A logger set by hand
+/// drifts by minutes a month (a quartz clock's 20-50 ppm is 1-2 min a month); one left on
+/// the wrong daylight-saving zone is an hour off, which no scan over a day of hourly captures
+/// can tell from the weather and is for the user to declare.
+pub const MAX_CLOCK_OFFSET_S: f64 = 1800.0;
 
 /// Half-width of the logger series kept around each capture, seconds: the widest clock
 /// offset plus the ±60 s over which a rate of change is read, and a margin.

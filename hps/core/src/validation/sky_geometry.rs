@@ -369,7 +369,7 @@ pub fn hidden_suns(
 
 /// The pyranometer's direct-normal illuminance at a capture, lux: its DNI (or GHI and DHI)
 /// through the Perez 1990 model as gendaylit converts (the loop's Perez baseline).
-fn reference_direct_normal_lux(campaign: &Campaign, c: &CaptureData) -> Option<f64> {
+pub fn reference_direct_normal_lux(campaign: &Campaign, c: &CaptureData) -> Option<f64> {
     let table = campaign.pyranometer.as_ref()?;
     let row = nearest_in_time(&table.rows, TimeDelta::minutes(5), |r| r.time - c.time)?;
     let input = row.perez_input()?;

@@ -4,7 +4,7 @@
 //! logger's clock (interpolated between logs); visible only where the logger recorded a series
 //! around the captures.
 
-use super::fit::{finite_or_worst, fit_error, pearson_r, scored};
+use super::fit::{pairs, pearson_r, scored};
 use super::{FitContext, Fitted, LoopEffect};
 use crate::model::ModelError;
 use crate::validation::diagnostics::Variable;
@@ -35,12 +35,14 @@ impl LoopEffect for ClockOffset {
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {
-        let Some((next, evidence)) = fit_clock_offset(ctx.state, ctx.terms, ctx.fit) else {
+        let Some(found) = fit_clock_offset(ctx.state, ctx.terms, ctx.fit) else {
             return Ok(None);
         };
         let mut parameters = BTreeMap::new();
-        parameters.insert(PARAMETER.into(), next.get(CLOCK_OFFSET_S));
-        Ok(Some(scored(ctx, next, parameters, evidence, None)))
+        parameters.insert(PARAMETER.into(), found.state.get(CLOCK_OFFSET_S));
+        let mut fitted = scored(ctx, found.state, parameters, found.evidence, None);
+        fitted.identified_apart = found.clear;
+        Ok(Some(fitted))
     }
 
     fn refresh(&self, state: &LoopState, parameters: &mut BTreeMap<String, f64>) {
@@ -48,14 +50,52 @@ impl LoopEffect for ClockOffset {
     }
 }
 
-/// Fits the logger's clock offset: a scan of the fit-set error over ±[`MAX_CLOCK_OFFSET_S`] in 10 s
-/// steps, then 1 s steps around the best. `None` without logger series around the captures
-/// (one reading per capture cannot show an offset) or if the best offset is the current one.
-fn fit_clock_offset(
-    state: &LoopState,
-    terms: &[Terms],
-    fit: &FitSet<Sample>,
-) -> Option<(LoopState, String)> {
+/// Step of the coarse scan, s: the loggers' usual cadence (a reading every 30 s), so the
+/// coarse minimum lies within one step of the true offset.
+const COARSE_STEP_S: f64 = 30.0;
+
+/// Fewest compared readings at a trial offset, as a fraction of the most at any: an offset
+/// where the series no longer covers the captures compares fewer readings, whose error is
+/// not comparable.
+const MIN_COVERAGE: f64 = 0.8;
+
+/// The scale-free error must fall by this fraction of itself at the fitted offset for the
+/// offset to be identified apart (tried before the other effects, as a nuisance that changes
+/// which readings are compared).
+const CLEAR_FALL: f64 = 0.2;
+
+/// A fitted offset.
+struct Found {
+    state: LoopState,
+    evidence: String,
+    /// The scale-free error fell clearly ([`CLEAR_FALL`]).
+    clear: bool,
+}
+
+/// The fit set's readings at a logger offset: how many, and their mean |relative error|
+/// after the best common factor on the model (least squares in the ratio), so a factor on
+/// all light (dirty glazing) does not hide the timing.
+fn scale_free_error(state: &LoopState, terms: &[Terms], fit: &FitSet<Sample>) -> (usize, f64) {
+    let q: Vec<f64> = pairs(state, terms, fit)
+        .iter()
+        .map(|(p, m)| p / m)
+        .filter(|q| q.is_finite())
+        .collect();
+    let (s1, s2) = q.iter().fold((0.0, 0.0), |(a, b), x| (a + x, b + x * x));
+    if q.is_empty() || s2 <= 0.0 {
+        return (0, f64::NAN);
+    }
+    let c = s1 / s2;
+    let e = q.iter().map(|x| (c * x - 1.0).abs()).sum::<f64>() / q.len() as f64;
+    (q.len(), e)
+}
+
+/// Fits the logger's clock offset: a scan of the scale-free fit-set error
+/// ([`scale_free_error`]) over ±[`MAX_CLOCK_OFFSET_S`] in [`COARSE_STEP_S`] steps (offsets
+/// whose readings cover under [`MIN_COVERAGE`] of the best-covered are left out), then 5 s and
+/// 1 s steps around the best. `None` without logger series around the captures (one reading
+/// per capture cannot show an offset) or if the best offset is the current one.
+fn fit_clock_offset(state: &LoopState, terms: &[Terms], fit: &FitSet<Sample>) -> Option<Found> {
     let current = state.get(CLOCK_OFFSET_S);
     let dense = fit
         .samples()
@@ -64,25 +104,35 @@ fn fit_clock_offset(
     if !dense {
         return None;
     }
-    let at = |dt: f64| {
-        let st = state.with(CLOCK_OFFSET_S, dt);
-        (finite_or_worst(fit_error(&st, terms, fit)), st)
-    };
-    let mut best = (f64::INFINITY, 0.0);
-    let steps = (MAX_CLOCK_OFFSET_S / 10.0) as i32;
-    for k in -steps..=steps {
-        let dt = 10.0 * k as f64;
-        let (e, _) = at(dt);
-        if e < best.0 {
+    let at = |dt: f64| scale_free_error(&state.with(CLOCK_OFFSET_S, dt), terms, fit);
+    let steps = (MAX_CLOCK_OFFSET_S / COARSE_STEP_S).round() as i32;
+    let coarse: Vec<(f64, usize, f64)> = (-steps..=steps)
+        .map(|k| {
+            let dt = COARSE_STEP_S * k as f64;
+            let (n, e) = at(dt);
+            (dt, n, e)
+        })
+        .collect();
+    let most = coarse.iter().map(|c| c.1).max().unwrap_or(0);
+    let min_n = (MIN_COVERAGE * most as f64).ceil() as usize;
+    let feasible = |n: usize, e: f64| n >= min_n.max(1) && e.is_finite();
+    let mut best = (f64::INFINITY, current);
+    for &(dt, n, e) in &coarse {
+        if feasible(n, e) && e < best.0 {
             best = (e, dt);
         }
     }
-    let coarse = best.1;
-    for k in -10..=10 {
-        let dt = coarse + k as f64;
-        let (e, _) = at(dt);
-        if e < best.0 {
-            best = (e, dt);
+    for (step, half) in [(5.0, 6), (1.0, 5)] {
+        let centre = best.1;
+        for k in -half..=half {
+            let dt = centre + step * k as f64;
+            if dt.abs() > MAX_CLOCK_OFFSET_S {
+                continue;
+            }
+            let (n, e) = at(dt);
+            if feasible(n, e) && e < best.0 {
+                best = (e, dt);
+            }
         }
     }
     // An offset shorter than the logger's interval cannot be pinned: between two readings
@@ -101,6 +151,8 @@ fn fit_clock_offset(
     if !best.0.is_finite() || shift_s < 1.0 || shift_s < interval_s {
         return None;
     }
+    let (_, e_current) = at(current);
+    let clear = e_current.is_finite() && best.0 <= (1.0 - CLEAR_FALL) * e_current;
     // Signature: the residual follows the measured rate of change of the illuminance.
     let xy: Vec<(f64, f64)> = fit
         .samples()
@@ -118,9 +170,18 @@ fn fit_clock_offset(
         .collect();
     let r = pearson_r(&xy);
     let evidence = format!(
-        "the relative residual follows the rate of change of the measured illuminance          (r = {r:.2} over {} readings): the readings are matched at the wrong time;          re-matched {:+.0} s later on the logger's clock",
+        "the relative residual follows the rate of change of the measured illuminance \
+         (r = {r:.2} over {} readings): the readings are matched at the wrong time; \
+         re-matched {:+.0} s later on the logger's clock, the error after a common factor \
+         falls from {:.1} % to {:.1} %",
         xy.len(),
-        best.1 - current
+        best.1 - current,
+        100.0 * e_current,
+        100.0 * best.0
     );
-    Some((at(best.1).1, evidence))
+    Some(Found {
+        state: state.with(CLOCK_OFFSET_S, best.1),
+        evidence,
+        clear,
+    })
 }

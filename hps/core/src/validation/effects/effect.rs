@@ -99,6 +99,7 @@ pub struct FitContext<'a> {
 
 /// A fitted candidate: the model with the effect, its fit-set error, and what the effect
 /// changed beyond the model's parameters.
+#[derive(Clone)]
 pub struct Fitted {
     pub state: LoopState,
     pub parameters: BTreeMap<String, f64>,
@@ -110,4 +111,9 @@ pub struct Fitted {
     pub captures: Option<Vec<CaptureData>>,
     /// A new camera, for an effect on its geometry.
     pub device: Option<DeviceConfig>,
+    /// The effect was identified by evidence that does not rank against the other effects'
+    /// fit-set error: the raw frames alone (the shutter's overhead), or the logger's own
+    /// series under a free common factor (the clock offset, a nuisance that changes which
+    /// readings are compared). The loop tries it first; the hold-out set confirms it.
+    pub identified_apart: bool,
 }

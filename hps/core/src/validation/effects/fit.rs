@@ -28,6 +28,7 @@ pub fn scored(
         terms,
         captures: None,
         device: None,
+        identified_apart: false,
     }
 }
 

@@ -186,5 +186,6 @@ fn fit_glazing_angular(
         terms: Some(terms),
         captures: None,
         device: None,
+        identified_apart: false,
     })
 }

@@ -53,6 +53,7 @@ impl LoopEffect for OrientationError {
             terms: Some(terms),
             captures: None,
             device: Some(device),
+            identified_apart: false,
         }))
     }
 }

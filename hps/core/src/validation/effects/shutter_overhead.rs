@@ -1,26 +1,24 @@
 //! `shutter_overhead`: the shutter integrates each frame for its declared time plus a fixed
-//! overhead t0, which biases the shortest exposures, those that measure the sun.
-//! Signature: readings lit by the sun over-predicted by more than 3 % on average and by more
-//! than the others' mean |error| (a common factor biases both alike). Model: every capture
-//! re-merged with t + t0; t0 minimises the fit-set error (a scan over 0.5 to 64 µs in
-//! octaves, then a golden-section search between the best's neighbours). Tried only when the
-//! signature is there, since each trial re-merges every capture.
+//! overhead t0, which biases the short exposures: those that measure the sun and the bright
+//! sky. Identified from the raw frames alone ([`frame_evidence::shutter_overhead`]: the ratio
+//! of two exposures' signals in pixels valid in both is the ratio of the true integration
+//! times), so it is never confused with an effect of the lux-meters' residual (vignetting,
+//! glazing); the lux-meters then confirm it on the hold-out set. Model: every capture
+//! re-merged with t + t0. Where the overhead leaves the sun saturated in every frame (several
+//! µs against a 1 µs shortest exposure), the map cannot give the sun: it is taken from the
+//! pyranometer's direct-normal illuminance as a concentrated source.
 
-use super::fit::{finite_or_worst, fit_error, sunlit_bias};
 use super::{FitContext, Fitted, LoopEffect};
 use crate::camera::{CameraModel, DeviceConfig};
-use crate::hdr::{map_capture, CaptureMap, GroupGeometry};
+use crate::hdr::{map_capture, CaptureMap, GroupGeometry, MapFlag};
 use crate::model::{capture_terms, load_captures_with, CaptureData, ModelError};
 use crate::validation::diagnostics::Variable;
+use crate::validation::effects::fit::{finite_or_worst, fit_error};
+use crate::validation::frame_evidence;
 use crate::validation::glazing::GLAZING_ANGULAR_B0;
+use crate::validation::sky_geometry::reference_direct_normal_lux;
 use crate::validation::terms::{attach, use_reference_outdoor, Terms};
 use std::collections::BTreeMap;
-
-/// Widest shutter overhead the fit considers, µs.
-const MAX_SHUTTER_OVERHEAD_US: f64 = 100.0;
-
-/// Golden-section iterations after the octave scan.
-const GOLDEN_ITERATIONS: usize = 6;
 
 pub struct ShutterOverhead;
 
@@ -40,26 +38,7 @@ impl LoopEffect for ShutterOverhead {
     }
 
     fn fit(&self, ctx: &mut FitContext<'_>) -> Result<Option<Fitted>, ModelError> {
-        let state = ctx.state;
-        if !state.model.concentrated_sun {
-            return Ok(None);
-        }
-        let bias = sunlit_bias(state, ctx.terms, ctx.fit);
-        if std::env::var_os("SKYLUX_DEBUG_LOOP").is_some() {
-            eprintln!("shutter signature: {bias:?}");
-        }
-        // The sunlit readings' bias over and above the others': a common factor (dirty
-        // glazing) biases both alike and is no overhead's signature.
-        let shade_bias = if bias.shade_mean.is_finite() {
-            bias.shade_mean
-        } else {
-            0.0
-        };
-        let excess = bias.lit_mean - shade_bias;
-        if bias.lit_n < 2 || !excess.is_finite() || excess < 0.03 || excess < bias.shade_mean_abs {
-            return Ok(None);
-        }
-        let Some(best) = search_overhead(ctx)? else {
+        let Some((overhead_us, identification)) = identify(ctx)? else {
             return Ok(None);
         };
         let Trial {
@@ -67,30 +46,148 @@ impl LoopEffect for ShutterOverhead {
             error,
             captures,
             mut terms,
-        } = best;
+            suns_from_pyranometer,
+        } = trial(ctx, overhead_us)?;
         attach(ctx.room, &mut terms, ctx.colours);
         let mut parameters = BTreeMap::new();
         parameters.insert("overhead_us".into(), overhead_us);
-        let evidence = format!(
-            "readings lit by the sun are over-predicted by {:+.1} % on average ({} readings) \
-             against {:+.1} % (mean |error| {:.1} %) elsewhere ({}): the short exposures \
-             that measure the sun integrate longer than declared",
-            100.0 * bias.lit_mean,
-            bias.lit_n,
-            100.0 * shade_bias,
-            100.0 * bias.shade_mean_abs,
-            bias.shade_n
-        );
+        let sun_note = if suns_from_pyranometer > 0 {
+            format!(
+                "; re-merged, the sun still saturates every frame at {suns_from_pyranometer} \
+                 captures and is taken from the pyranometer's direct-normal illuminance there"
+            )
+        } else {
+            String::new()
+        };
         Ok(Some(Fitted {
-            state: state.clone(),
+            state: ctx.state.clone(),
             parameters,
-            evidence,
+            evidence: format!("{identification}{sun_note}"),
             fit_error: error,
             terms: Some(terms),
             captures: Some(captures),
             device: None,
+            identified_apart: true,
         }))
     }
+}
+
+/// The sun must read this much above the pyranometer's direct-normal illuminance (median
+/// over the captures) for an overhead to be named: beyond the sun's colour (a 5,700 K sun
+/// reads some 5 % low through the camera's luminance weights, docs/loop.md) and the Perez
+/// efficacy's scatter (some 5 %, Perez et al. 1990).
+const SUN_OVER_READ: f64 = 0.15;
+
+/// The overhead and the sentence that identified it, from evidence without the lux-meters:
+/// the exposures' signal ratios ([`frame_evidence::shutter_overhead`]) where they overlap,
+/// else the extracted sun against the pyranometer ([`frame_evidence::sun_over_pyranometer`]),
+/// else the sun saturated in every frame while the pyranometer reports a beam (the overhead
+/// then has only a lower bound, and the model does not depend on it beyond: the sun comes
+/// from the pyranometer). `None`: nothing shows an overhead.
+fn identify(ctx: &mut FitContext<'_>) -> Result<Option<(f64, String)>, ModelError> {
+    let all: Vec<usize> = (0..ctx.captures.len()).collect();
+    let ratios = frame_evidence::shutter_overhead(ctx.campaign, ctx.device, &all)?;
+    let suns: Vec<Option<f64>> = ctx
+        .terms
+        .iter()
+        .map(|t| t.sun.as_ref().map(|s| s.direct_normal_illuminance_lux))
+        .collect();
+    let sun = frame_evidence::sun_over_pyranometer(ctx.campaign, ctx.captures, &suns);
+    let camera = CameraModel::new(ctx.device.clone());
+    let saturated = ctx
+        .captures
+        .iter()
+        .zip(ctx.terms)
+        .filter(|(c, t)| {
+            t.sun.is_none()
+                && c.spa_sun.z > 0.0
+                && sun_over_range(&camera, c)
+                && reference_direct_normal_lux(ctx.campaign, c).is_some()
+        })
+        .count();
+    if std::env::var_os("SKYLUX_DEBUG_LOOP").is_some() {
+        eprintln!(
+            "shutter overhead evidence: ratios {ratios:?}; sun / pyranometer {sun:?}; \
+             saturated suns {saturated}"
+        );
+    }
+    if let Some(e) = ratios.filter(|e| e.shows_overhead()) {
+        return Ok(Some((
+            e.overhead_us,
+            format!(
+                "the exposures' signal ratios in pixels valid in both (no lux-meter involved) \
+                 show the frames integrating {:.2} ± {:.2} µs longer than declared ({} exposure \
+                 pairs, {} pixels)",
+                e.overhead_us, e.standard_error_us, e.pairs, e.pixels
+            ),
+        )));
+    }
+    let mut over: Vec<f64> = sun.iter().map(|(_, r, _)| *r).collect();
+    over.sort_by(f64::total_cmp);
+    let median_ratio = over.get(over.len() / 2).copied().unwrap_or(f64::NAN);
+    if over.len() >= 2 && median_ratio >= 1.0 + SUN_OVER_READ {
+        let mut t0: Vec<f64> = sun.iter().map(|(_, r, t)| t * (r - 1.0)).collect();
+        t0.sort_by(f64::total_cmp);
+        let overhead_us = t0[t0.len() / 2];
+        return Ok(Some((
+            overhead_us,
+            format!(
+                "the sun, measured in the shortest exposure, reads {median_ratio:.2} times the \
+                 pyranometer's direct-normal illuminance (median of {} captures; no lux-meter \
+                 involved): the shortest frame integrates {overhead_us:.2} µs longer than \
+                 declared{}",
+                over.len(),
+                if saturated > 0 {
+                    format!(", and the sun saturates every frame at {saturated} more captures")
+                } else {
+                    String::new()
+                }
+            ),
+        )));
+    }
+    if saturated >= 2 && saturated > over.len() {
+        // Only a lower bound: the shortest frame's DN at the sun exceeds the valid maximum.
+        let (valid_max, shortest) = (
+            ctx.device.sensor.valid_max_dn,
+            shortest_exposure_us(ctx.campaign).unwrap_or(1.0),
+        );
+        let overhead_us = search_saturated(ctx, shortest)?;
+        return Ok(Some((
+            overhead_us,
+            format!(
+                "the sun saturates every frame (over {valid_max:.0} DN even in the shortest, \
+                 {shortest} µs) at {saturated} captures where the pyranometer reports a beam \
+                 and SPA puts it in view (no lux-meter involved): the short frames integrate \
+                 longer than declared; the overhead, fitted on the lux-meters, is a lower \
+                 bound"
+            ),
+        )));
+    }
+    Ok(None)
+}
+
+/// The campaign's shortest declared exposure, µs.
+fn shortest_exposure_us(campaign: &crate::campaign::Campaign) -> Option<f64> {
+    campaign
+        .captures
+        .iter()
+        .filter_map(|c| crate::campaign::CaptureConfig::read(&c.dir.join("capture.toml")).ok())
+        .flat_map(|cfg| cfg.exposure.into_iter().map(|e| e.exposure_us))
+        .min_by(f64::total_cmp)
+}
+
+/// With the sun saturated everywhere: the overhead of least fit-set error on an octave grid
+/// from the shortest exposure up (the sky's short-exposure groups still depend on it).
+fn search_saturated(ctx: &mut FitContext<'_>, shortest_us: f64) -> Result<f64, ModelError> {
+    let mut best = (f64::INFINITY, shortest_us);
+    for k in 0..6 {
+        let t0 = shortest_us * 2f64.powi(k);
+        let t = trial(ctx, t0)?;
+        if t.error < best.0 {
+            best = (t.error, t0);
+        }
+    }
+    Ok(best.1)
 }
 
 /// One trial overhead: its fit-set error and the captures and terms re-merged with it.
@@ -99,6 +196,8 @@ struct Trial {
     error: f64,
     captures: Vec<CaptureData>,
     terms: Vec<Terms>,
+    /// Captures whose sun came from the pyranometer (saturated in every frame).
+    suns_from_pyranometer: usize,
 }
 
 /// Re-merges every capture with `overhead_us` and scores the fit set on the new terms (the
@@ -112,6 +211,7 @@ fn trial(ctx: &mut FitContext<'_>, overhead_us: f64) -> Result<Trial, ModelError
     )?;
     let mut terms = Terms::all(capture_terms(ctx.room, &captures, device, &|_, _| {})?);
     use_reference_outdoor(&mut terms, ctx.reference_outdoor);
+    let suns_from_pyranometer = saturated_suns_from_pyranometer(ctx, &captures, &mut terms)?;
     let b0 = ctx.state.get(GLAZING_ANGULAR_B0);
     if let (Some(g), true) = (ctx.angular, b0 > 0.0) {
         terms = g.apply(&terms, b0);
@@ -122,62 +222,49 @@ fn trial(ctx: &mut FitContext<'_>, overhead_us: f64) -> Result<Trial, ModelError
         error,
         captures,
         terms,
+        suns_from_pyranometer,
     })
 }
 
-/// The overhead of least fit-set error: the octave scan, then
-/// [`crate::numerics::golden_section`] between the best's neighbours (the error is unimodal in
-/// t0 near its minimum). `None` if the scan gave nothing.
-fn search_overhead(ctx: &mut FitContext<'_>) -> Result<Option<Trial>, ModelError> {
-    let grid: Vec<f64> = (0..8).map(|k| 0.5 * 2f64.powi(k)).collect();
-    let mut best: Option<Trial> = None;
-    for &t0 in &grid {
-        let t = trial(ctx, t0)?;
-        if best.as_ref().is_none_or(|b| t.error < b.error) {
-            best = Some(t);
+/// Where the map shows no sun but the groups at SPA's sun are over-range in every frame, the
+/// sun taken from the pyranometer's direct-normal illuminance (Perez 1990 efficacy, as the
+/// Perez baseline) with the room's sun coefficients; how many captures.
+fn saturated_suns_from_pyranometer(
+    ctx: &mut FitContext<'_>,
+    captures: &[CaptureData],
+    terms: &mut [Terms],
+) -> Result<usize, ModelError> {
+    let camera = CameraModel::new(ctx.device.clone());
+    let mut count = 0;
+    for (c, t) in captures.iter().zip(terms.iter_mut()) {
+        if t.sun.is_some() || c.spa_sun.z <= 0.0 || !sun_over_range(&camera, c) {
+            continue;
         }
+        let Some(dn_lux) = reference_direct_normal_lux(ctx.campaign, c) else {
+            continue;
+        };
+        let k = ctx.room.sun_coefficients(c.spa_sun)?;
+        t.model.sun_lux_per_dn_lux = k.into_iter().map(|(lux, _)| lux).collect();
+        t.model.sun_dn_lux = dn_lux;
+        count += 1;
     }
-    let Some(scanned) = best else {
-        return Ok(None);
+    Ok(count)
+}
+
+/// Whether the map's group at SPA's sun is over-range (saturated in every exposure).
+fn sun_over_range(camera: &CameraModel, c: &CaptureData) -> bool {
+    let Some(p) = camera.project(c.spa_sun) else {
+        return false;
     };
-    let i = grid
-        .iter()
-        .position(|g| *g == scanned.overhead_us)
-        .unwrap_or(0);
-    let (a, b) = (
-        if i == 0 { 0.0 } else { grid[i - 1] },
-        grid.get(i + 1).copied().unwrap_or(MAX_SHUTTER_OVERHEAD_US),
-    );
-    // The search sees only errors; the lowest trial's captures and terms are kept aside.
-    let start = (scanned.overhead_us, scanned.error);
-    let mut kept = scanned;
-    let mut failure = None;
-    let (x, _) = crate::numerics::golden_section(a, b, start, GOLDEN_ITERATIONS, |t0| {
-        if failure.is_some() {
-            return f64::INFINITY;
-        }
-        match trial(ctx, t0) {
-            Ok(t) => {
-                let e = t.error;
-                if e < kept.error {
-                    kept = t;
-                }
-                e
-            }
-            Err(e) => {
-                failure = Some(e);
-                f64::INFINITY
-            }
-        }
-    });
-    if let Some(e) = failure {
-        return Err(e);
+    let skip = f64::from(c.readout.skip.max(1));
+    let gx = ((p.x_px - f64::from(c.readout.col_start)) / skip / 2.0).floor();
+    let gy = ((p.y_px - f64::from(c.readout.row_start)) / skip / 2.0).floor();
+    let (w, h) = (c.map.width as f64, c.map.height as f64);
+    if !(gx >= 0.0 && gy >= 0.0 && gx < w && gy < h) {
+        return false;
     }
-    if kept.overhead_us != x {
-        // A tie the search broke the other way: take the trial it chose.
-        kept = trial(ctx, x)?;
-    }
-    Ok(Some(kept))
+    let i = gy as usize * c.map.width + gx as usize;
+    c.map.flags.get(i) == Some(&MapFlag::OverRange)
 }
 
 /// Merges one capture folder taking each frame's integration time as declared plus
