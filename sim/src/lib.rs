@@ -14,6 +14,8 @@ pub mod dc_case;
 pub mod hdr_case;
 pub mod mt9p031;
 pub mod pixel_bus;
+pub mod radiance_tools;
+pub mod radiance_truth;
 pub mod raybox;
 pub mod sensor;
 pub mod sky;

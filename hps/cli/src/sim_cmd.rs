@@ -3,7 +3,7 @@
 
 use anyhow::Context;
 use clap::{Args, Subcommand};
-use skylux_sim::campaign::{simulate_campaign, CampaignSpec, DaySky};
+use skylux_sim::campaign::{simulate_campaign, CampaignSpec, DaySky, TruthSource};
 use std::path::PathBuf;
 
 #[derive(Args)]
@@ -60,6 +60,11 @@ pub struct SimCampaignArgs {
     /// Readout skip of the simulated frames (1: full 2592x1944; 4: 648x486).
     #[arg(long, default_value_t = 4)]
     pub skip: u32,
+    /// What gives the lux-meters' truth: `engine` (Skylux's own, 5 bounces), `radiance`
+    /// (RADIANCE's rcontrib daylight coefficients, 12 bounces: independent of the engine the
+    /// loop's model uses; needs RADIANCE) or `radiance:N` (N bounces).
+    #[arg(long, default_value = "engine")]
+    pub truth: TruthSource,
 }
 
 /// The reference test module beside the checkout (`../shared/scenes/test-module`), or
@@ -111,6 +116,7 @@ pub fn spec_from(args: &SimCampaignArgs) -> anyhow::Result<CampaignSpec> {
         "--skip must be between 1 and 8"
     );
     spec.skip = args.skip;
+    spec.truth = args.truth;
     Ok(spec)
 }
 
