@@ -195,8 +195,8 @@ const WORLD_PARAMETERS: &[WorldParameter] = &[
     },
     WorldParameter {
         effect: &effects::clock_offset::ClockOffset,
-        valid: |v| v.abs() <= 300.0,
-        range: "within ±300 seconds",
+        valid: |v| v.abs() <= 1800.0,
+        range: "within ±1800 seconds",
         set: |w, v| w.clock_offset_s = v,
     },
     WorldParameter {
@@ -259,6 +259,42 @@ impl Default for LoggerSchedule {
             cadence_s: 30.0,
             half_window_s: 600.0,
         }
+    }
+}
+
+impl LoggerSchedule {
+    /// The widest window a capture's series may span, s: the light around a capture is
+    /// modelled from that capture's sky and sun, which a longer stretch would outlast.
+    pub const MAX_HALF_WINDOW_S: f64 = 1800.0;
+
+    /// A logger recording all the time between captures `captures_every_s` apart, every 30 s:
+    /// each capture keeps the readings up to half the spacing less one cadence, so windows
+    /// never overlap (nor exceed [`Self::MAX_HALF_WINDOW_S`]), and clock offsets up to about
+    /// half the spacing stay inside the record.
+    pub fn continuous(captures_every_s: f64) -> Self {
+        let cadence_s = Self::default().cadence_s;
+        Self {
+            cadence_s,
+            half_window_s: (captures_every_s / 2.0 - cadence_s).clamp(0.0, Self::MAX_HALF_WINDOW_S),
+        }
+    }
+
+    /// Checks the schedule, naming what is wrong.
+    pub fn validate(&self) -> Result<(), String> {
+        if !(self.cadence_s.is_finite() && self.cadence_s > 0.0) {
+            return Err(format!(
+                "logger cadence {} s: must be positive",
+                self.cadence_s
+            ));
+        }
+        if !(0.0..=Self::MAX_HALF_WINDOW_S).contains(&self.half_window_s) {
+            return Err(format!(
+                "logger half window {} s: must be within 0 to {} s",
+                self.half_window_s,
+                Self::MAX_HALF_WINDOW_S
+            ));
+        }
+        Ok(())
     }
 }
 
@@ -371,6 +407,8 @@ pub struct CampaignSpec {
     /// When the lux-meters log. `None`: one reading per capture time, except on partly
     /// cloudy days or with a clock offset, which log by [`LoggerSchedule::default`] (the
     /// light changes within minutes, and the loop needs the readings around each capture).
+    /// `Some`: every capture logs by that schedule (e.g. [`LoggerSchedule::continuous`] for
+    /// clock offsets beyond the default's ±5 min).
     pub logger: Option<LoggerSchedule>,
     /// Relative standard deviation of a lux-meter reading.
     pub luxmeter_noise: f64,
@@ -523,6 +561,9 @@ pub fn simulate_campaign(
         return Err(SimCampaignError::Invalid(
             "a campaign needs at least one day and one capture time".into(),
         ));
+    }
+    if let Some(logger) = &spec.logger {
+        logger.validate().map_err(SimCampaignError::Invalid)?;
     }
     write_declared(out, spec)?;
     let mut world = TrueWorld::new(out, spec)?;
@@ -1235,4 +1276,47 @@ fn simulate_capture_with_overhead(
     }
     written.write(&dir.join("capture.toml"))?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Hourly captures: a reading every 30 s to ±29.5 min, so consecutive windows never
+    /// overlap and an offset of up to ±29.5 min stays inside each capture's record.
+    #[test]
+    fn continuous_logger_windows_do_not_overlap() {
+        let log = LoggerSchedule::continuous(3600.0);
+        assert_eq!(log.cadence_s, 30.0);
+        assert_eq!(log.half_window_s, 1770.0);
+        assert!(2.0 * log.half_window_s < 3600.0);
+        log.validate().unwrap();
+        assert_eq!(
+            LoggerSchedule::continuous(7200.0).half_window_s,
+            LoggerSchedule::MAX_HALF_WINDOW_S
+        );
+        assert_eq!(LoggerSchedule::continuous(20.0).half_window_s, 0.0);
+        let bad = LoggerSchedule {
+            cadence_s: 0.0,
+            ..log
+        };
+        assert!(bad.validate().unwrap_err().contains("cadence"));
+        let wide = LoggerSchedule {
+            half_window_s: 4000.0,
+            ..log
+        };
+        assert!(wide.validate().unwrap_err().contains("half window"));
+    }
+
+    #[test]
+    fn truth_source_parses() {
+        assert_eq!("engine".parse::<TruthSource>(), Ok(TruthSource::Engine));
+        assert_eq!("radiance".parse::<TruthSource>(), Ok(TruthSource::RADIANCE));
+        assert_eq!(
+            "radiance:5".parse::<TruthSource>(),
+            Ok(TruthSource::Radiance { ambient_bounces: 5 })
+        );
+        assert!("radiance:0".parse::<TruthSource>().is_err());
+        assert!("rtrace".parse::<TruthSource>().is_err());
+    }
 }
