@@ -5,6 +5,7 @@
 //! `sim/` holds models only, never product logic: the product is `rtl/` and `hps/`.
 
 pub mod analysis;
+pub mod battery;
 pub mod bus;
 pub mod campaign;
 pub mod capture;
