@@ -7,7 +7,10 @@
 //! a real error to show, as in the field); a ground of the world's reflectance. The camera
 //! (the one camera model, through the sensor model) images it into raw frames; the room
 //! (the daylighting engine, by direct path tracing of the continuous sky and a `light` sun)
-//! gives the lux-meter readings; the pyranometer records the irradiance.
+//! gives the lux-meter readings; the pyranometer records the irradiance. With
+//! [`TruthSource::Radiance`] RADIANCE's daylight coefficients give them instead
+//! ([`crate::radiance_truth`]), so the truth does not come from the engine the loop's model
+//! uses.
 //!
 //! Undeclared effects ([`WorldEffects`]) change the world, never `device.toml` or the scene:
 //! the model is told what the campaign's owner believes, not what is true.
@@ -23,7 +26,7 @@ use skylux_hps::engine::sky::DistantEmitter;
 use skylux_hps::engine::{self, Settings, World};
 use skylux_hps::io::irradiance::{write_pyranometer_csv, PyranometerRow};
 use skylux_hps::sky::perez::{PerezConditions, PerezInput, PerezSky};
-use skylux_hps::sun::position::{solar_position, Site as SunSite};
+use skylux_hps::sun::position::{solar_position, Site as SunSite, SolarPosition};
 use skylux_hps::validation::effects::{self, registry, LoopEffect};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -192,8 +195,8 @@ const WORLD_PARAMETERS: &[WorldParameter] = &[
     },
     WorldParameter {
         effect: &effects::clock_offset::ClockOffset,
-        valid: |v| v.abs() <= 3600.0,
-        range: "within ±3600 seconds",
+        valid: |v| v.abs() <= 1800.0,
+        range: "within ±1800 seconds",
         set: |w, v| w.clock_offset_s = v,
     },
     WorldParameter {
@@ -259,6 +262,42 @@ impl Default for LoggerSchedule {
     }
 }
 
+impl LoggerSchedule {
+    /// The widest window a capture's series may span, s: the light around a capture is
+    /// modelled from that capture's sky and sun, which a longer stretch would outlast.
+    pub const MAX_HALF_WINDOW_S: f64 = 1800.0;
+
+    /// A logger recording all the time between captures `captures_every_s` apart, every 30 s:
+    /// each capture keeps the readings up to half the spacing less one cadence, so windows
+    /// never overlap (nor exceed [`Self::MAX_HALF_WINDOW_S`]), and clock offsets up to about
+    /// half the spacing stay inside the record.
+    pub fn continuous(captures_every_s: f64) -> Self {
+        let cadence_s = Self::default().cadence_s;
+        Self {
+            cadence_s,
+            half_window_s: (captures_every_s / 2.0 - cadence_s).clamp(0.0, Self::MAX_HALF_WINDOW_S),
+        }
+    }
+
+    /// Checks the schedule, naming what is wrong.
+    pub fn validate(&self) -> Result<(), String> {
+        if !(self.cadence_s.is_finite() && self.cadence_s > 0.0) {
+            return Err(format!(
+                "logger cadence {} s: must be positive",
+                self.cadence_s
+            ));
+        }
+        if !(0.0..=Self::MAX_HALF_WINDOW_S).contains(&self.half_window_s) {
+            return Err(format!(
+                "logger half window {} s: must be within 0 to {} s",
+                self.half_window_s,
+                Self::MAX_HALF_WINDOW_S
+            ));
+        }
+        Ok(())
+    }
+}
+
 /// The sun's transmission through passing clouds around one capture on a partly cloudy day,
 /// as a function of time from the capture: a square wave of period `period_s` with soft
 /// edges (a cloud edge takes about a tenth of the period to cross the disk), so the
@@ -308,6 +347,45 @@ struct SkySunParts {
     sun_lux: Vec<f64>,
 }
 
+/// What gives the lux-meters' truth.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum TruthSource {
+    /// Skylux's own engine (direct path tracing, 5 diffuse bounces): quick, but the engine
+    /// the loop's model also uses, so the test bed is not independent of it.
+    #[default]
+    Engine,
+    /// RADIANCE's rcontrib daylight coefficients ([`crate::radiance_truth`]) with this many
+    /// diffuse bounces: independent of Skylux's engine; needs RADIANCE installed.
+    Radiance { ambient_bounces: u32 },
+}
+
+impl TruthSource {
+    /// RADIANCE, converged ([`crate::radiance_truth::CONVERGED_BOUNCES`]).
+    pub const RADIANCE: Self = Self::Radiance {
+        ambient_bounces: crate::radiance_truth::CONVERGED_BOUNCES,
+    };
+}
+
+impl std::str::FromStr for TruthSource {
+    type Err = String;
+    /// `engine`, `radiance` (converged) or `radiance:N` (N diffuse bounces, 1 to 32).
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s.split_once(':') {
+            None if s == "engine" => Ok(Self::Engine),
+            None if s == "radiance" => Ok(Self::RADIANCE),
+            Some(("radiance", n)) => match n.parse::<u32>() {
+                Ok(b) if (1..=32).contains(&b) => Ok(Self::Radiance { ambient_bounces: b }),
+                _ => Err(format!(
+                    "`{s}`: the bounces after `radiance:` must be a whole number from 1 to 32"
+                )),
+            },
+            _ => Err(format!(
+                "unknown truth `{s}`: expected engine, radiance or radiance:BOUNCES"
+            )),
+        }
+    }
+}
+
 /// A campaign to simulate.
 #[derive(Clone, Debug)]
 pub struct CampaignSpec {
@@ -329,11 +407,15 @@ pub struct CampaignSpec {
     /// When the lux-meters log. `None`: one reading per capture time, except on partly
     /// cloudy days or with a clock offset, which log by [`LoggerSchedule::default`] (the
     /// light changes within minutes, and the loop needs the readings around each capture).
+    /// `Some`: every capture logs by that schedule (e.g. [`LoggerSchedule::continuous`] for
+    /// clock offsets beyond the default's ±5 min).
     pub logger: Option<LoggerSchedule>,
     /// Relative standard deviation of a lux-meter reading.
     pub luxmeter_noise: f64,
     /// Paths per sensor of the engine run that gives the true illuminance.
     pub truth_samples: u32,
+    /// What gives the lux-meters' truth (the engine by default).
+    pub truth: TruthSource,
     pub seed: u64,
     /// The shared data folder (`spectral/` within), for the spectral-mismatch effect.
     pub spectral_data_dir: Option<PathBuf>,
@@ -377,6 +459,7 @@ impl CampaignSpec {
             logger: None,
             luxmeter_noise: 0.01,
             truth_samples: 4096,
+            truth: TruthSource::Engine,
             seed: 2017,
             spectral_data_dir,
         }
@@ -405,6 +488,8 @@ pub enum SimCampaignError {
     Campaign(#[from] skylux_hps::campaign::CampaignError),
     #[error(transparent)]
     Device(#[from] skylux_hps::camera::DeviceError),
+    #[error("the RADIANCE truth: {0}")]
+    RadianceTruth(#[from] crate::radiance_truth::RadianceTruthError),
 }
 
 /// The truth of one capture time, for tests.
@@ -477,8 +562,14 @@ pub fn simulate_campaign(
             "a campaign needs at least one day and one capture time".into(),
         ));
     }
+    if let Some(logger) = &spec.logger {
+        logger.validate().map_err(SimCampaignError::Invalid)?;
+    }
     write_declared(out, spec)?;
     let mut world = TrueWorld::new(out, spec)?;
+    if let TruthSource::Radiance { ambient_bounces } = spec.truth {
+        world.radiance = Some(RadianceRoom::new(out, spec, &world, ambient_bounces)?);
+    }
     let mut records = Records::default();
     let total = spec.days.len() * spec.hours.len();
     let mut k = 0u64;
@@ -590,6 +681,103 @@ struct TrueWorld {
     sun_site: SunSite,
     /// The camera's channel responses to daylight, where the sky's colour is simulated.
     responses: Option<crate::sky_colour::DaylightResponses>,
+    /// With [`TruthSource::Radiance`], RADIANCE's coefficients in place of the engine.
+    radiance: Option<RadianceRoom>,
+}
+
+/// The room's daylight coefficients from RADIANCE for the whole campaign, and the sun of
+/// each capture time among them.
+struct RadianceRoom {
+    truth: crate::radiance_truth::RadianceTruth,
+    /// Per capture time k (from 1), the index of its sun, `None` where it is skipped.
+    sun_of_capture: Vec<Option<usize>>,
+}
+
+impl RadianceRoom {
+    /// One rcontrib run with every capture's sun.
+    fn new(
+        out: &Path,
+        spec: &CampaignSpec,
+        world: &TrueWorld,
+        ambient_bounces: u32,
+    ) -> Result<Self, SimCampaignError> {
+        use crate::radiance_truth::{DaylightCoefficients, RadianceTruth, SunSource};
+        let radiance = crate::radiance_tools::Radiance::find()
+            .map_err(crate::radiance_truth::RadianceTruthError::from)?;
+        let mut suns = Vec::new();
+        let mut sun_of_capture = vec![None];
+        for &(date, _) in &spec.days {
+            for &hour in &spec.hours {
+                let (_, sun) = world.instant(date, hour)?;
+                sun_of_capture.push((sun.altitude_deg() >= MIN_SUN_ALTITUDE_DEG).then(|| {
+                    suns.push(SunSource {
+                        direction: sun.direction(),
+                        solid_angle_sr: sun_solid_angle_sr(),
+                    });
+                    suns.len() - 1
+                }));
+            }
+        }
+        let coefficients = DaylightCoefficients::compute(
+            &radiance,
+            &out.join("room/scene.rad"),
+            &world.sensors,
+            &suns,
+            ambient_bounces,
+        )?;
+        Ok(Self {
+            truth: RadianceTruth::new(coefficients),
+            sun_of_capture,
+        })
+    }
+}
+
+impl RadianceRoom {
+    /// [`TrueWorld::trace`] from RADIANCE's coefficients: capture `k`'s sky `above` (or
+    /// none), a uniform ground and its sun, each through the glazing's angular
+    /// transmittance.
+    fn lux(
+        &self,
+        k: u64,
+        iam: &GlazingIam,
+        sky: &MomentSky,
+        above: Option<&MomentSky>,
+        ground_cd_m2: f64,
+        sun_cd_m2: f64,
+    ) -> Result<Vec<f64>, SimCampaignError> {
+        let mut lux = self.truth.ground_lux(ground_cd_m2, &|d| iam.at(d));
+        if let Some(above) = above {
+            let from_sky = self.truth.sky_lux(&|d| iam.at(d) * above.sky(d));
+            lux.iter_mut().zip(from_sky).for_each(|(a, b)| *a += b);
+        }
+        if sun_cd_m2 > 0.0 {
+            let sun = self
+                .sun_of_capture
+                .get(k as usize)
+                .copied()
+                .flatten()
+                .ok_or_else(|| {
+                    SimCampaignError::Invalid(format!("capture {k} has no RADIANCE sun"))
+                })?;
+            let from_sun = self
+                .truth
+                .sun_lux(sun, sun_cd_m2 * iam.at(sky.sun_direction));
+            lux.iter_mut().zip(from_sun).for_each(|(a, b)| *a += b);
+        }
+        Ok(lux)
+    }
+}
+
+/// Capture times with the sun under this altitude are skipped, degrees.
+const MIN_SUN_ALTITUDE_DEG: f64 = 3.0;
+
+/// The solid angle of the world's solar disk, sr (the Perez sky's: gendaylit's half-angle).
+fn sun_solid_angle_sr() -> f64 {
+    std::f64::consts::TAU
+        * (1.0
+            - skylux_hps::sky::perez::GENDAYLIT_HALF_SUN_ANGLE_DEG
+                .to_radians()
+                .cos())
 }
 
 /// The sky at one capture time: the Perez sky for the day's irradiance, the clouds it does
@@ -767,7 +955,25 @@ impl TrueWorld {
                 elevation_m: spec.site.elevation_m,
             },
             responses,
+            radiance: None,
         })
+    }
+
+    /// The capture instant at local clock `hour` of `date`, and where SPA puts the sun.
+    fn instant(
+        &self,
+        date: NaiveDate,
+        hour: f64,
+    ) -> Result<(DateTime<FixedOffset>, SolarPosition), SimCampaignError> {
+        let midnight = self
+            .offset
+            .from_local_datetime(&date.and_hms_opt(0, 0, 0).expect("midnight"))
+            .single()
+            .ok_or_else(|| SimCampaignError::Invalid("ambiguous local time".into()))?;
+        let time = midnight + Duration::seconds((hour * 3600.0).round() as i64);
+        let sun = solar_position(time.with_timezone(&Utc), &self.sun_site, None)
+            .map_err(|e| SimCampaignError::Invalid(e.to_string()))?;
+        Ok((time, sun))
     }
 
     /// Simulates one capture time (the k-th): frames, lux-meter readings, the pyranometer's
@@ -783,16 +989,9 @@ impl TrueWorld {
         k: u64,
         records: &mut Records,
     ) -> Result<(), SimCampaignError> {
-        let midnight = self
-            .offset
-            .from_local_datetime(&date.and_hms_opt(0, 0, 0).expect("midnight"))
-            .single()
-            .ok_or_else(|| SimCampaignError::Invalid("ambiguous local time".into()))?;
-        let time = midnight + Duration::seconds((hour * 3600.0).round() as i64);
-        let sun = solar_position(time.with_timezone(&Utc), &self.sun_site, None)
-            .map_err(|e| SimCampaignError::Invalid(e.to_string()))?;
+        let (time, sun) = self.instant(date, hour)?;
         let altitude = sun.altitude_deg().to_radians();
-        if altitude < 3f64.to_radians() {
+        if sun.altitude_deg() < MIN_SUN_ALTITUDE_DEG {
             return Ok(());
         }
         let seed = spec.seed ^ (k << 20);
@@ -809,7 +1008,7 @@ impl TrueWorld {
             (kind == DaySky::Partly || spec.effects.clock_offset_s != 0.0)
                 .then(LoggerSchedule::default)
         });
-        let (room_lux, parts) = self.trace_room(spec, seed, &sky, logger.is_some())?;
+        let (room_lux, parts) = self.trace_room(spec, seed, k, &sky, logger.is_some())?;
         let names: Vec<&str> = self.sensors.iter().map(|s| s.name.as_str()).collect();
         let log = LuxmeterLog {
             spec,
@@ -917,12 +1116,16 @@ impl TrueWorld {
     fn trace(
         &mut self,
         settings: &Settings,
+        k: u64,
         sky: &MomentSky,
         above: Option<Arc<MomentSky>>,
         ground_cd_m2: f64,
         sun_cd_m2: f64,
     ) -> Result<Vec<f64>, SimCampaignError> {
         let iam = self.iam;
+        if let Some(room) = &self.radiance {
+            return room.lux(k, &iam, sky, above.as_deref(), ground_cd_m2, sun_cd_m2);
+        }
         self.world.set_environment(Some(Arc::new(move |d: DVec3| {
             let l = if d.z < 0.0 {
                 ground_cd_m2
@@ -951,6 +1154,7 @@ impl TrueWorld {
         &mut self,
         spec: &CampaignSpec,
         seed: u64,
+        k: u64,
         sky: &Arc<MomentSky>,
         logging: bool,
     ) -> Result<(Vec<f64>, Option<SkySunParts>), SimCampaignError> {
@@ -962,15 +1166,15 @@ impl TrueWorld {
         };
         let above = Some(Arc::clone(sky));
         if !logging {
-            let lux = self.trace(&settings, sky, above, sky.ground_cd_m2, sky.sun_cd_m2)?;
+            let lux = self.trace(&settings, k, sky, above, sky.ground_cd_m2, sky.sun_cd_m2)?;
             return Ok((lux, None));
         }
         let rho = spec.effects.ground_reflectance;
         let pi = std::f64::consts::PI;
-        let sky_lux = self.trace(&settings, sky, above, rho * sky.diffuse_lux / pi, 0.0)?;
+        let sky_lux = self.trace(&settings, k, sky, above, rho * sky.diffuse_lux / pi, 0.0)?;
         let sun_lux = if sky.dni > 0.0 {
             let sun_cd_m2 = sky.perez.sun_luminance_cd_m2();
-            self.trace(&settings, sky, None, rho * sky.beam_lux / pi, sun_cd_m2)?
+            self.trace(&settings, k, sky, None, rho * sky.beam_lux / pi, sun_cd_m2)?
         } else {
             vec![0.0; self.sensors.len()]
         };
@@ -1072,4 +1276,47 @@ fn simulate_capture_with_overhead(
     }
     written.write(&dir.join("capture.toml"))?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Hourly captures: a reading every 30 s to ±29.5 min, so consecutive windows never
+    /// overlap and an offset of up to ±29.5 min stays inside each capture's record.
+    #[test]
+    fn continuous_logger_windows_do_not_overlap() {
+        let log = LoggerSchedule::continuous(3600.0);
+        assert_eq!(log.cadence_s, 30.0);
+        assert_eq!(log.half_window_s, 1770.0);
+        assert!(2.0 * log.half_window_s < 3600.0);
+        log.validate().unwrap();
+        assert_eq!(
+            LoggerSchedule::continuous(7200.0).half_window_s,
+            LoggerSchedule::MAX_HALF_WINDOW_S
+        );
+        assert_eq!(LoggerSchedule::continuous(20.0).half_window_s, 0.0);
+        let bad = LoggerSchedule {
+            cadence_s: 0.0,
+            ..log
+        };
+        assert!(bad.validate().unwrap_err().contains("cadence"));
+        let wide = LoggerSchedule {
+            half_window_s: 4000.0,
+            ..log
+        };
+        assert!(wide.validate().unwrap_err().contains("half window"));
+    }
+
+    #[test]
+    fn truth_source_parses() {
+        assert_eq!("engine".parse::<TruthSource>(), Ok(TruthSource::Engine));
+        assert_eq!("radiance".parse::<TruthSource>(), Ok(TruthSource::RADIANCE));
+        assert_eq!(
+            "radiance:5".parse::<TruthSource>(),
+            Ok(TruthSource::Radiance { ambient_bounces: 5 })
+        );
+        assert!("radiance:0".parse::<TruthSource>().is_err());
+        assert!("rtrace".parse::<TruthSource>().is_err());
+    }
 }

@@ -5,6 +5,7 @@
 //! `sim/` holds models only, never product logic: the product is `rtl/` and `hps/`.
 
 pub mod analysis;
+pub mod battery;
 pub mod bus;
 pub mod campaign;
 pub mod capture;
@@ -14,6 +15,8 @@ pub mod dc_case;
 pub mod hdr_case;
 pub mod mt9p031;
 pub mod pixel_bus;
+pub mod radiance_tools;
+pub mod radiance_truth;
 pub mod raybox;
 pub mod sensor;
 pub mod sky;

@@ -21,8 +21,10 @@ use anyhow::{bail, Context};
 use skylux_hps::engine::{self, Settings, World};
 use skylux_hps::scene;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 use std::time::Instant;
+
+use skylux_sim::radiance_tools::Radiance;
 
 #[derive(clap::Args)]
 pub struct IlluminanceBenchArgs {
@@ -75,81 +77,6 @@ const CACHE_ARGS: &[&str] = &[
 ];
 /// Our engine's bounces, as rtrace's pure path tracing.
 const OUR_AB: u32 = 12;
-
-/// Where rtrace, oconv, gendaylit and gensky are, and RAYPATH's library folder.
-struct Radiance {
-    bin: PathBuf,
-    lib: Option<PathBuf>,
-}
-
-impl Radiance {
-    /// From `SKYLUX_RADIANCE_BIN`, the pyradiance wheel, or PATH.
-    fn find() -> anyhow::Result<Self> {
-        let has = |dir: &Path| {
-            ["rtrace", "oconv", "gendaylit", "gensky"]
-                .iter()
-                .all(|t| dir.join(t).is_file())
-        };
-        if let Some(dir) = std::env::var_os("SKYLUX_RADIANCE_BIN").map(PathBuf::from) {
-            if has(&dir) {
-                let lib = dir.parent().map(|p| p.join("lib")).filter(|l| l.is_dir());
-                return Ok(Self { bin: dir, lib });
-            }
-        }
-        if let Ok(out) = Command::new("python3")
-            .args([
-                "-c",
-                "import pyradiance, os; print(os.path.dirname(pyradiance.__file__))",
-            ])
-            .stderr(Stdio::null())
-            .output()
-        {
-            if out.status.success() {
-                let root = PathBuf::from(String::from_utf8_lossy(&out.stdout).trim());
-                if has(&root.join("bin")) {
-                    return Ok(Self {
-                        bin: root.join("bin"),
-                        lib: Some(root.join("lib")),
-                    });
-                }
-            }
-        }
-        if let Some(paths) = std::env::var_os("PATH") {
-            if let Some(d) = std::env::split_paths(&paths).find(|d| has(d)) {
-                return Ok(Self { bin: d, lib: None });
-            }
-        }
-        bail!(
-            "RADIANCE (rtrace, oconv, gendaylit, gensky) not found: install it with \
-             `pip install pyradiance`, or set SKYLUX_RADIANCE_BIN to the folder holding rtrace"
-        )
-    }
-
-    fn tool(&self, name: &str) -> Command {
-        let mut c = Command::new(self.bin.join(name));
-        if let Some(lib) = &self.lib {
-            let mut path = std::ffi::OsString::from(".:");
-            path.push(lib);
-            c.env("RAYPATH", path);
-        }
-        c
-    }
-
-    /// Runs a tool to completion; its stdout.
-    fn output(&self, mut c: Command) -> anyhow::Result<Vec<u8>> {
-        let out = c
-            .stderr(Stdio::piped())
-            .output()
-            .with_context(|| format!("running {c:?}"))?;
-        if !out.status.success() {
-            bail!(
-                "{c:?} failed: {}",
-                String::from_utf8_lossy(&out.stderr).trim()
-            );
-        }
-        Ok(out.stdout)
-    }
-}
 
 /// FNV-1a, 64 bits: a cache key stable across builds (std's hasher is not).
 fn fnv1a(parts: &[&[u8]]) -> u64 {

@@ -3,7 +3,7 @@
 
 use anyhow::Context;
 use clap::{Args, Subcommand};
-use skylux_sim::campaign::{simulate_campaign, CampaignSpec, DaySky};
+use skylux_sim::campaign::{simulate_campaign, CampaignSpec, DaySky, LoggerSchedule, TruthSource};
 use std::path::PathBuf;
 
 #[derive(Args)]
@@ -27,7 +27,7 @@ pub struct SimCampaignArgs {
     /// repeatable. glazing_transmittance (relative, 0.1 to
     /// 1.5), light_leak (lux per outdoor lux, 0 to 0.2), ground_reflectance (0 to 1),
     /// orientation_error (axis azimuth, degrees, ±10), clock_offset (lux-meter logger minus
-    /// device clock, seconds, ±3600; visible only when the light changes within minutes: use
+    /// device clock, seconds, ±1800 (beyond ±5 min give --logger-half-window-s); visible only when the light changes within minutes: use
     /// --sky partly), shutter_overhead (µs added to every declared exposure, 0 to 100),
     /// spectral_mismatch (the clear sky's colour temperature far from the sun, K, 4000 to
     /// 25000: frames rendered with the sky's real colour through measured camera
@@ -60,6 +60,17 @@ pub struct SimCampaignArgs {
     /// Readout skip of the simulated frames (1: full 2592x1944; 4: 648x486).
     #[arg(long, default_value_t = 4)]
     pub skip: u32,
+    /// What gives the lux-meters' truth: `engine` (Skylux's own, 5 bounces), `radiance`
+    /// (RADIANCE's rcontrib daylight coefficients, 12 bounces: independent of the engine the
+    /// loop's model uses; needs RADIANCE) or `radiance:N` (N bounces).
+    #[arg(long, default_value = "engine")]
+    pub truth: TruthSource,
+    /// Every capture's lux-meters log a reading every 30 s within this many seconds of it (0
+    /// to 1800; at most half the capture spacing less 30 s, so windows never overlap).
+    /// Default: one reading per capture, or ±600 s on partly cloudy days and with a clock
+    /// offset.
+    #[arg(long)]
+    pub logger_half_window_s: Option<f64>,
 }
 
 /// The reference test module beside the checkout (`../shared/scenes/test-module`), or
@@ -111,6 +122,20 @@ pub fn spec_from(args: &SimCampaignArgs) -> anyhow::Result<CampaignSpec> {
         "--skip must be between 1 and 8"
     );
     spec.skip = args.skip;
+    spec.truth = args.truth;
+    if let Some(half) = args.logger_half_window_s {
+        let widest = LoggerSchedule::continuous(f64::from(args.every_minutes) * 60.0);
+        anyhow::ensure!(
+            half >= 0.0 && half <= widest.half_window_s,
+            "--logger-half-window-s {half}: must be within 0 to {} s with captures every {} min",
+            widest.half_window_s,
+            args.every_minutes
+        );
+        spec.logger = Some(LoggerSchedule {
+            half_window_s: half,
+            ..widest
+        });
+    }
     Ok(spec)
 }
 
