@@ -20,7 +20,7 @@ use super::perez_baseline::perez_predictions;
 use super::prediction::{predict, LoopState, CLOCK_OFFSET_S};
 use super::report::{EffectReport, Report, ResidualRow};
 use super::sample::{reading_at, LoggerSeries, Sample, SERIES_HALF_WINDOW_S};
-use super::scoring::{block_falls, judge, noise, score, summary, Verdict, ACTING_CHANGE};
+use super::scoring::{judge, noise, score, summary, Verdict, ACTING_CHANGE};
 use super::sky_colour::CaptureColour;
 use super::sky_geometry::{correct_terms, hidden_suns, SkyGeometry, MIN_CLIPPED_DEG};
 use super::split::{compare, split, Figure, FitSet, HoldoutSet, Score, SplitPlan};
@@ -435,11 +435,27 @@ fn try_geometry_effects(
         let (after_all, _) =
             Model::score_with(&model.state, new_terms, sets, &prepared.sensor_names);
         let illum = compare(&selection.current_holdout, &after_all, Figure::MeanAbs);
-        let verdict = judge(
-            &block_falls(&sun_before, &sun_after, Figure::MeanAbs),
-            sun_before.mean_abs,
-            sun_after.mean_abs,
-        );
+        // The paired test's units: each hold-out capture's sighting, its symmetric relative
+        // fall (as for the illuminance in `Trial::of`).
+        let per_capture = |t: &[Terms]| {
+            sets.holdout
+                .evaluate_grouped(|s: &Sample| {
+                    t[s.capture].sun.as_ref().map(|sun| {
+                        let d = sun.direction.angle_between(model.captures[s.capture].spa_sun);
+                        (s.capture, d.to_degrees())
+                    })
+                })
+                .1
+        };
+        let (before_c, after_c) = (per_capture(&model.terms), per_capture(new_terms));
+        let falls: Vec<f64> = before_c
+            .iter()
+            .filter_map(|(c, b)| {
+                let a = after_c.get(c)?;
+                (a.mean + b.mean > 0.0).then(|| (b.mean - a.mean) / (b.mean + a.mean))
+            })
+            .collect();
+        let verdict = judge(&falls, sun_before.mean_abs, sun_after.mean_abs);
         if sun_after.n > 0 && verdict.accepted && illum.gain >= -noise(&illum) {
             selection.effects.push(EffectReport {
                 name: effect.name().into(),

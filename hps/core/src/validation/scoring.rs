@@ -68,7 +68,7 @@ impl Verdict {
 
 /// The acceptance rule: the hold-out figure falls significantly (a paired one-sided t test of
 /// the per-unit falls `diffs` at [`ACCEPT_ALPHA`]: the relative falls at the hold-out captures
-/// where the candidate acts, or the blocks' falls) and relevantly (from `before` to `after` over the whole hold-out set,
+/// where the candidate acts, or the sun sightings') and relevantly (from `before` to `after` over the whole hold-out set,
 /// by at least [`MIN_RELATIVE_GAIN`] of itself).
 pub fn judge(diffs: &[f64], before: f64, after: f64) -> Verdict {
     let diffs: Vec<f64> = diffs.iter().copied().filter(|d| d.is_finite()).collect();
@@ -101,20 +101,6 @@ pub fn judge(diffs: &[f64], before: f64, after: f64) -> Verdict {
         units: m,
         relative_gain,
     }
-}
-
-/// The per-block falls of a figure from `before` to `after` (blocks in both).
-pub fn block_falls(before: &Score, after: &Score, figure: Figure) -> Vec<f64> {
-    before
-        .blocks
-        .iter()
-        .filter_map(|(k, b)| {
-            after
-                .blocks
-                .get(k)
-                .map(|a| b.figure(figure) - a.figure(figure))
-        })
-        .collect()
 }
 
 /// Student's t quantile at 0.95 for `df` degrees of freedom (one-sided α = 0.05): the

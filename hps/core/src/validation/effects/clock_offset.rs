@@ -122,6 +122,27 @@ fn fit_clock_offset(state: &LoopState, terms: &[Terms], fit: &FitSet<Sample>) ->
             best = (e, dt);
         }
     }
+    // Between two states of the sky (sun out, sun hidden) a shifted reading often finds the
+    // same state: offsets away from the truth can match nearly as well. Among the coarse
+    // offsets within the error's own noise of the best (a relative 1/√n over n readings),
+    // the one nearest to no offset is taken: the smaller error of the logger's clock is the
+    // likelier.
+    let tolerance = 1.0 + 1.0 / (most.max(1) as f64).sqrt();
+    if let Some(&(dt, _, e)) = coarse
+        .iter()
+        .filter(|(_, n, e)| feasible(*n, *e) && *e <= best.0 * tolerance)
+        .min_by(|a, b| a.0.abs().total_cmp(&b.0.abs()))
+    {
+        best = (e, dt);
+    }
+    if std::env::var_os("SKYLUX_DEBUG_LOOP").is_some() {
+        let curve: Vec<String> = coarse
+            .iter()
+            .filter(|c| c.2 <= 2.0 * best.0)
+            .map(|c| format!("{:+.0}:{:.2}%({})", c.0, 100.0 * c.2, c.1))
+            .collect();
+        eprintln!("clock scan near the best: {}", curve.join(" "));
+    }
     for (step, half) in [(5.0, 6), (1.0, 5)] {
         let centre = best.1;
         for k in -half..=half {
