@@ -26,6 +26,10 @@ enum BenchWhat {
     /// The illuminance engine against rtrace at equal error (1 % RMS against a converged
     /// rtrace reference) on the reference room: times, errors and the ratio.
     Illuminance(crate::bench_illuminance::IlluminanceBenchArgs),
+    /// The loop against a battery of random campaigns whose truth comes from RADIANCE:
+    /// recall, false discoveries, parameter errors, hold-out error and the confusion matrix
+    /// per effect class.
+    Loop(crate::bench_loop::LoopBenchArgs),
     /// One daylight-coefficient update for 400 sensors (Reinhart MF4), one core and all.
     Dc {
         #[arg(long)]
@@ -52,6 +56,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         BenchWhat::Raybox(args) => crate::bench_raybox::run(args),
         BenchWhat::Dc { json, repeat } => crate::dc::bench(*json, (*repeat).max(1)),
         BenchWhat::Illuminance(args) => crate::bench_illuminance::run(args),
+        BenchWhat::Loop(args) => crate::bench_loop::run(args),
     }
 }
 

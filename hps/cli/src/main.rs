@@ -3,6 +3,7 @@
 mod bench;
 mod bench_capture;
 mod bench_illuminance;
+mod bench_loop;
 mod bench_raybox;
 mod calibrate;
 mod closure;

@@ -1,0 +1,655 @@
+//! `skylux bench loop --campaigns N --seed S [--keep DIR] [--json] [--only CLASS]`: the loop
+//! against a battery of random campaigns whose truth comes from RADIANCE, not from the
+//! engine the loop's model uses (issue 18; `skylux_sim::battery`).
+//!
+//! Per campaign: simulate it, run the loop as `skylux loop` does, and compare the effects it
+//! names and their parameters with the world's. Per effect class: recall (named when
+//! present), campaigns with a false discovery (a named effect absent from the world;
+//! `sun_undersampling` is the loop's own model choice, docs/loop.md, never counted),
+//! parameter error against [`TOLERANCES`], hold-out error before and after, time; and the
+//! confusion matrix of true class against named effects.
+
+use anyhow::Context;
+use serde_json::{json, Value};
+use skylux_hps::campaign::Campaign;
+use skylux_hps::validation::effects::registry;
+use skylux_hps::validation::illuminance_loop::LoopOptions;
+use skylux_hps::validation::report::Report;
+use skylux_sim::battery::{battery_campaigns, BatteryCase, EFFECT_RANGES};
+use skylux_sim::campaign::{simulate_campaign, TruthSource};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+#[derive(clap::Args)]
+pub struct LoopBenchArgs {
+    /// Campaigns in the battery.
+    #[arg(long, default_value_t = 12)]
+    campaigns: usize,
+    /// The battery's seed: the same seed, the same campaigns.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Keep each campaign and its loop report in DIR/NNN-CLASS/ (default: a temporary
+    /// folder, removed).
+    #[arg(long)]
+    keep: Option<PathBuf>,
+    /// Print one JSON object instead of the tables.
+    #[arg(long)]
+    json: bool,
+    /// Only the campaigns holding this effect class (or `none`).
+    #[arg(long)]
+    only: Option<String>,
+    /// Paths per sensor for the loop's daylight coefficients.
+    #[arg(long, default_value_t = 30_000)]
+    samples: u32,
+    /// The campaigns' truth: radiance (converged), radiance:N (N bounces) or engine.
+    #[arg(long, default_value = "radiance")]
+    truth: TruthSource,
+}
+
+/// How close a fitted parameter must be to the world's to count as right.
+struct Tolerance {
+    effect: &'static str,
+    /// The parameter the loop reports.
+    parameter: &'static str,
+    /// Absolute, or relative to the truth when `relative`.
+    tolerance: f64,
+    relative: bool,
+}
+
+/// Per effect: the loop's parameter for the world's, and the tolerance (the accuracy a user
+/// of the effect needs, and the loop's tests hold it to on the reference room).
+const TOLERANCES: &[Tolerance] = &[
+    Tolerance {
+        effect: "glazing_transmittance",
+        parameter: "relative_transmittance",
+        tolerance: 0.03,
+        relative: false,
+    },
+    Tolerance {
+        effect: "light_leak",
+        parameter: "lux_per_outdoor_lux",
+        tolerance: 0.2,
+        relative: true,
+    },
+    Tolerance {
+        effect: "ground_reflectance",
+        parameter: "reflectance",
+        tolerance: 0.1,
+        relative: false,
+    },
+    Tolerance {
+        effect: "orientation_error",
+        parameter: "axis_azimuth_deg",
+        tolerance: 1.0,
+        relative: false,
+    },
+    Tolerance {
+        effect: "clock_offset",
+        parameter: "logger_minus_device_s",
+        tolerance: 30.0,
+        relative: false,
+    },
+    Tolerance {
+        effect: "shutter_overhead",
+        parameter: "overhead_us",
+        tolerance: 1.0,
+        relative: false,
+    },
+    Tolerance {
+        effect: "spectral_mismatch",
+        parameter: "slope_per_index",
+        tolerance: 0.2,
+        relative: true,
+    },
+    Tolerance {
+        effect: "glazing_angular",
+        parameter: "b0",
+        tolerance: 0.03,
+        relative: false,
+    },
+    Tolerance {
+        effect: "vignetting",
+        parameter: "extra_vignetting",
+        tolerance: 0.05,
+        relative: false,
+    },
+    Tolerance {
+        effect: "sky_outside_fov",
+        parameter: "field_of_view_deg",
+        tolerance: 2.0,
+        relative: false,
+    },
+];
+
+/// The loop's model choice, not a world effect: never a false discovery (docs/loop.md).
+const MODEL_CHOICES: &[&str] = &["sun_undersampling"];
+
+/// A world parameter against the loop's.
+struct ParameterCheck {
+    effect: &'static str,
+    truth: f64,
+    /// What the loop's parameter should be (the truth, or derived from it).
+    expected: Option<f64>,
+    fitted: Option<f64>,
+}
+
+impl ParameterCheck {
+    fn error(&self) -> Option<f64> {
+        Some(self.fitted? - self.expected?)
+    }
+    fn within(&self) -> Option<bool> {
+        let t = TOLERANCES.iter().find(|t| t.effect == self.effect)?;
+        let e = self.error()?;
+        let allowed = if t.relative {
+            t.tolerance * self.expected?.abs()
+        } else {
+            t.tolerance
+        };
+        Some(e.abs() <= allowed)
+    }
+}
+
+/// One campaign's outcome.
+struct CaseResult {
+    index: usize,
+    class: String,
+    truth: Vec<(&'static str, f64)>,
+    /// Named effects (model choices included) with their parameters.
+    named: Vec<(String, BTreeMap<String, f64>)>,
+    checks: Vec<ParameterCheck>,
+    before: f64,
+    after: f64,
+    simulate_s: f64,
+    loop_s: f64,
+    error: Option<String>,
+}
+
+impl CaseResult {
+    fn false_discoveries(&self) -> Vec<&str> {
+        self.named
+            .iter()
+            .map(|(n, _)| n.as_str())
+            .filter(|n| !MODEL_CHOICES.contains(n) && !self.truth.iter().any(|t| t.0 == *n))
+            .collect()
+    }
+    fn names(&self, effect: &str) -> bool {
+        self.named.iter().any(|(n, _)| n == effect)
+    }
+    fn json(&self) -> Value {
+        json!({
+            "index": self.index,
+            "class": self.class,
+            "truth": self.truth.iter().map(|(n, v)| (n.to_string(), json!(v))).collect::<serde_json::Map<_, _>>(),
+            "named": self.named.iter().map(|(n, p)| json!({"name": n, "parameters": p})).collect::<Vec<_>>(),
+            "false_discoveries": self.false_discoveries(),
+            "parameters": self.checks.iter().map(|c| json!({
+                "effect": c.effect, "world": c.truth, "expected": c.expected,
+                "fitted": c.fitted, "error": c.error(), "within_tolerance": c.within(),
+            })).collect::<Vec<_>>(),
+            "holdout_before": self.before,
+            "holdout_after": self.after,
+            "simulate_s": self.simulate_s,
+            "loop_s": self.loop_s,
+            "error": self.error,
+        })
+    }
+}
+
+pub fn run(args: &LoopBenchArgs) -> anyhow::Result<()> {
+    if let Some(only) = &args.only {
+        anyhow::ensure!(
+            only == "none" || EFFECT_RANGES.iter().any(|e| e.name == only),
+            "--only {only}: expected none or one of {}",
+            EFFECT_RANGES
+                .iter()
+                .map(|e| e.name)
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
+    if matches!(args.truth, TruthSource::Radiance { .. }) {
+        skylux_sim::radiance_tools::Radiance::find()?;
+    }
+    let cases: Vec<BatteryCase> = battery_campaigns(args.campaigns, args.seed)
+        .into_iter()
+        .filter(|c| match args.only.as_deref() {
+            None => true,
+            Some("none") => c.effects.is_empty(),
+            Some(only) => c.effects.iter().any(|e| e.0 == only),
+        })
+        .collect();
+    anyhow::ensure!(
+        !cases.is_empty(),
+        "no campaign of the battery (--campaigns {}, --seed {}) holds {}",
+        args.campaigns,
+        args.seed,
+        args.only.as_deref().unwrap_or("anything")
+    );
+    let data_dir = skylux_hps::photometry::spectral::data_dir_from_env().or_else(|| {
+        let d = crate::sim_cmd::default_room().ok()?.join("../../data");
+        d.join("spectral").is_dir().then_some(d)
+    });
+    let slope = data_dir.as_deref().and_then(spectral_slope);
+    let temp = tempfile::tempdir().context("a temporary folder")?;
+    let root = args
+        .keep
+        .clone()
+        .unwrap_or_else(|| temp.path().to_path_buf());
+    let mut results = Vec::new();
+    for (i, case) in cases.iter().enumerate() {
+        eprintln!(
+            "campaign {}/{} (battery case {}): {} — lat {:.1}°, façade {:.0}°, {} captures/day, {:?}",
+            i + 1,
+            cases.len(),
+            case.index,
+            case.class,
+            case.site.latitude_deg,
+            case.room.facade_azimuth_deg,
+            case.hours.len(),
+            case.days.iter().map(|d| d.1).collect::<Vec<_>>()
+        );
+        let dir = root.join(format!("{:03}-{}", case.index, case.class));
+        let r = run_case(case, &dir, args, data_dir.clone(), slope);
+        eprintln!(
+            "  simulated in {:.0} s, loop in {:.0} s; named: {}; hold-out {:.1} % -> {:.1} %{}",
+            r.simulate_s,
+            r.loop_s,
+            if r.named.is_empty() {
+                "none".to_string()
+            } else {
+                r.named
+                    .iter()
+                    .map(|n| n.0.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            },
+            100.0 * r.before,
+            100.0 * r.after,
+            r.error
+                .as_ref()
+                .map(|e| format!("; FAILED: {e}"))
+                .unwrap_or_default()
+        );
+        results.push(r);
+    }
+    let summary = summarise(&results);
+    if args.json {
+        let out = json!({
+            "campaigns": results.len(),
+            "seed": args.seed,
+            "truth": format!("{:?}", args.truth),
+            "tolerances": TOLERANCES.iter().map(|t| json!({
+                "effect": t.effect, "parameter": t.parameter,
+                "tolerance": t.tolerance, "relative": t.relative,
+            })).collect::<Vec<_>>(),
+            "expected_spectral_slope_per_index": slope,
+            "classes": summary.iter().map(ClassRow::json).collect::<Vec<_>>(),
+            "confusion": confusion(&results),
+            "cases": results.iter().map(CaseResult::json).collect::<Vec<_>>(),
+        });
+        println!("{}", serde_json::to_string_pretty(&out)?);
+    } else {
+        print_tables(&results, &summary);
+    }
+    Ok(())
+}
+
+/// Simulates one case, runs the loop on it and compares; failures are recorded, not fatal.
+fn run_case(
+    case: &BatteryCase,
+    dir: &Path,
+    args: &LoopBenchArgs,
+    data_dir: Option<PathBuf>,
+    slope: Option<f64>,
+) -> CaseResult {
+    let mut r = CaseResult {
+        index: case.index,
+        class: case.class.clone(),
+        truth: case.effects.clone(),
+        named: vec![],
+        checks: vec![],
+        before: f64::NAN,
+        after: f64::NAN,
+        simulate_s: 0.0,
+        loop_s: 0.0,
+        error: None,
+    };
+    let start = Instant::now();
+    let simulated = (|| -> anyhow::Result<Campaign> {
+        let room = dir.join("room");
+        case.write_room(&room)?;
+        let mut spec = case.spec(room)?;
+        spec.truth = args.truth;
+        spec.spectral_data_dir = data_dir;
+        let campaign_dir = dir.join("campaign");
+        simulate_campaign(&campaign_dir, &spec, &|_, _| {})?;
+        Ok(Campaign::open(&campaign_dir)?)
+    })();
+    r.simulate_s = start.elapsed().as_secs_f64();
+    let campaign = match simulated {
+        Ok(c) => c,
+        Err(e) => {
+            r.error = Some(format!("simulation: {e:#}"));
+            return r;
+        }
+    };
+    let start = Instant::now();
+    let mut options = LoopOptions::default();
+    options.settings.samples_per_sensor = args.samples;
+    let outcome = match crate::loop_cmd::run_with_progress(&campaign, &options) {
+        Ok(o) => o,
+        Err(e) => {
+            r.loop_s = start.elapsed().as_secs_f64();
+            r.error = Some(format!("loop: {e:#}"));
+            return r;
+        }
+    };
+    r.loop_s = start.elapsed().as_secs_f64();
+    if args.keep.is_some() {
+        if let Err(e) = crate::loop_cmd::write_outcome(&dir.join("loop"), &campaign, &outcome) {
+            r.error = Some(format!("writing the loop's report: {e:#}"));
+        }
+    }
+    compare(&mut r, &outcome.report, slope);
+    r
+}
+
+/// The named effects, hold-out errors and parameter checks of a report.
+fn compare(r: &mut CaseResult, report: &Report, slope: Option<f64>) {
+    r.named = report
+        .effects
+        .iter()
+        .map(|e| (e.name.clone(), e.parameters.clone()))
+        .collect();
+    r.before = report.before.all;
+    r.after = report.after.all;
+    r.checks = r
+        .truth
+        .iter()
+        .map(|&(effect, truth)| {
+            let tol = TOLERANCES.iter().find(|t| t.effect == effect);
+            let expected = match effect {
+                "spectral_mismatch" => slope,
+                _ => Some(truth),
+            };
+            let fitted = tol.and_then(|t| {
+                report
+                    .effects
+                    .iter()
+                    .find(|e| e.name == effect)
+                    .and_then(|e| e.parameters.get(t.parameter).copied())
+            });
+            ParameterCheck {
+                effect,
+                truth,
+                expected,
+                fitted,
+            }
+        })
+        .collect();
+}
+
+/// The world's slope of the camera's relative luminance error against its blue / red index
+/// for CIE daylights of 5,000 to 20,000 K, through the Nikon D5100 channels with the declared
+/// weights after a calibration under D65 (least squares; as tests/tests/loop_effects_sky.rs
+/// derives its truth). `None` without the spectral data.
+fn spectral_slope(data: &Path) -> Option<f64> {
+    use skylux_hps::photometry::spectral::{
+        cie_daylight, load_d65, load_daylight_basis, load_photopic, load_rgb_sensitivities, overlap,
+    };
+    let channels =
+        load_rgb_sensitivities(&data.join("spectral/camera_sensitivity_nikon_5100_npl.csv"))
+            .ok()?;
+    let v = load_photopic(data).ok()?;
+    let basis = load_daylight_basis(data).ok()?;
+    let d65 = load_d65(data).ok()?;
+    let w = skylux_hps::camera::DeviceConfig::default().response.weights;
+    let per_lux = |s: &_, c: &_| overlap(s, c) / overlap(s, &v);
+    let points: Vec<(f64, f64)> = (0..=30)
+        .map(|i| {
+            let s = cie_daylight(&basis, 5000.0 + 500.0 * i as f64);
+            let rel: Vec<f64> = channels
+                .iter()
+                .map(|c| per_lux(&s, c) / per_lux(&d65, c))
+                .collect();
+            let error =
+                (w[0] * rel[0] + w[1] * rel[1] + w[2] * rel[2]) / w.iter().sum::<f64>() - 1.0;
+            (rel[2] / rel[0], error)
+        })
+        .collect();
+    let n = points.len() as f64;
+    let (mx, my) = points
+        .iter()
+        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
+    let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), p| {
+        (a + (p.0 - mx) * (p.1 - my), b + (p.0 - mx).powi(2))
+    });
+    Some(sxy / sxx)
+}
+
+/// One row of the per-class table.
+struct ClassRow {
+    class: String,
+    campaigns: usize,
+    /// Campaigns that named the effect (effect classes only).
+    recalled: Option<usize>,
+    /// Campaigns with at least one false discovery.
+    with_false: usize,
+    /// Named parameters within tolerance, of those named.
+    within: usize,
+    checked: usize,
+    /// Median |fitted − expected|.
+    median_error: Option<f64>,
+    before: f64,
+    after: f64,
+    seconds: f64,
+    failed: usize,
+}
+
+impl ClassRow {
+    fn json(&self) -> Value {
+        json!({
+            "class": self.class, "campaigns": self.campaigns, "recalled": self.recalled,
+            "campaigns_with_false_discovery": self.with_false,
+            "parameters_within_tolerance": self.within, "parameters_checked": self.checked,
+            "median_abs_parameter_error": self.median_error,
+            "mean_holdout_before": self.before, "mean_holdout_after": self.after,
+            "mean_seconds_per_campaign": self.seconds, "failed": self.failed,
+        })
+    }
+}
+
+/// Per effect class (every campaign holding it, alone or in a pair), then `none`, then all.
+fn summarise(results: &[CaseResult]) -> Vec<ClassRow> {
+    let row = |class: &str, of: Vec<&CaseResult>, effect: Option<&str>| {
+        let ok: Vec<&&CaseResult> = of.iter().filter(|r| r.error.is_none()).collect();
+        let mean = |f: &dyn Fn(&CaseResult) -> f64| {
+            ok.iter().map(|r| f(r)).sum::<f64>() / ok.len().max(1) as f64
+        };
+        let checks: Vec<&ParameterCheck> = ok
+            .iter()
+            .flat_map(|r| r.checks.iter())
+            .filter(|c| effect == Some(c.effect))
+            .collect();
+        let mut errors: Vec<f64> = checks
+            .iter()
+            .filter_map(|c| c.error())
+            .map(f64::abs)
+            .collect();
+        errors.sort_by(f64::total_cmp);
+        ClassRow {
+            class: class.to_string(),
+            campaigns: of.len(),
+            recalled: effect.map(|e| ok.iter().filter(|r| r.names(e)).count()),
+            with_false: ok
+                .iter()
+                .filter(|r| !r.false_discoveries().is_empty())
+                .count(),
+            within: checks.iter().filter(|c| c.within() == Some(true)).count(),
+            checked: checks.iter().filter(|c| c.within().is_some()).count(),
+            median_error: errors.get(errors.len() / 2).copied(),
+            before: mean(&|r| r.before),
+            after: mean(&|r| r.after),
+            seconds: of.iter().map(|r| r.simulate_s + r.loop_s).sum::<f64>()
+                / of.len().max(1) as f64,
+            failed: of.len() - ok.len(),
+        }
+    };
+    let mut rows: Vec<ClassRow> = EFFECT_RANGES
+        .iter()
+        .filter_map(|e| {
+            let of: Vec<&CaseResult> = results
+                .iter()
+                .filter(|r| r.truth.iter().any(|t| t.0 == e.name))
+                .collect();
+            (!of.is_empty()).then(|| row(e.name, of, Some(e.name)))
+        })
+        .collect();
+    let none: Vec<&CaseResult> = results.iter().filter(|r| r.truth.is_empty()).collect();
+    if !none.is_empty() {
+        rows.push(row("none", none, None));
+    }
+    rows.push(row("all", results.iter().collect(), None));
+    rows
+}
+
+/// True class (as the case names it) × named effect: campaigns.
+fn confusion(results: &[CaseResult]) -> BTreeMap<String, BTreeMap<String, usize>> {
+    let mut m: BTreeMap<String, BTreeMap<String, usize>> = BTreeMap::new();
+    for r in results {
+        let row = m.entry(r.class.clone()).or_default();
+        *row.entry("campaigns".into()).or_default() += 1;
+        for (n, _) in &r.named {
+            *row.entry(n.clone()).or_default() += 1;
+        }
+        if r.named.is_empty() && r.error.is_none() {
+            *row.entry("(nothing)".into()).or_default() += 1;
+        }
+    }
+    m
+}
+
+fn print_tables(results: &[CaseResult], rows: &[ClassRow]) {
+    println!("per effect class (a class counts every campaign holding it, alone or paired):");
+    println!(
+        "  {:22} {:>5} {:>7} {:>9} {:>11} {:>10} {:>15} {:>7} {:>6}",
+        "class",
+        "runs",
+        "recall",
+        "false-ds",
+        "params ok",
+        "median err",
+        "hold-out b -> a",
+        "s/run",
+        "failed"
+    );
+    for r in rows {
+        println!(
+            "  {:22} {:>5} {:>7} {:>9} {:>11} {:>10} {:>6.1} -> {:>4.1} % {:>7.0} {:>6}",
+            r.class,
+            r.campaigns,
+            r.recalled
+                .map(|k| format!("{k}/{}", r.campaigns - r.failed))
+                .unwrap_or_else(|| "-".into()),
+            format!("{}/{}", r.with_false, r.campaigns - r.failed),
+            if r.checked > 0 {
+                format!("{}/{}", r.within, r.checked)
+            } else {
+                "-".into()
+            },
+            r.median_error
+                .map(|e| format!("{e:.3}"))
+                .unwrap_or_else(|| "-".into()),
+            100.0 * r.before,
+            100.0 * r.after,
+            r.seconds,
+            r.failed
+        );
+    }
+    println!("tolerances:");
+    for t in TOLERANCES {
+        println!(
+            "  {:22} {} ±{}{}",
+            t.effect,
+            t.parameter,
+            if t.relative {
+                100.0 * t.tolerance
+            } else {
+                t.tolerance
+            },
+            if t.relative { " %" } else { "" }
+        );
+    }
+    let columns: Vec<&str> = registry::EFFECTS
+        .iter()
+        .map(|e| e.name())
+        .filter(|n| *n != "luxmeter_calibration")
+        .chain(["(nothing)"])
+        .collect();
+    println!("confusion (true class × named effect, campaigns):");
+    let short = |n: &str| n.chars().take(8).collect::<String>();
+    print!("  {:42} {:>4}", "true class", "runs");
+    for c in &columns {
+        print!(" {:>8}", short(c));
+    }
+    println!();
+    for (class, row) in confusion(results) {
+        print!(
+            "  {class:42} {:>4}",
+            row.get("campaigns").copied().unwrap_or(0)
+        );
+        for c in &columns {
+            match row.get(*c) {
+                Some(k) => print!(" {k:>8}"),
+                None => print!(" {:>8}", "."),
+            }
+        }
+        println!();
+    }
+    println!("campaigns:");
+    for r in results {
+        let params: Vec<String> = r
+            .checks
+            .iter()
+            .map(|c| {
+                format!(
+                    "{} world {:.4} expected {} fitted {}{}",
+                    c.effect,
+                    c.truth,
+                    c.expected.map_or("-".into(), |v| format!("{v:.4}")),
+                    c.fitted.map_or("-".into(), |v| format!("{v:.4}")),
+                    match c.within() {
+                        Some(true) => " (ok)",
+                        Some(false) => " (off)",
+                        None => "",
+                    }
+                )
+            })
+            .collect();
+        println!(
+            "  #{:<3} {:40} named [{}] false [{}] {:.1} -> {:.1} % {:.0}+{:.0} s{}{}",
+            r.index,
+            r.class,
+            r.named
+                .iter()
+                .map(|n| n.0.as_str())
+                .collect::<Vec<_>>()
+                .join(", "),
+            r.false_discoveries().join(", "),
+            100.0 * r.before,
+            100.0 * r.after,
+            r.simulate_s,
+            r.loop_s,
+            if params.is_empty() {
+                String::new()
+            } else {
+                format!("; {}", params.join("; "))
+            },
+            r.error
+                .as_ref()
+                .map(|e| format!("; FAILED: {e}"))
+                .unwrap_or_default()
+        );
+    }
+}
