@@ -61,8 +61,16 @@ fn a_seven_minute_logger_clock_offset_is_fitted_within_30_s() {
     let (_dir, campaign) = world(&[("clock_offset", 420.0)], true);
     let r = run(&campaign, false).report;
     let fitted = parameter(&r, "clock_offset", "logger_minus_device_s");
-    assert!((fitted - 420.0).abs() <= 30.0, "fitted {fitted} s for 420 s");
-    assert!(r.after.all <= 0.5 * r.before.all, "{:?} → {:?}", r.before, r.after);
+    assert!(
+        (fitted - 420.0).abs() <= 30.0,
+        "fitted {fitted} s for 420 s"
+    );
+    assert!(
+        r.after.all <= 0.5 * r.before.all,
+        "{:?} → {:?}",
+        r.before,
+        r.after
+    );
 }
 
 #[test]
@@ -77,7 +85,12 @@ fn a_clock_offset_with_dirty_glazing_are_both_found() {
     let tau = parameter(&r, "glazing_transmittance", "relative_transmittance");
     assert!((clock - 420.0).abs() <= 30.0, "clock {clock} s for 420 s");
     assert!((tau - 0.85).abs() <= 0.03, "transmittance {tau} for 0.85");
-    assert!(r.after.all <= 0.5 * r.before.all, "{:?} → {:?}", r.before, r.after);
+    assert!(
+        r.after.all <= 0.5 * r.before.all,
+        "{:?} → {:?}",
+        r.before,
+        r.after
+    );
 }
 
 /// With the device's exposure ladder (1 µs, then 26.6x steps) a 9 µs overhead saturates the
@@ -93,8 +106,16 @@ fn a_9_us_shutter_overhead_is_named_as_such_and_not_as_vignetting() {
     assert!(names.contains(&"shutter_overhead"), "{names:?}");
     assert!(!names.contains(&"vignetting"), "{names:?}");
     let t0 = parameter(&r, "shutter_overhead", "overhead_us");
-    assert!(t0 >= 1.0, "overhead {t0} µs: the sun saturates from about 1 µs on");
-    assert!(r.after.all <= 0.5 * r.before.all, "{:?} → {:?}", r.before, r.after);
+    assert!(
+        t0 >= 1.0,
+        "overhead {t0} µs: the sun saturates from about 1 µs on"
+    );
+    assert!(
+        r.after.all <= 0.5 * r.before.all,
+        "{:?} → {:?}",
+        r.before,
+        r.after
+    );
 }
 
 #[test]

@@ -139,7 +139,7 @@ pub fn shutter_overhead(
         }
         let (r, r_noise) = median_and_error(&mut v);
         let r_err = r_noise.hypot(RATIO_SYSTEMATIC * r);
-        if !(r > 1.0) || r_err <= 0.0 {
+        if r.is_nan() || r <= 1.0 || r_err <= 0.0 {
             continue;
         }
         let t0 = (tj - r * ti) / (r - 1.0);

@@ -441,7 +441,9 @@ fn try_geometry_effects(
             sets.holdout
                 .evaluate_grouped(|s: &Sample| {
                     t[s.capture].sun.as_ref().map(|sun| {
-                        let d = sun.direction.angle_between(model.captures[s.capture].spa_sun);
+                        let d = sun
+                            .direction
+                            .angle_between(model.captures[s.capture].spa_sun);
                         (s.capture, d.to_degrees())
                     })
                 })
