@@ -205,6 +205,14 @@ impl BatteryCase {
         Ok(())
     }
 
+    /// Both days partly cloudy, with the capture times that go with them.
+    pub fn make_partly_cloudy(&mut self) {
+        for d in &mut self.days {
+            d.1 = DaySky::Partly;
+        }
+        self.hours = capture_hours(&self.site, self.utc_offset_s, &self.days);
+    }
+
     /// The campaign of this case with the room in `room_dir` (see [`Self::write_room`]): truth
     /// from RADIANCE, frames at a quarter resolution, a continuous logger where the light
     /// must be followed between captures.
@@ -230,7 +238,12 @@ impl BatteryCase {
         }
         let partly = self.days.iter().any(|d| d.1 == DaySky::Partly);
         if partly || spec.effects.clock_offset_s != 0.0 {
-            spec.logger = Some(LoggerSchedule::continuous(3600.0));
+            let step_s = self
+                .hours
+                .windows(2)
+                .map(|w| (w[1] - w[0]) * 3600.0)
+                .fold(3600.0, f64::min);
+            spec.logger = Some(LoggerSchedule::continuous(step_s));
         }
         Ok(spec)
     }
@@ -347,7 +360,10 @@ fn draw_case(index: usize, seed: u64, bucket: Bucket) -> BatteryCase {
     let facade_azimuth_deg = (equator + d.range(-100.0, 100.0)).rem_euclid(360.0);
     let room = draw_room(&mut d, facade_azimuth_deg);
     let days = draw_days(&mut d, &chosen);
-    let hours = daylight_hours(&site, utc_offset_s, &days);
+    // Where the light changes within minutes, captures every half hour: a device in service
+    // captures every few minutes, and a logger clock offset or a passing cloud is only seen
+    // at the captures where the sun's state differs between the two clocks.
+    let hours = capture_hours(&site, utc_offset_s, &days);
     BatteryCase {
         index,
         seed,
@@ -393,23 +409,39 @@ fn draw_days(d: &mut Draw, chosen: &[&EffectRange]) -> Vec<(NaiveDate, DaySky)> 
     dates.into_iter().zip(skies).collect()
 }
 
-/// Whole local hours at which the sun is above 5° on either day (the simulator skips a
-/// capture with the sun under 3°).
-fn daylight_hours(site: &Site, utc_offset_s: i32, days: &[(NaiveDate, DaySky)]) -> Vec<f64> {
+/// The capture times of a case. Where the light changes within minutes, captures every half
+/// hour: a device in service captures every few minutes, and a logger clock offset or a
+/// passing cloud is only seen at the captures where the sun's state differs between the two
+/// clocks.
+fn capture_hours(site: &Site, utc_offset_s: i32, days: &[(NaiveDate, DaySky)]) -> Vec<f64> {
+    let partly = days.iter().any(|d| d.1 == DaySky::Partly);
+    daylight_hours(site, utc_offset_s, days, if partly { 0.5 } else { 1.0 })
+}
+
+/// Local hours, `step_h` apart from midnight, at which the sun is above 5° on either day (the
+/// simulator skips a capture with the sun under 3°).
+fn daylight_hours(
+    site: &Site,
+    utc_offset_s: i32,
+    days: &[(NaiveDate, DaySky)],
+    step_h: f64,
+) -> Vec<f64> {
     let sun_site = SunSite {
         latitude_deg: site.latitude_deg,
         longitude_deg: site.longitude_deg,
         elevation_m: site.elevation_m,
     };
-    (0..24)
+    let steps = (24.0 / step_h).round() as i64;
+    (0..steps)
+        .map(|k| k as f64 * step_h)
         .filter(|&h| {
             days.iter().any(|(date, _)| {
-                let local = date.and_hms_opt(h, 0, 0).expect("a whole hour");
+                let midnight = date.and_hms_opt(0, 0, 0).expect("midnight");
+                let local = midnight + chrono::Duration::seconds((h * 3600.0).round() as i64);
                 let utc = (local - chrono::Duration::seconds(i64::from(utc_offset_s))).and_utc();
                 solar_position(utc, &sun_site, None).is_ok_and(|s| s.altitude_deg() > 5.0)
             })
         })
-        .map(f64::from)
         .collect()
 }
 

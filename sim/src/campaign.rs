@@ -299,44 +299,119 @@ impl LoggerSchedule {
 }
 
 /// The sun's transmission through passing clouds around one capture on a partly cloudy day,
-/// as a function of time from the capture: a square wave of period `period_s` with soft
-/// edges (a cloud edge takes about a tenth of the period to cross the disk), so the
-/// direct-normal illuminance switches between full and nothing within minutes.
-#[derive(Clone, Copy, Debug)]
+/// as a function of time from the capture: the day's [`PassingClouds`] seen from the capture.
+#[derive(Clone, Debug)]
 struct SunSchedule {
     /// `None`: the sun's transmission is 1 throughout (clear, overcast, or a fixed state).
-    passing: Option<(f64, f64)>,
+    /// Else the day's clouds and the capture's time in them, s.
+    passing: Option<(Arc<PassingClouds>, f64)>,
 }
 
 impl SunSchedule {
     fn steady() -> Self {
         Self { passing: None }
     }
-    /// The capture itself falls inside a sunny or a shaded spell, never on an edge (the
-    /// camera's exposures take a fraction of a second; a sun half behind a cloud edge at that
-    /// instant is a case left to other tests), anywhere from just before an edge to the
-    /// middle of the spell.
-    fn passing_clouds(seed: u64) -> Self {
-        let period_s = 240.0 + 240.0 * hash01(seed, 77);
-        let sunny = hash01(seed, 79) < 0.5;
-        // The transmission is 1 for a phase fraction in [0.054, 0.446] (sin > 1/3) and 0 in
-        // [0.554, 0.946].
-        let spell = 0.06 + 0.38 * hash01(seed, 78);
-        let phase_s = period_s * (spell + if sunny { 0.0 } else { 0.5 });
-        Self {
-            passing: Some((period_s, phase_s)),
-        }
-    }
+
     /// Transmission in [0, 1] at `dt_s` seconds from the capture.
     fn at(&self, dt_s: f64) -> f64 {
-        match self.passing {
+        match &self.passing {
             None => 1.0,
-            Some((period_s, phase_s)) => {
-                let u = (std::f64::consts::TAU * (dt_s + phase_s) / period_s).sin();
-                (0.5 + 1.5 * u).clamp(0.0, 1.0)
-            }
+            Some((clouds, capture_s)) => clouds.at(capture_s + dt_s),
         }
     }
+}
+
+/// The clouds passing over the sun during one partly cloudy day: sunny and shaded spells of
+/// random lengths, one sequence for the whole day, so the lux-meters' record is one record
+/// whatever capture it is read around (a logger clock offset then reads the light of another
+/// moment of the same day, as it would), and not periodic (a periodic one would make an
+/// offset of one period look the same as none, which real clouds do not). Soft edges: a cloud
+/// edge takes [`PassingClouds::EDGE_S`] to cross the disk.
+#[derive(Clone, Debug)]
+struct PassingClouds {
+    /// Spell edges, s of the local day, increasing.
+    edges_s: Vec<f64>,
+    sunny_before_first: bool,
+}
+
+impl PassingClouds {
+    /// Time for a cloud edge to cross the sun's disk, s.
+    const EDGE_S: f64 = 20.0;
+    /// Spells are drawn this far beyond the first and last captures: the logger's window plus
+    /// the largest clock offset the loop searches (±30 min).
+    const SPAN_S: f64 = 3600.0;
+    /// Shortest and longest spell, s.
+    const SPELL_S: (f64, f64) = (60.0, 420.0);
+
+    /// The day's spells around captures at `captures_s` (s of the local day). No capture
+    /// falls on an edge (the camera's exposures take a fraction of a second; a sun half behind
+    /// a cloud edge at that instant is a case left to other tests): an edge drawn within an
+    /// edge time of a capture moves to just clear of it.
+    fn new(seed: u64, captures_s: &[f64]) -> Self {
+        let first = captures_s.iter().copied().fold(f64::INFINITY, f64::min);
+        let last = captures_s.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let (short, long) = Self::SPELL_S;
+        let mut edges_s = Vec::new();
+        let mut t = first - Self::SPAN_S - long * hash01(seed, 1);
+        let mut k = 2;
+        while t < last + Self::SPAN_S {
+            t += short + (long - short) * hash01(seed, k);
+            k += 1;
+            let clear = captures_s
+                .iter()
+                .filter(|c| (t - **c).abs() < Self::EDGE_S)
+                .map(|c| {
+                    if t < *c {
+                        c - Self::EDGE_S
+                    } else {
+                        c + Self::EDGE_S
+                    }
+                })
+                .next();
+            edges_s.push(clear.unwrap_or(t));
+        }
+        Self {
+            edges_s,
+            sunny_before_first: hash01(seed, 0) < 0.5,
+        }
+    }
+
+    /// Transmission in [0, 1] at `t_s` (s of the local day).
+    fn at(&self, t_s: f64) -> f64 {
+        let passed = self.edges_s.partition_point(|&e| e <= t_s);
+        let state = |edges_passed: usize| {
+            if (edges_passed % 2 == 0) == self.sunny_before_first {
+                1.0
+            } else {
+                0.0
+            }
+        };
+        // Within half an edge time of an edge, a linear ramp between the two states.
+        let half = 0.5 * Self::EDGE_S;
+        for (i, &e) in self
+            .edges_s
+            .iter()
+            .enumerate()
+            .skip(passed.saturating_sub(1))
+            .take(2)
+        {
+            if (t_s - e).abs() < half {
+                let w = (t_s - (e - half)) / Self::EDGE_S;
+                return state(i) + (state(i + 1) - state(i)) * w;
+            }
+        }
+        state(passed)
+    }
+}
+
+/// One capture time of the campaign: its day, the day's sky and its passing clouds.
+struct Moment {
+    date: NaiveDate,
+    kind: DaySky,
+    /// Local clock hour.
+    hour: f64,
+    /// The day's clouds, on a partly cloudy day.
+    clouds: Option<Arc<PassingClouds>>,
 }
 
 /// Per sensor, the room's light from the sky (and its ground) and from the sun between
@@ -350,7 +425,7 @@ struct SkySunParts {
 /// What gives the lux-meters' truth.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum TruthSource {
-    /// Skylux's own engine (direct path tracing, 5 diffuse bounces): quick, but the engine
+    /// Skylux's own engine (direct path tracing, converged bounces): quick, but the engine
     /// the loop's model also uses, so the test bed is not independent of it.
     #[default]
     Engine,
@@ -573,11 +648,24 @@ pub fn simulate_campaign(
     let mut records = Records::default();
     let total = spec.days.len() * spec.hours.len();
     let mut k = 0u64;
-    for &(date, kind) in &spec.days {
+    for (day, &(date, kind)) in spec.days.iter().enumerate() {
+        let captures_s: Vec<f64> = spec.hours.iter().map(|h| h * 3600.0).collect();
+        let clouds = (kind == DaySky::Partly).then(|| {
+            Arc::new(PassingClouds::new(
+                spec.seed ^ ((day as u64 + 1) << 40) ^ 0x5EED_C10D,
+                &captures_s,
+            ))
+        });
         for &hour in &spec.hours {
             k += 1;
             progress(k as usize - 1, total);
-            world.capture_time(out, spec, date, kind, hour, k, &mut records)?;
+            let moment = Moment {
+                date,
+                kind,
+                hour,
+                clouds: clouds.clone(),
+            };
+            world.capture_time(out, spec, &moment, k, &mut records)?;
         }
     }
     progress(total, total);
@@ -807,16 +895,17 @@ struct MomentSky {
 impl MomentSky {
     fn new(
         spec: &CampaignSpec,
-        date: NaiveDate,
-        kind: DaySky,
+        moment: &Moment,
         seed: u64,
         sun_dir: DVec3,
         altitude: f64,
     ) -> Result<Self, SimCampaignError> {
+        let Moment { date, kind, .. } = *moment;
         let (dni_clear, dhi_clear) = clear_sky_w_m2(altitude);
         let ghi_clear = dni_clear * altitude.sin() + dhi_clear;
-        // Partly cloudy days hide the sun one time in three; the other times, clouds pass
-        // over it within minutes (`dni` is then the beam between clouds).
+        // Partly cloudy days hide the sun one time in three (a cloud bank over the capture's
+        // whole logger window); the other times, the day's clouds pass over it within minutes
+        // (`dni` is then the beam between clouds).
         let (dni, dhi, schedule) = match kind {
             DaySky::Clear => (dni_clear, dhi_clear, SunSchedule::steady()),
             DaySky::Overcast => (0.0, 0.35 * ghi_clear, SunSchedule::steady()),
@@ -827,7 +916,9 @@ impl MomentSky {
                     (
                         0.85 * dni_clear,
                         0.25 * ghi_clear,
-                        SunSchedule::passing_clouds(seed),
+                        SunSchedule {
+                            passing: moment.clouds.clone().map(|c| (c, moment.hour * 3600.0)),
+                        },
                     )
                 }
             }
@@ -978,18 +1069,16 @@ impl TrueWorld {
 
     /// Simulates one capture time (the k-th): frames, lux-meter readings, the pyranometer's
     /// row and the truth. Times with the sun under 3° are skipped.
-    #[allow(clippy::too_many_arguments)]
     fn capture_time(
         &mut self,
         out: &Path,
         spec: &CampaignSpec,
-        date: NaiveDate,
-        kind: DaySky,
-        hour: f64,
+        moment: &Moment,
         k: u64,
         records: &mut Records,
     ) -> Result<(), SimCampaignError> {
-        let (time, sun) = self.instant(date, hour)?;
+        let Moment { date, kind, .. } = *moment;
+        let (time, sun) = self.instant(date, moment.hour)?;
         let altitude = sun.altitude_deg().to_radians();
         if sun.altitude_deg() < MIN_SUN_ALTITUDE_DEG {
             return Ok(());
@@ -997,8 +1086,7 @@ impl TrueWorld {
         let seed = spec.seed ^ (k << 20);
         let sky = Arc::new(MomentSky::new(
             spec,
-            date,
-            kind,
+            moment,
             seed,
             sun.direction(),
             altitude,
@@ -1159,7 +1247,7 @@ impl TrueWorld {
         logging: bool,
     ) -> Result<(Vec<f64>, Option<SkySunParts>), SimCampaignError> {
         let settings = Settings {
-            ambient_bounces: 5,
+            ambient_bounces: skylux_hps::engine::integrator::CONVERGED_AMBIENT_BOUNCES,
             samples_per_sensor: spec.truth_samples,
             seed,
             ..Default::default()
@@ -1281,6 +1369,43 @@ fn simulate_capture_with_overhead(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// No capture is on an edge, the sun switches within minutes, and the day's record is not
+    /// periodic: shifted by any lag from 1 to 30 min it differs from itself (a periodic wave
+    /// would match itself at its period and alias a logger's clock offset).
+    #[test]
+    fn passing_clouds_are_aperiodic_and_no_capture_is_on_an_edge() {
+        let captures_s: Vec<f64> = (0..20).map(|k| 30_000.0 + 1800.0 * k as f64).collect();
+        for seed in 0..100u64 {
+            let c = PassingClouds::new(seed, &captures_s);
+            let half = PassingClouds::EDGE_S / 2.0;
+            for &t in &captures_s {
+                let at = c.at(t);
+                assert!(at == 0.0 || at == 1.0, "seed {seed}: {at} at {t}");
+                assert_eq!(c.at(t - half), at, "seed {seed}");
+                assert_eq!(c.at(t + half), at, "seed {seed}");
+            }
+            let times: Vec<f64> = (30_000..60_000).step_by(10).map(|t| t as f64).collect();
+            let sunny = times.iter().map(|&t| c.at(t)).sum::<f64>() / times.len() as f64;
+            assert!((0.3..=0.7).contains(&sunny), "seed {seed}: sunny {sunny}");
+            let states: Vec<f64> = captures_s.iter().map(|&t| c.at(t)).collect();
+            assert!(
+                states.contains(&0.0) && states.contains(&1.0),
+                "seed {seed}"
+            );
+            for lag_s in (60..=1800).step_by(30) {
+                let differs = times
+                    .iter()
+                    .filter(|&&t| (c.at(t) - c.at(t + lag_s as f64)).abs() > 0.5)
+                    .count();
+                assert!(
+                    differs as f64 > 0.2 * times.len() as f64,
+                    "seed {seed}: lag {lag_s} s differs at {differs} of {} times",
+                    times.len()
+                );
+            }
+        }
+    }
 
     /// Hourly captures: a reading every 30 s to ±29.5 min, so consecutive windows never
     /// overlap and an offset of up to ±29.5 min stays inside each capture's record.

@@ -44,10 +44,9 @@ pub const RCONTRIB_ARGS: &[&str] = &[
     "-h", "-I", "-faa", "-dj", "0", "-lr", "-16", "-ad", "65536", "-lw", "1e-6",
 ];
 
-/// Diffuse bounces of a converged truth: a room of reflectance 0.8 keeps 0.8⁸ ≈ 17 % of its
-/// light past 8 bounces. On the reference room, 12 bounces read up to 6 % more at the back
-/// than 5 (Skylux's engine and the loop's model use 5; `tests/radiance_truth.rs`).
-pub const CONVERGED_BOUNCES: u32 = 12;
+/// Diffuse bounces of a converged truth, as the loop's model uses them
+/// ([`skylux_hps::engine::integrator::CONVERGED_AMBIENT_BOUNCES`]).
+pub const CONVERGED_BOUNCES: u32 = skylux_hps::engine::integrator::CONVERGED_AMBIENT_BOUNCES;
 
 /// RADIANCE's RGB to luminance weights (RADIANCE `color.h`, `bright()` for its primaries).
 const LUMINANCE_WEIGHTS: [f64; 3] = [0.265, 0.670, 0.065];

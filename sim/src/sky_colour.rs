@@ -83,6 +83,52 @@ impl DaylightResponses {
     }
 }
 
+/// The world's spectral mismatch as a straight line: the camera's relative luminance error
+/// against its blue / red colour index (both relative to the D65 calibration), least squares
+/// over CIE daylights of 5,000 to 20,000 K in 500 K steps (CIE 15:2004 §3.1), for a device
+/// with channel `weights`. The truth the spectral-mismatch effect's fitted slope is judged
+/// against, by the loop's tests and `skylux bench loop`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MismatchLine {
+    /// d(error) / d(index).
+    pub slope_per_index: f64,
+    /// Mean colour index of the daylights.
+    pub mean_index: f64,
+    /// Mean relative luminance error at that index.
+    pub mean_error: f64,
+}
+
+impl MismatchLine {
+    pub fn of_daylights(data_dir: &Path, weights: [f64; 3]) -> Result<Self, SpectralError> {
+        let data = SpectralData::load(data_dir)?;
+        let d65 = load_d65(data_dir)?;
+        let points: Vec<(f64, f64)> = (0..=30)
+            .map(|i| {
+                let daylight = cie_daylight(&data.daylight_basis, 5000.0 + 500.0 * i as f64);
+                let r = ChannelResponse::of(&data, &daylight, &d65);
+                (r.relative[2] / r.relative[0], r.luminance_error(weights))
+            })
+            .collect();
+        let n = points.len() as f64;
+        let (mx, my) = points
+            .iter()
+            .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
+        let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), p| {
+            (a + (p.0 - mx) * (p.1 - my), b + (p.0 - mx).powi(2))
+        });
+        Ok(Self {
+            slope_per_index: sxy / sxx,
+            mean_index: mx,
+            mean_error: my,
+        })
+    }
+
+    /// The error the line gives at the calibration's own index, 1.
+    pub fn error_at_calibration(&self) -> f64 {
+        self.mean_error - self.slope_per_index * (self.mean_index - 1.0)
+    }
+}
+
 /// The colour of one capture's sky.
 #[derive(Clone, Copy, Debug)]
 pub struct SkyColour {

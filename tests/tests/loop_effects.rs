@@ -3,8 +3,8 @@
 //! tolerance of the truth, and cut the hold-out error to at most a third (or to the noise
 //! floor of a campaign without effects). Two effects: both found. None: nothing added.
 //!
-//! Campaigns: the reference room in Lausanne, a clear and an overcast day, captures every two
-//! hours from 8:00 to 18:00 at a quarter of the full resolution (skip 4), lux-meters with
+//! Campaigns: the reference room in Lausanne, a clear and an overcast day, captures every
+//! hour from 8:00 to 18:00 at a quarter of the full resolution (skip 4), lux-meters with
 //! 1 % noise (tests/common/loop_harness.rs). Each takes about half a minute to simulate.
 
 mod common;

@@ -39,11 +39,9 @@ use common::loop_harness::{assert_improved, effect, run, simulate, simulate_spec
 use skylux_hps::camera::DeviceConfig;
 use skylux_hps::campaign::Campaign;
 use skylux_hps::numerics::pearson;
-use skylux_hps::photometry::spectral::{
-    cie_daylight, load_d65, load_daylight_basis, load_photopic, load_rgb_sensitivities, overlap,
-};
 use skylux_hps::validation::illuminance_loop::LoopOutcome;
 use skylux_sim::campaign::{simulate_campaign, TruthRecord};
+use skylux_sim::sky_colour::MismatchLine;
 use std::path::PathBuf;
 use std::sync::OnceLock;
 
@@ -54,43 +52,18 @@ fn data_dir() -> PathBuf {
         .unwrap_or_else(|| PathBuf::from(ROOM).join("../../data"))
 }
 
-/// The world's slope of the camera's relative luminance error against its blue / red index,
-/// for CIE daylights of 5,000 to 20,000 K seen by the Nikon D5100 channels with the declared
-/// weights after a calibration under D65: least squares over the range.
+/// The world's slope of the camera's relative luminance error against its blue / red index
+/// ([`MismatchLine`], from the spectral data alone) for the declared weights.
 fn true_slope() -> f64 {
-    let data = data_dir();
-    let channels =
-        load_rgb_sensitivities(&data.join("spectral/camera_sensitivity_nikon_5100_npl.csv"))
-            .unwrap();
-    let v = load_photopic(&data).unwrap();
-    let basis = load_daylight_basis(&data).unwrap();
-    let d65 = load_d65(&data).unwrap();
-    let w = DeviceConfig::default().response.weights;
-    let per_lux = |s: &_, c: &_| overlap(s, c) / overlap(s, &v);
-    let points: Vec<(f64, f64)> = (0..=30)
-        .map(|i| {
-            let s = cie_daylight(&basis, 5000.0 + 500.0 * i as f64);
-            let rel: Vec<f64> = channels
-                .iter()
-                .map(|c| per_lux(&s, c) / per_lux(&d65, c))
-                .collect();
-            let error =
-                (w[0] * rel[0] + w[1] * rel[1] + w[2] * rel[2]) / w.iter().sum::<f64>() - 1.0;
-            (rel[2] / rel[0], error)
-        })
-        .collect();
-    let n = points.len() as f64;
-    let (mx, my) = points
-        .iter()
-        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
-    let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), p| {
-        (a + (p.0 - mx) * (p.1 - my), b + (p.0 - mx).powi(2))
-    });
+    let weights = DeviceConfig::default().response.weights;
+    let line = MismatchLine::of_daylights(&data_dir(), weights).unwrap();
     println!(
-        "world: error {my:+.4} at mean index {mx:.3}; intercept at index 1: {:+.4}",
-        my - sxy / sxx * (mx - 1.0)
+        "world: error {:+.4} at mean index {:.3}; intercept at index 1: {:+.4}",
+        line.mean_error,
+        line.mean_index,
+        line.error_at_calibration()
     );
-    sxy / sxx
+    line.slope_per_index
 }
 
 /// A clear sky at 20,000 K far from the sun (an overcast second day at D65): the blue sky

@@ -17,6 +17,7 @@ use skylux_hps::validation::illuminance_loop::LoopOptions;
 use skylux_hps::validation::report::Report;
 use skylux_sim::battery::{battery_campaigns, BatteryCase, EFFECT_RANGES};
 use skylux_sim::campaign::{simulate_campaign, TruthSource};
+use skylux_sim::sky_colour::MismatchLine;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -40,7 +41,7 @@ pub struct LoopBenchArgs {
     #[arg(long)]
     only: Option<String>,
     /// Paths per sensor for the loop's daylight coefficients.
-    #[arg(long, default_value_t = 30_000)]
+    #[arg(long, default_value_t = skylux_hps::validation::illuminance_loop::DC_SAMPLES_PER_SENSOR)]
     samples: u32,
     /// The campaigns' truth: radiance (converged), radiance:N (N bounces) or engine.
     #[arg(long, default_value = "radiance")]
@@ -391,41 +392,12 @@ fn compare(r: &mut CaseResult, report: &Report, slope: Option<f64>) {
 }
 
 /// The world's slope of the camera's relative luminance error against its blue / red index
-/// for CIE daylights of 5,000 to 20,000 K, through the Nikon D5100 channels with the declared
-/// weights after a calibration under D65 (least squares; as tests/tests/loop_effects_sky.rs
-/// derives its truth). `None` without the spectral data.
+/// ([`MismatchLine`]) for the declared weights; `None` without the spectral data.
 fn spectral_slope(data: &Path) -> Option<f64> {
-    use skylux_hps::photometry::spectral::{
-        cie_daylight, load_d65, load_daylight_basis, load_photopic, load_rgb_sensitivities, overlap,
-    };
-    let channels =
-        load_rgb_sensitivities(&data.join("spectral/camera_sensitivity_nikon_5100_npl.csv"))
-            .ok()?;
-    let v = load_photopic(data).ok()?;
-    let basis = load_daylight_basis(data).ok()?;
-    let d65 = load_d65(data).ok()?;
-    let w = skylux_hps::camera::DeviceConfig::default().response.weights;
-    let per_lux = |s: &_, c: &_| overlap(s, c) / overlap(s, &v);
-    let points: Vec<(f64, f64)> = (0..=30)
-        .map(|i| {
-            let s = cie_daylight(&basis, 5000.0 + 500.0 * i as f64);
-            let rel: Vec<f64> = channels
-                .iter()
-                .map(|c| per_lux(&s, c) / per_lux(&d65, c))
-                .collect();
-            let error =
-                (w[0] * rel[0] + w[1] * rel[1] + w[2] * rel[2]) / w.iter().sum::<f64>() - 1.0;
-            (rel[2] / rel[0], error)
-        })
-        .collect();
-    let n = points.len() as f64;
-    let (mx, my) = points
-        .iter()
-        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
-    let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), p| {
-        (a + (p.0 - mx) * (p.1 - my), b + (p.0 - mx).powi(2))
-    });
-    Some(sxy / sxx)
+    let weights = skylux_hps::camera::DeviceConfig::default().response.weights;
+    MismatchLine::of_daylights(data, weights)
+        .ok()
+        .map(|l| l.slope_per_index)
 }
 
 /// One row of the per-class table.

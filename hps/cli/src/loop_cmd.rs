@@ -21,7 +21,7 @@ pub struct LoopArgs {
     #[arg(long)]
     pub sun_in_map: bool,
     /// Paths per sensor for the daylight coefficients.
-    #[arg(long, default_value_t = 50_000)]
+    #[arg(long, default_value_t = skylux_hps::validation::illuminance_loop::DC_SAMPLES_PER_SENSOR)]
     pub samples: u32,
     /// Length of the alternating fit and hold-out blocks, minutes.
     #[arg(long, default_value_t = 120)]

@@ -60,7 +60,7 @@ pub struct SimCampaignArgs {
     /// Readout skip of the simulated frames (1: full 2592x1944; 4: 648x486).
     #[arg(long, default_value_t = 4)]
     pub skip: u32,
-    /// What gives the lux-meters' truth: `engine` (Skylux's own, 5 bounces), `radiance`
+    /// What gives the lux-meters' truth: `engine` (Skylux's own, 12 bounces), `radiance`
     /// (RADIANCE's rcontrib daylight coefficients, 12 bounces: independent of the engine the
     /// loop's model uses; needs RADIANCE) or `radiance:N` (N bounces).
     #[arg(long, default_value = "engine")]

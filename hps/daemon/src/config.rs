@@ -147,7 +147,7 @@ fn default_dc_samples() -> u32 {
     50_000
 }
 fn default_bounces() -> u32 {
-    5
+    skylux_hps::engine::integrator::CONVERGED_AMBIENT_BOUNCES
 }
 fn one_u64() -> u64 {
     1

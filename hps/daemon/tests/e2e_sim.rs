@@ -136,9 +136,9 @@ fn compare_with_offline(
         world: World::new(&scene).unwrap(),
         sensors: skylux_hps::scene::load_sensors(room_dir.join("sensors.pts")).unwrap(),
         dc: DaylightCoefficients::read(&dc_path).unwrap(),
-        // hps/skyluxd.toml: ambient_bounces = 5, seed = 1.
+        // hps/skyluxd.toml: ambient_bounces = 12 (converged), seed = 1.
         settings: Settings {
-            ambient_bounces: 5,
+            ambient_bounces: skylux_hps::engine::integrator::CONVERGED_AMBIENT_BOUNCES,
             samples_per_sensor: dc_samples,
             seed: 1,
             ..Settings::default()

@@ -3,8 +3,8 @@
 //! with small settings, and the acceptance rule (hold-out error after at most a
 //! third of before, or at the noise floor of the same campaign without effects).
 //!
-//! Campaigns: a clear and an overcast day (or the given sky on both), captures every two
-//! hours from 8:00 to 18:00 at a quarter of the full resolution (skip 4), lux-meters with
+//! Campaigns: a clear and an overcast day (or the given sky on both), captures every hour
+//! from 8:00 to 18:00 at a quarter of the full resolution (skip 4), lux-meters with
 //! 1 % noise.
 #![allow(dead_code)]
 
@@ -24,7 +24,7 @@ pub const ROOM: &str = concat!(
 /// both.
 pub fn spec_with_sky(effects: &[&str], seed: u64, sky: Option<DaySky>) -> CampaignSpec {
     let mut spec = CampaignSpec::lausanne(PathBuf::from(ROOM));
-    spec.hours = vec![8.0, 10.0, 12.0, 14.0, 16.0, 18.0];
+    spec.hours = (8..=18).map(f64::from).collect();
     spec.truth_samples = 16_384;
     spec.seed = seed;
     if let Some(sky) = sky {

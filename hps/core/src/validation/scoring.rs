@@ -47,11 +47,38 @@ pub struct Verdict {
     pub units: usize,
     /// The gain over the figure before.
     pub relative_gain: f64,
+    /// Judged as a confirmation of an effect identified without the lux-meters
+    /// ([`Verdict::confirming`]).
+    pub confirmation: bool,
 }
 
 impl Verdict {
+    /// The rule for an effect identified and measured without the lux-meters: the hold-out
+    /// error falls relevantly (by [`MIN_RELATIVE_GAIN`] of itself) and the paired test shows
+    /// no significant rise. Its false-discovery control is the identifying evidence's.
+    pub fn confirming(self) -> Self {
+        Self {
+            accepted: self.gain > 0.0
+                && self.relative_gain >= MIN_RELATIVE_GAIN
+                && !(self.t < -self.t_critical),
+            confirmation: true,
+            ..self
+        }
+    }
+
     /// One line for the report: the statistic against its threshold.
     pub fn describe(&self) -> String {
+        if self.confirmation {
+            return format!(
+                "identified without the lux-meters; confirmed by the hold-out set: gain {:.2}                  points ({:.0} % of the error; needs {:.0} %), t = {:.1} over {} units (no                  significant rise: above −{:.2})",
+                100.0 * self.gain,
+                100.0 * self.relative_gain,
+                100.0 * MIN_RELATIVE_GAIN,
+                self.t,
+                self.units,
+                self.t_critical
+            );
+        }
         format!(
             "gain {:.2} points ({:.0} % of the error; needs {:.0} %), t = {:.1} over {} \
              units (needs {:.2}, one-sided α = {})",
@@ -71,11 +98,45 @@ impl Verdict {
 /// where the candidate acts, or the sun sightings') and relevantly (from `before` to `after` over the whole hold-out set,
 /// by at least [`MIN_RELATIVE_GAIN`] of itself).
 pub fn judge(diffs: &[f64], before: f64, after: f64) -> Verdict {
-    let diffs: Vec<f64> = diffs.iter().copied().filter(|d| d.is_finite()).collect();
-    let m = diffs.len();
-    let mean = diffs.iter().sum::<f64>() / m.max(1) as f64;
+    let units: Vec<(f64, f64)> = diffs.iter().map(|&d| (d, 1.0)).collect();
+    judge_weighted(&units, before, after)
+}
+
+/// [`judge`] with a weight per unit `(fall, weight)`: a weighted paired t test, the mean and
+/// variance weighted (reliability weights) and the degrees of freedom from Kish's effective
+/// number of units, (Σw)² / Σw² (Kish 1965, *Survey Sampling*, §11.7); equal weights give the
+/// ordinary test. The loop weights each hold-out capture by how much the candidate moves its
+/// comparison: an effect that acts strongly at three captures and leaves the others at the
+/// noise (a clock offset on a day when the sun comes and goes) is judged on those three, not
+/// drowned by the noise of the rest. The weights never depend on whether the capture
+/// improved, so they do not bias the test.
+pub fn judge_weighted(units: &[(f64, f64)], before: f64, after: f64) -> Verdict {
+    let units: Vec<(f64, f64)> = units
+        .iter()
+        .copied()
+        .filter(|(d, w)| d.is_finite() && w.is_finite() && *w > 0.0)
+        .collect();
+    let sw: f64 = units.iter().map(|u| u.1).sum();
+    let sw2: f64 = units.iter().map(|u| u.1 * u.1).sum();
+    let n_eff = if sw2 > 0.0 { sw * sw / sw2 } else { 0.0 };
+    // Kish's n rounded to the nearest unit (so that equal weights give exactly n), at least 1.
+    let m = if units.is_empty() {
+        0
+    } else {
+        (n_eff.round() as usize).max(1)
+    };
+    let mean = if sw > 0.0 {
+        units.iter().map(|(d, w)| w * d).sum::<f64>() / sw
+    } else {
+        0.0
+    };
     let se = if m >= 2 {
-        (diffs.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / (m - 1) as f64 / m as f64).sqrt()
+        let var = units
+            .iter()
+            .map(|(d, w)| w * (d - mean).powi(2))
+            .sum::<f64>()
+            / (sw - sw2 / sw);
+        (var / n_eff).sqrt()
     } else {
         f64::NAN
     };
@@ -100,6 +161,7 @@ pub fn judge(diffs: &[f64], before: f64, after: f64) -> Verdict {
         t_critical,
         units: m,
         relative_gain,
+        confirmation: false,
     }
 }
 
@@ -192,5 +254,42 @@ pub fn summary(all: &Score, per: &BTreeMap<String, Score>, figure: Figure) -> Er
             .iter()
             .map(|(k, s)| (k.clone(), s.figure(figure)))
             .collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Falls 1, 2, 3: mean 2, standard deviation 1, t = 2 √3 = 3.464 against 2.920 (df 2).
+    #[test]
+    fn the_paired_test_matches_the_textbook() {
+        let v = judge(&[1.0, 2.0, 3.0], 1.0, 0.5);
+        assert!((v.t - 2.0 * 3f64.sqrt()).abs() < 1e-12, "{v:?}");
+        assert_eq!((v.units, v.t_critical), (3, 2.920));
+        assert!(v.accepted);
+        let w = judge_weighted(&[(1.0, 7.0), (2.0, 7.0), (3.0, 7.0)], 1.0, 0.5);
+        assert!((w.t - v.t).abs() < 1e-12 && w.units == 3, "{w:?}");
+    }
+
+    /// Significant but small: a consistent fall of 10 % of the error is model error absorbed,
+    /// not an effect.
+    #[test]
+    fn a_small_consistent_fall_is_not_relevant() {
+        let v = judge(&[0.05, 0.06, 0.05, 0.04, 0.05], 0.049, 0.044);
+        assert!(v.t > v.t_critical && !v.accepted, "{v:?}");
+    }
+
+    /// One hold-out capture shows an overhead the frames measured: no paired test over one
+    /// unit passes, the confirmation does; a rise is never confirmed.
+    #[test]
+    fn an_effect_identified_apart_is_confirmed_by_a_relevant_fall() {
+        let one = judge_weighted(&[(0.74, 0.46)], 0.11, 0.03);
+        assert!(!one.accepted);
+        assert!(one.confirming().accepted, "{:?}", one.confirming());
+        let rise = judge(&[-0.3, -0.4, -0.35, -0.5], 0.02, 0.04);
+        assert!(!rise.confirming().accepted);
+        let small = judge_weighted(&[(0.74, 0.46)], 0.11, 0.10);
+        assert!(!small.confirming().accepted);
     }
 }

@@ -31,6 +31,16 @@ pub trait LoopEffect: Sync {
         Stage::Greedy
     }
 
+    /// Whether the effect is identified, and its parameter measured, without the lux-meters
+    /// (the raw frames, the pyranometer): its false-discovery control is that evidence's own
+    /// threshold, and the hold-out set confirms it by a relevant fall without a significant
+    /// rise ([`crate::validation::scoring::Verdict::confirming`]) instead of testing it as a
+    /// discovery. An overhead that shows at one capture in the hold-out set is then
+    /// confirmed there, where no paired test over one unit could be.
+    fn identified_without_luxmeters(&self) -> bool {
+        false
+    }
+
     /// The effect's part in the joint linear fit, if it is one of the linear effects.
     fn linear(&self) -> Option<Linear> {
         None

@@ -31,6 +31,10 @@ impl LoopEffect for ShutterOverhead {
         &["shutter_overhead_us"]
     }
 
+    fn identified_without_luxmeters(&self) -> bool {
+        true
+    }
+
     fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
         Some(("share of direct sun in the model's light", |d| {
             d.direct_sun_share
@@ -125,7 +129,10 @@ fn identify(ctx: &mut FitContext<'_>) -> Result<Option<(f64, String)>, ModelErro
     let mut over: Vec<f64> = sun.iter().map(|(_, r, _)| *r).collect();
     over.sort_by(f64::total_cmp);
     let median_ratio = over.get(over.len() / 2).copied().unwrap_or(f64::NAN);
-    if over.len() >= 2 && median_ratio >= 1.0 + SUN_OVER_READ {
+    // Two captures at least: two suns that read high, or one that reads high and one
+    // saturated in every frame, which an overhead explains as well (the sun reads t0 / t
+    // higher where it is valid and saturates where it is bright).
+    if over.len() + saturated.min(1) >= 2 && median_ratio >= 1.0 + SUN_OVER_READ {
         let mut t0: Vec<f64> = sun.iter().map(|(_, r, t)| t * (r - 1.0)).collect();
         t0.sort_by(f64::total_cmp);
         let overhead_us = t0[t0.len() / 2];
