@@ -6,7 +6,7 @@
 //! 3. Select effects: fit each candidate of the library ([`registry::EFFECTS`]) on the fit
 //!    set; rank them (an effect identified apart, by the raw frames or the logger's series,
 //!    first, then by fit-set error); add
-//!    the best if the hold-out error falls significantly and relevantly ([`scoring::judge`]),
+//!    the best if the hold-out error falls significantly and relevantly ([`scoring::judge_projection`]),
 //!    else the best pair fitted jointly; repeat. The hold-out set is only ever scored, never
 //!    fitted.
 //! 4. Diagnostics and output: before and after on the hold-out set, with the Perez baseline
@@ -20,7 +20,7 @@ use super::perez_baseline::perez_predictions;
 use super::prediction::{predict, LoopState, CLOCK_OFFSET_S};
 use super::report::{EffectReport, Report, ResidualRow};
 use super::sample::{reading_at, LoggerSeries, Sample, SERIES_HALF_WINDOW_S};
-use super::scoring::{judge, noise, score, summary, Verdict, ACTING_CHANGE};
+use super::scoring::{judge, judge_projection, noise, score, summary, CaptureProjection, Verdict};
 use super::sky_colour::CaptureColour;
 use super::sky_geometry::{correct_terms, hidden_suns, SkyGeometry, MIN_CLIPPED_DEG};
 use super::split::{compare, split, Figure, FitSet, HoldoutSet, Score, SplitPlan};
@@ -580,12 +580,10 @@ struct Trial {
 }
 
 impl Trial {
-    /// `candidate` against `current` (whose hold-out score is `current_score`). The paired
-    /// test's units are the hold-out captures where the candidate changes the predictions
-    /// ([`ACTING_CHANGE`]; decided by how much the comparison moves, not by whether it
-    /// improves), each the symmetric relative fall (b − a) / (b + a) of its mean |relative
-    /// error| over its sensors (scale-free, so one capture where the sun strikes a sensor does
-    /// not swamp the others, and bounded).
+    /// `candidate` against `current` (whose hold-out score is `current_score`), judged by the
+    /// projection test over the hold-out captures ([`judge_projection`]): each capture's
+    /// readings, the model's relative error as it stands and the candidate's (for a clock
+    /// offset, each compared with the readings its own offset picks).
     fn of(
         current: &Model,
         candidate: &Model,
@@ -594,83 +592,80 @@ impl Trial {
         current_score: &Score,
     ) -> Self {
         let (after, _) = Model::score_with(&candidate.state, &candidate.terms, sets, names);
-        let per_capture = |m: &Model| {
+        let relative_errors = |m: &Model, s: &Sample| -> Vec<Option<f64>> {
             let offset = m.state.get(CLOCK_OFFSET_S);
+            let p = predict(&m.state, &m.terms[s.capture]);
+            (0..p.len())
+                .map(|k| {
+                    let y = s.measured(k, offset).filter(|y| *y > 0.0)?;
+                    Some(p[k] / y - 1.0).filter(|e| e.is_finite())
+                })
+                .collect()
+        };
+        let projection = |s: &Sample| {
+            let (before, after) = (relative_errors(current, s), relative_errors(candidate, s));
+            let mut c = CaptureProjection::default();
+            for (r, e) in before.iter().zip(&after) {
+                if let (Some(r), Some(e)) = (r, e) {
+                    c.residual_dot_change += r * (r - e);
+                    c.abs_change_sum += (r - e).abs();
+                    c.candidate_square_sum += e * e;
+                    c.readings += 1;
+                }
+            }
+            c
+        };
+        // The hold-out set is reachable only through scores: one pass per sum, grouped by
+        // capture (a capture's samples add up: a Score's mean times its count).
+        let sums: [BTreeMap<usize, Score>; 4] = [0, 1, 2, 3].map(|field| {
             sets.holdout
                 .evaluate_grouped(|s: &Sample| {
-                    let p = predict(&m.state, &m.terms[s.capture]);
-                    let e: Vec<f64> = (0..p.len())
-                        .filter_map(|k| {
-                            let y = s.measured(k, offset).filter(|y| *y > 0.0)?;
-                            Some((p[k] / y - 1.0).abs())
-                        })
-                        .filter(|e| e.is_finite())
-                        .collect();
-                    (!e.is_empty()).then(|| (s.capture, e.iter().sum::<f64>() / e.len() as f64))
+                    let c = projection(s);
+                    let v = match field {
+                        0 => c.residual_dot_change,
+                        1 => c.abs_change_sum,
+                        2 => c.candidate_square_sum,
+                        _ => c.readings as f64,
+                    };
+                    Some((s.capture, v))
                 })
                 .1
+        });
+        let total = |field: usize, capture: &usize| {
+            sums[field]
+                .get(capture)
+                .map_or(0.0, |s| s.mean * s.n as f64)
         };
-        // How much the candidate changes each capture's comparison: its predictions, and for
-        // a clock offset which readings they are compared with (not whether they agree).
-        let change = sets
-            .holdout
-            .evaluate_grouped(|s: &Sample| {
-                let (oa, ob) = (
-                    current.state.get(CLOCK_OFFSET_S),
-                    candidate.state.get(CLOCK_OFFSET_S),
-                );
-                let a = predict(&current.state, &current.terms[s.capture]);
-                let b = predict(&candidate.state, &candidate.terms[s.capture]);
-                let d: Vec<f64> = (0..a.len().min(b.len()))
-                    .filter_map(|k| {
-                        let (ma, mb) = (s.measured(k, oa)?, s.measured(k, ob)?);
-                        let r = (b[k] / mb) / (a[k] / ma);
-                        r.is_finite().then(|| (r - 1.0).abs())
-                    })
-                    .collect();
-                (!d.is_empty()).then(|| (s.capture, d.iter().sum::<f64>() / d.len() as f64))
-            })
-            .1;
-        let (before_c, after_c) = (per_capture(current), per_capture(candidate));
-        let diffs: Vec<(f64, f64)> = before_c
-            .iter()
-            .filter_map(|(c, b)| {
-                let moved = change
-                    .get(c)
-                    .map(|s| s.mean)
-                    .filter(|m| *m >= ACTING_CHANGE)?;
-                after_c
-                    .get(c)
-                    .filter(|a| a.mean + b.mean > 0.0)
-                    .map(|a| ((b.mean - a.mean) / (b.mean + a.mean), moved))
+        let captures: Vec<CaptureProjection> = sums[3]
+            .keys()
+            .map(|c| CaptureProjection {
+                residual_dot_change: total(0, c),
+                abs_change_sum: total(1, c),
+                candidate_square_sum: total(2, c),
+                readings: total(3, c).round() as usize,
             })
             .collect();
-        if std::env::var_os("SKYLUX_DEBUG_LOOP").is_some() {
-            let pairs: Vec<String> = before_c
-                .iter()
-                .filter_map(|(c, b)| {
-                    let a = after_c.get(c)?;
-                    let moved = change.get(c).map_or(0.0, |s| s.mean);
-                    Some(format!("{:.3}->{:.3} (moved {:.3})", b.mean, a.mean, moved))
-                })
-                .collect();
-            eprintln!(
-                "acceptance units (relative fall, weight): {diffs:?}\n  per hold-out capture: {}",
-                pairs.join(", ")
-            );
-        }
-        let falls: Vec<f64> = diffs.iter().map(|d| d.0).collect();
-        let verdict = judge(
-            &falls,
+        let verdict = judge_projection(
+            &captures,
             current_score.figure(Figure::MeanAbs),
             after.figure(Figure::MeanAbs),
         );
+        if std::env::var_os("SKYLUX_DEBUG_LOOP").is_some() {
+            eprintln!(
+                "hold-out captures (Σrδ, mean|δ|, n): {:?}",
+                captures
+                    .iter()
+                    .map(|c| (c.residual_dot_change, c.mean_abs_change(), c.readings))
+                    .collect::<Vec<_>>()
+            );
+            eprintln!("verdict: {}", verdict.describe());
+        }
         Self { after, verdict }
     }
 }
 
 /// Stage 3: adds the best candidate while the hold-out error falls significantly and
-/// relevantly ([`judge`]); when the best single is not accepted, the best pair of the
+/// relevantly ([`judge_projection`]); when the best single is not accepted, the best pair of the
 /// [`PAIR_CANDIDATES`] best singles, fitted one after the other (the second given the first),
 /// is tested instead: two effects that each explain part of the residual are found together
 /// even where each alone leaves the other's error in the hold-out set.
@@ -822,11 +817,9 @@ fn try_pair(
     let alone = |ranked: &Fitted, prepared: &mut Prepared| -> Result<f64, LoopError> {
         let mut m = model.clone();
         apply(prepared, &mut m, ranked.clone())?;
-        Ok(
-            Trial::of(model, &m, sets, &names, &selection.current_holdout)
-                .after
-                .figure(Figure::MeanAbs),
-        )
+        Ok(Model::score_with(&m.state, &m.terms, sets, &names)
+            .0
+            .figure(Figure::MeanAbs))
     };
     let second_alone = match candidates
         .iter()
