@@ -1,0 +1,429 @@
+//! The BSDF reader and its evaluation against RADIANCE's BSDF library, run live through
+//! `pyradiance.bsdf` (one python3 process per file): f(ωi, ωo) at 10⁴ random direction pairs
+//! per corpus file within 0.1 %, hemispherical R and T within 1e-4; and sampling whose
+//! histogram matches f·cosθ/(R+T) in a chi-square sense. Without pyradiance the comparisons
+//! print SKIPPED and pass, unless `SKYLUX_REQUIRE_RADIANCE` is set: then they fail.
+
+mod common;
+
+use glam::DVec3;
+use rand::{rngs::StdRng, Rng, SeedableRng};
+use skylux_hps::bsdf::{Band, Bsdf, Scattering};
+use std::f64::consts::PI;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+/// The corpus of real BSDF files (shared data, read-only).
+fn corpus_dir() -> PathBuf {
+    let data = std::env::var_os("SKYLUX_DATA_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data"));
+    data.join("radiance-corpus/bsdf")
+}
+
+fn corpus_files() -> Vec<PathBuf> {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
+        let entries = std::fs::read_dir(dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display()));
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                walk(&path, out);
+            } else if path.extension().is_some_and(|e| e == "xml") {
+                out.push(path);
+            }
+        }
+    }
+    let mut files = Vec::new();
+    walk(&corpus_dir(), &mut files);
+    files.sort();
+    assert!(
+        files.len() >= 10,
+        "BSDF corpus missing at {}",
+        corpus_dir().display()
+    );
+    files
+}
+
+/// pyradiance's `vec_from_deg` constant (bsdf_ext.cpp), so both sides use the same vectors.
+const PYRADIANCE_DEG: f64 = 0.01745329251;
+
+/// A direction as (θ, φ) in degrees, and the vector pyradiance makes of them.
+#[derive(Clone, Copy)]
+struct Angles {
+    theta_deg: f64,
+    phi_deg: f64,
+}
+
+impl Angles {
+    fn random(rng: &mut StdRng) -> Angles {
+        let z: f64 = rng.gen_range(-1.0..1.0);
+        Angles {
+            theta_deg: z.acos() / PYRADIANCE_DEG,
+            phi_deg: rng.gen_range(-180.0..180.0),
+        }
+    }
+
+    fn vector(self) -> DVec3 {
+        let (t, p) = (
+            self.theta_deg * PYRADIANCE_DEG,
+            self.phi_deg * PYRADIANCE_DEG,
+        );
+        DVec3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos())
+    }
+}
+
+/// Reads commands on stdin: `q θi φi θo φo` (BSDF Y, 1/sr) and `h θ φ flags` (direct_hemi).
+/// With `fresh`, each `h` loads the file anew, through a link of its own name since the
+/// library caches by name: RADIANCE reuses a tree's cached distribution for any incident
+/// coordinate within the smallest outgoing cell's width, so a tree's answer would otherwise
+/// depend on the queries before it. pyradiance's binding takes ownership of the cached
+/// `SDData` it returns (so `free`, or dropping a reference, corrupts the cache): every load
+/// is kept alive and the process leaves by `os._exit`.
+const PYTHON_SERVER: &str = r#"
+import os, sys, tempfile
+import pyradiance.bsdf as b
+path, fresh = sys.argv[1], sys.argv[2] == "fresh"
+links = tempfile.mkdtemp()
+sd = b.load_file(path)
+loads = [sd]
+out = []
+if sd is None:
+    print("UNLOADABLE")
+    sys.exit(0)
+for line in sys.stdin:
+    w = line.split()
+    if w[0] == "q":
+        out.append(repr(float(b.query(sd, float(w[1]), float(w[2]), float(w[3]), float(w[4]))[1])))
+    elif w[0] == "h":
+        which = sd
+        if fresh:
+            link = os.path.join(links, "h%d.xml" % len(out))
+            os.symlink(os.path.abspath(path), link)
+            which = b.load_file(link)
+            loads.append(which)
+            os.remove(link)
+        out.append(repr(b.direct_hemi(which, float(w[1]), float(w[2]), int(w[3]))))
+print("\n".join(out))
+sys.stdout.flush()
+os.rmdir(links)
+os._exit(0)
+"#;
+
+/// RADIANCE's answers to `commands` in order, or None when it cannot load the file.
+fn radiance_answers(file: &Path, commands: &[String]) -> Option<Vec<f64>> {
+    let is_tree = std::fs::read_to_string(file).is_ok_and(|t| t.contains("TensorTree"));
+    let text: String = commands.iter().map(|c| format!("{c}\n")).collect();
+    run_server(file, is_tree, &text)
+}
+
+fn run_server(file: &Path, fresh: bool, commands: &str) -> Option<Vec<f64>> {
+    let mut child = Command::new("python3")
+        .args(["-c", PYTHON_SERVER])
+        .arg(file)
+        .arg(if fresh { "fresh" } else { "cached" })
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("python3");
+    // A file RADIANCE cannot load ends the server before it reads: a broken pipe then.
+    let _ = child.stdin.take().unwrap().write_all(commands.as_bytes());
+    let out = child.wait_with_output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}: python3 failed: {}",
+        file.display(),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    if text.starts_with("UNLOADABLE") {
+        return None;
+    }
+    Some(
+        text.lines()
+            .map(|l| {
+                l.trim()
+                    .parse::<f64>()
+                    .unwrap_or_else(|_| panic!("bad answer {l:?}"))
+            })
+            .collect(),
+    )
+}
+
+/// RADIANCE's SDsamp flags: reflection or transmission, diffuse and non-diffuse.
+fn hemi_flags(kind: Scattering) -> u32 {
+    const SAMPLE_R: u32 = 1;
+    const SAMPLE_T: u32 = 2;
+    const SAMPLE_SP: u32 = 4;
+    const SAMPLE_DF: u32 = 8;
+    SAMPLE_SP
+        | SAMPLE_DF
+        | if kind == Scattering::Reflection {
+            SAMPLE_R
+        } else {
+            SAMPLE_T
+        }
+}
+
+const PAIRS: usize = 10_000;
+const HEMI_DIRECTIONS: usize = 60;
+const REL_TOLERANCE: f64 = 1e-3;
+const HEMI_TOLERANCE: f64 = 1e-4;
+
+struct FileResult {
+    name: String,
+    worst_relative: f64,
+    value_failures: usize,
+    worst_hemi: f64,
+    hemi_failures: usize,
+}
+
+fn compare_file(file: &Path, seed: u64) -> Option<FileResult> {
+    let mut rng = StdRng::seed_from_u64(seed);
+    let pairs: Vec<(Angles, Angles)> = (0..PAIRS)
+        .map(|_| (Angles::random(&mut rng), Angles::random(&mut rng)))
+        .collect();
+    let incidents: Vec<Angles> = (0..HEMI_DIRECTIONS)
+        .map(|_| Angles::random(&mut rng))
+        .collect();
+    let mut commands = Vec::new();
+    for (i, o) in &pairs {
+        commands.push(format!(
+            "q {:e} {:e} {:e} {:e}",
+            i.theta_deg, i.phi_deg, o.theta_deg, o.phi_deg
+        ));
+    }
+    let kinds = [Scattering::Reflection, Scattering::Transmission];
+    for a in &incidents {
+        for kind in kinds {
+            commands.push(format!(
+                "h {:e} {:e} {}",
+                a.theta_deg,
+                a.phi_deg,
+                hemi_flags(kind)
+            ));
+        }
+    }
+    let ours = Bsdf::load_band(file, Band::Visible);
+    let Some(theirs) = radiance_answers(file, &commands) else {
+        let err = ours.expect_err("RADIANCE cannot load this file, so neither should we");
+        println!("{}: both refuse: {err}", file.display());
+        assert!(
+            err.to_string().contains(&*file.display().to_string()),
+            "{err}"
+        );
+        return None;
+    };
+    let bsdf =
+        ours.unwrap_or_else(|e| panic!("RADIANCE loads {} but we do not: {e}", file.display()));
+    assert_eq!(
+        theirs.len(),
+        PAIRS + 2 * HEMI_DIRECTIONS,
+        "{}",
+        file.display()
+    );
+    let mut result = FileResult {
+        name: file.display().to_string(),
+        worst_relative: 0.0,
+        value_failures: 0,
+        worst_hemi: 0.0,
+        hemi_failures: 0,
+    };
+    for ((i, o), want) in pairs.iter().zip(&theirs) {
+        let got = bsdf.eval(i.vector(), o.vector());
+        let relative = (got - want).abs() / want.abs().max(got.abs()).max(1e-30);
+        let ok = (got - want).abs() <= REL_TOLERANCE * want.abs().max(got.abs()) + 1e-7;
+        if !ok && result.value_failures < 5 {
+            println!(
+                "  f mismatch ({:.3},{:.3})->({:.3},{:.3}): ours {got:.6e} RADIANCE {want:.6e}",
+                i.theta_deg, i.phi_deg, o.theta_deg, o.phi_deg
+            );
+        }
+        result.value_failures += !ok as usize;
+        if want.abs().max(got.abs()) > 1e-7 {
+            result.worst_relative = result.worst_relative.max(relative);
+        }
+    }
+    let hemis = theirs[PAIRS..].chunks(2);
+    for (a, want) in incidents.iter().zip(hemis) {
+        for (kind, want) in kinds.iter().zip(want) {
+            let got = bsdf.hemispherical(a.vector(), *kind);
+            let diff = (got - want).abs();
+            if diff > HEMI_TOLERANCE && result.hemi_failures < 5 {
+                println!(
+                    "  {kind:?} mismatch at ({:.3},{:.3}): ours {got:.6} RADIANCE {want:.6}",
+                    a.theta_deg, a.phi_deg
+                );
+            }
+            result.hemi_failures += (diff > HEMI_TOLERANCE) as usize;
+            result.worst_hemi = result.worst_hemi.max(diff);
+        }
+    }
+    Some(result)
+}
+
+#[test]
+fn values_and_hemispherical_match_radiance_on_every_corpus_file() {
+    if !common::radiance::pyradiance_bsdf_or_skip() {
+        return;
+    }
+    let mut results = Vec::new();
+    for (k, file) in corpus_files().iter().enumerate() {
+        let start = std::time::Instant::now();
+        if let Some(r) = compare_file(file, 1000 + k as u64) {
+            println!(
+                "{}: f worst rel {:.2e}, {} of {PAIRS} outside 0.1 %; R/T worst |diff| {:.2e}, {} of {} outside 1e-4 ({:.1} s)",
+                r.name, r.worst_relative, r.value_failures, r.worst_hemi, r.hemi_failures, 2 * HEMI_DIRECTIONS, start.elapsed().as_secs_f64()
+            );
+            results.push(r);
+        }
+    }
+    assert!(
+        results.len() >= 10,
+        "too few comparable files: {}",
+        results.len()
+    );
+    let failing: Vec<&FileResult> = results
+        .iter()
+        .filter(|r| r.value_failures + r.hemi_failures > 0)
+        .collect();
+    assert!(
+        failing.is_empty(),
+        "files disagreeing with RADIANCE: {:?}",
+        failing.iter().map(|r| &r.name).collect::<Vec<_>>()
+    );
+}
+
+// ---------------------------------------------------------------------------------------
+// Sampling: the histogram of sampled directions against f·cosθ/(R+T), integrated by
+// quadrature of `eval` over bins that ignore the data's own patches and cells.
+
+const RINGS: usize = 8;
+const SECTORS: usize = 16;
+const QUADRATURE: usize = 24;
+const SAMPLES: usize = 200_000;
+
+/// Bins over both hemispheres: rings of equal projected solid angle (equal steps of sin²θ)
+/// by equal azimuth sectors.
+fn bin_of(v: DVec3) -> usize {
+    let s = (v.x * v.x + v.y * v.y).clamp(0.0, 1.0);
+    let ring = ((s * RINGS as f64) as usize).min(RINGS - 1);
+    let phi = v.y.atan2(v.x).rem_euclid(2.0 * PI);
+    let sector = ((phi / (2.0 * PI) * SECTORS as f64) as usize).min(SECTORS - 1);
+    (v.z > 0.0) as usize * RINGS * SECTORS + ring * SECTORS + sector
+}
+
+/// ∫ f cosθ dω over each bin, by the midpoint rule in (sin²θ, φ): dω cosθ = ½ d(sin²θ) dφ.
+fn expected_bin_integrals(bsdf: &Bsdf, incident: DVec3) -> Vec<f64> {
+    let mut integrals = vec![0.0; 2 * RINGS * SECTORS];
+    let (n_s, n_phi) = (RINGS * QUADRATURE, SECTORS * QUADRATURE);
+    let (ds, dphi) = (1.0 / n_s as f64, 2.0 * PI / n_phi as f64);
+    for front in [false, true] {
+        for a in 0..n_s {
+            let s = (a as f64 + 0.5) * ds;
+            for b in 0..n_phi {
+                let phi = (b as f64 + 0.5) * dphi;
+                let z = (1.0 - s).sqrt();
+                let v = DVec3::new(
+                    s.sqrt() * phi.cos(),
+                    s.sqrt() * phi.sin(),
+                    if front { z } else { -z },
+                );
+                integrals[bin_of(v)] += bsdf.eval(incident, v) * 0.5 * ds * dphi;
+            }
+        }
+    }
+    integrals
+}
+
+fn check_sampling(file: &Path, incident: DVec3, seed: u64) {
+    let bsdf = Bsdf::load(file).unwrap_or_else(|e| panic!("{e}"));
+    let distribution = bsdf.distribution(incident);
+    let total = distribution.total();
+    let r_plus_t = bsdf.hemispherical(incident, Scattering::Reflection)
+        + bsdf.hemispherical(incident, Scattering::Transmission);
+    assert!(
+        (total - r_plus_t).abs() < 1e-12,
+        "sampling total {total} vs R+T {r_plus_t}"
+    );
+    let integrals = expected_bin_integrals(&bsdf, incident);
+    let integral: f64 = integrals.iter().sum();
+    assert!(
+        (integral - total).abs() < 0.01 * total,
+        "{}: ∫f cos by quadrature {integral:.5} vs R+T {total:.5}",
+        file.display()
+    );
+    let mut rng = StdRng::seed_from_u64(seed);
+    let mut observed = vec![0usize; integrals.len()];
+    for _ in 0..SAMPLES {
+        let s = distribution
+            .sample([rng.gen(), rng.gen(), rng.gen()])
+            .expect("R+T > 0");
+        assert!(
+            (s.direction.length() - 1.0).abs() < 1e-9,
+            "not a unit direction: {:?}",
+            s.direction
+        );
+        let expected_pdf = s.value_per_sr * s.direction.z.abs() / total;
+        assert!(
+            (s.pdf_per_sr - expected_pdf).abs() <= 1e-3 * expected_pdf + 1e-12,
+            "pdf {} vs f cos/(R+T) {expected_pdf}",
+            s.pdf_per_sr
+        );
+        observed[bin_of(s.direction)] += 1;
+    }
+    let (mut chi2, mut dof, mut sparse_expected, mut sparse_observed) = (0.0, 0usize, 0.0, 0usize);
+    for (o, w) in observed.iter().zip(&integrals) {
+        let e = w / integral * SAMPLES as f64;
+        if e >= 5.0 {
+            chi2 += (*o as f64 - e).powi(2) / e;
+            dof += 1;
+        } else {
+            sparse_expected += e;
+            sparse_observed += o;
+        }
+    }
+    let dof = dof.saturating_sub(1).max(1) as f64;
+    let limit = dof + 5.0 * (2.0 * dof).sqrt();
+    println!("{} from {incident:.3}: chi² {chi2:.1} over {dof} dof (limit {limit:.1}); sparse bins: {sparse_observed} observed, {sparse_expected:.1} expected", file.display());
+    assert!(
+        chi2 < limit,
+        "{}: chi² {chi2:.1} > {limit:.1}",
+        file.display()
+    );
+    assert!((sparse_observed as f64) <= sparse_expected + 5.0 * sparse_expected.sqrt() + 10.0);
+}
+
+#[test]
+fn klems_sampling_follows_f_cos() {
+    let file = corpus_dir().join("sariths-matrix-tutorial/room/blinds/blinds.xml");
+    let front = Angles {
+        theta_deg: 35.0,
+        phi_deg: 60.0,
+    }
+    .vector();
+    check_sampling(&file, front, 7);
+    check_sampling(&file, DVec3::new(-front.x, front.y, -front.z), 8);
+}
+
+#[test]
+fn tensor_tree_sampling_follows_f_cos() {
+    let file = corpus_dir().join("sariths-matrix-tutorial/room/blinds/blindsT3.xml");
+    let front = Angles {
+        theta_deg: 40.0,
+        phi_deg: 120.0,
+    }
+    .vector();
+    check_sampling(&file, front, 9);
+    check_sampling(&file, -front, 10);
+    check_sampling(
+        &corpus_dir().join("pyradiance/tests/Resources/t3.xml"),
+        Angles {
+            theta_deg: 20.0,
+            phi_deg: 10.0,
+        }
+        .vector(),
+        11,
+    );
+}
