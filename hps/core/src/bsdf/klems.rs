@@ -471,3 +471,49 @@ impl PatchDistribution<'_> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn builtin_bases_cover_the_hemisphere() {
+        for (name, n) in [
+            ("LBNL/Klems Full", 145),
+            ("lbnl/klems half", 77),
+            ("LBNL/Klems Quarter", 41),
+        ] {
+            let basis = AngleBasis::builtin(name).unwrap();
+            assert_eq!(basis.n_patches, n, "{name}");
+            // The projected solid angles of a partition of the hemisphere add up to π.
+            let total: f64 = (0..n).map(|p| basis.projected_solid_angle_sr(p)).sum();
+            assert!((total - PI).abs() < 1e-12, "{name}: {total}");
+            for patch in 0..n {
+                for u in [[0.5, 0.5], [0.01, 0.02], [0.99, 0.98]] {
+                    let v = basis.direction_in_patch(patch, u);
+                    assert_eq!(
+                        basis.patch_of(v),
+                        Some(patch),
+                        "{name} patch {patch} at {u:?}"
+                    );
+                }
+            }
+        }
+        assert!(AngleBasis::builtin("LBNL/Klems Eighth").is_none());
+    }
+
+    #[test]
+    fn patches_are_centred_on_their_azimuth() {
+        let basis = AngleBasis::builtin("LBNL/Klems Full").unwrap();
+        // Ring 5°–15° has 8 patches of 45°, the first centred on φ = 0 (RADIANCE `fo_getndx`).
+        let at = |deg: f64| {
+            let (t, p) = (10f64.to_radians(), deg.to_radians());
+            basis.patch_of(DVec3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos()))
+        };
+        assert_eq!(at(-22.0), Some(1));
+        assert_eq!(at(22.0), Some(1));
+        assert_eq!(at(23.0), Some(2));
+        assert_eq!(basis.patch_of(DVec3::Z), Some(0));
+        assert_eq!(basis.patch_of(-DVec3::Z), None);
+    }
+}

@@ -81,7 +81,11 @@ pub struct RawBsdf {
 pub fn read_bsdf_xml(text: &str, file: &str) -> Result<RawBsdf, BsdfError> {
     let (body, skipped_lines) = skip_leading_text(text);
     let doc = Document::parse(body).map_err(|e| {
-        let line = e.pos().row + skipped_lines;
+        // A truncated file: its last line is where it ends, more useful than the root's.
+        let line = match e {
+            roxmltree::Error::UnclosedRootNode => body.lines().count() as u32,
+            _ => e.pos().row,
+        } + skipped_lines;
         BsdfError::new(file, line, "xml", format!("not well-formed XML: {e}"))
     })?;
     let reader = Reader {
