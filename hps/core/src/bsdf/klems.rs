@@ -284,13 +284,14 @@ impl KlemsMatrix {
         let outgoing = find_basis(&block.row_basis, "RowAngleBasis", defined, block, file)?;
         let (n_in, n_out) = (incident.n_patches, outgoing.n_patches);
         let read = block.data.values(file)?;
-        if read.len() != n_in * n_out {
+        // Checked: a custom basis may claim more patches than a 32-bit usize can multiply.
+        if n_in.checked_mul(n_out) != Some(read.len()) {
             let message = format!(
                 "{} values, but the bases '{}' ({n_in}) and '{}' ({n_out}) need {}",
                 read.len(),
                 incident.name,
                 outgoing.name,
-                n_in * n_out
+                n_in as u64 * n_out as u64
             );
             return Err(BsdfError::new(
                 file,
