@@ -180,6 +180,15 @@ struct FileResult {
 }
 
 fn compare_file(file: &Path, seed: u64) -> Option<FileResult> {
+    compare_with(file, Bsdf::load_band(file, Band::Visible), seed)
+}
+
+/// Compares `ours` with RADIANCE's reading of `file`.
+fn compare_with(
+    file: &Path,
+    ours: Result<Bsdf, skylux_hps::bsdf::BsdfError>,
+    seed: u64,
+) -> Option<FileResult> {
     let mut rng = StdRng::seed_from_u64(seed);
     let pairs: Vec<(Angles, Angles)> = (0..PAIRS)
         .map(|_| (Angles::random(&mut rng), Angles::random(&mut rng)))
@@ -205,7 +214,6 @@ fn compare_file(file: &Path, seed: u64) -> Option<FileResult> {
             ));
         }
     }
-    let ours = Bsdf::load_band(file, Band::Visible);
     let Some(theirs) = radiance_answers(file, &commands) else {
         let err = ours.expect_err("RADIANCE cannot load this file, so neither should we");
         println!("{}: both refuse: {err}", file.display());
@@ -839,4 +847,40 @@ fn generated_tensor_tree4_and_custom_klems_bases_match_radiance() {
         21,
     );
     assert!(tree.hemispherical(DVec3::Z, Scattering::Reflection) > 0.0);
+}
+
+/// RADIANCE reads only the Visible band; relabelled so that its Solar blocks are what it
+/// reads, a file checks our Solar band.
+#[test]
+fn solar_band_matches_radiance_reading_it_as_visible() {
+    if !common::radiance::pyradiance_bsdf_or_skip() {
+        return;
+    }
+    let original = corpus_dir().join("sariths-matrix-tutorial/room/overhang/DiffuseGlass.xml");
+    let text = std::fs::read_to_string(&original).unwrap();
+    let relabelled = text
+        .replace(">Visible</Wavelength>", ">Photopic-not-read</Wavelength>")
+        .replace(">Solar</Wavelength>", ">Visible</Wavelength>");
+    assert_ne!(relabelled, text);
+    let dir = tempfile::tempdir().unwrap();
+    let solar_as_visible = dir.path().join("solar_as_visible.xml");
+    std::fs::write(&solar_as_visible, relabelled).unwrap();
+    let solar = Bsdf::load_band(&original, Band::Solar);
+    let r = compare_with(&solar_as_visible, solar, 77).expect("RADIANCE loads the relabelled file");
+    println!(
+        "Solar band: f worst rel {:.2e}, {} outside; R/T worst |diff| {:.2e}, {} outside",
+        r.worst_relative, r.value_failures, r.worst_hemi, r.hemi_failures
+    );
+    assert_eq!(r.value_failures + r.hemi_failures, 0);
+    let (visible, solar) = (
+        Bsdf::load(&original).unwrap(),
+        Bsdf::load_band(&original, Band::Solar).unwrap(),
+    );
+    let normal = DVec3::Z;
+    let (tv, ts) = (
+        visible.hemispherical(normal, Scattering::Transmission),
+        solar.hemispherical(normal, Scattering::Transmission),
+    );
+    println!("DiffuseGlass normal transmittance: visible {tv:.4}, solar {ts:.4}");
+    assert!((tv - ts).abs() > 1e-3, "the two bands read the same blocks");
 }

@@ -177,7 +177,6 @@ impl AngleBasis {
     /// Projected solid angle of a patch, π (cos²θ₀ − cos²θ₁) / nφ (RADIANCE `io_getohm`).
     pub fn projected_solid_angle_sr(&self, patch: usize) -> f64 {
         let ring = self.ring_of(patch);
-        let cos2 = |deg: f64| (PI / 180.0 * deg).cos().powi(2);
         PI * (cos2(ring.theta_min_deg) - cos2(ring.theta_max_deg)) / ring.n_phis as f64
     }
 
@@ -185,13 +184,17 @@ impl AngleBasis {
     /// (RADIANCE `fo_getvec`: linear in cos²θ, azimuth about the patch centre).
     pub fn direction_in_patch(&self, patch: usize, u: [f64; 2]) -> DVec3 {
         let ring = self.ring_of(patch);
-        let cos2 = |deg: f64| (PI / 180.0 * deg).cos().powi(2);
         let z = ((1.0 - u[0]) * cos2(ring.theta_min_deg) + u[0] * cos2(ring.theta_max_deg)).sqrt();
         let index = (patch - ring.first_patch) as f64;
         let azimuth = 2.0 * PI * (index + u[1] - 0.5) / ring.n_phis as f64;
         let sin_polar = (1.0 - z * z).max(0.0).sqrt();
         DVec3::new(azimuth.cos() * sin_polar, azimuth.sin() * sin_polar, z)
     }
+}
+
+/// cos²θ for θ in degrees.
+fn cos2(theta_deg: f64) -> f64 {
+    (PI / 180.0 * theta_deg).cos().powi(2)
 }
 
 /// The frame a basis is read in: RADIANCE's fo/fi/bo/bi, each its own inverse.
