@@ -272,3 +272,21 @@ pub fn agreement_failures(
     }
     failures
 }
+
+/// Whether python3 can import `pyradiance.bsdf` (RADIANCE's BSDF library); prints SKIPPED
+/// and returns false when not, or panics when `SKYLUX_REQUIRE_RADIANCE` is set.
+pub fn pyradiance_bsdf_or_skip() -> bool {
+    let ok = Command::new("python3")
+        .args(["-c", "import pyradiance.bsdf"])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status()
+        .is_ok_and(|s| s.success());
+    if !ok {
+        if std::env::var_os("SKYLUX_REQUIRE_RADIANCE").is_some() {
+            panic!("python3 cannot import pyradiance.bsdf and SKYLUX_REQUIRE_RADIANCE is set; pip install pyradiance");
+        }
+        println!("SKIPPED: pyradiance.bsdf not importable (pip install pyradiance)");
+    }
+    ok
+}
