@@ -431,3 +431,80 @@ fn synthetic_pictures_match_live_evalglare() {
         assert!((ours.dgp - theirs.get("dgp")).abs() <= 0.01, "{name} DGP");
     }
 }
+
+/// A 4 × 6 × 3 m office with a 3 × 1.7 m window in its north wall (+y), RADIANCE syntax.
+const ROOM: &str = "\
+void plastic wall 0 0 5 0.6 0.6 0.6 0 0\n\
+void plastic floor_mat 0 0 5 0.3 0.3 0.3 0 0\n\
+void glass pane 0 0 3 0.96 0.96 0.96\n\
+wall polygon south 0 0 12 0 0 0 4 0 0 4 0 3 0 0 3\n\
+wall polygon west 0 0 12 0 0 0 0 0 3 0 6 3 0 6 0\n\
+wall polygon east 0 0 12 4 0 0 4 6 0 4 6 3 4 0 3\n\
+floor_mat polygon floor 0 0 12 0 0 0 0 6 0 4 6 0 4 0 0\n\
+wall polygon ceiling 0 0 12 0 0 3 4 0 3 4 6 3 0 6 3\n\
+wall polygon north_low 0 0 12 0 6 0 0 6 0.8 4 6 0.8 4 6 0\n\
+wall polygon north_high 0 0 12 0 6 2.5 0 6 3 4 6 3 4 6 2.5\n\
+wall polygon north_left 0 0 12 0 6 0.8 0 6 2.5 0.5 6 2.5 0.5 6 0.8\n\
+wall polygon north_right 0 0 12 3.5 6 0.8 3.5 6 2.5 4 6 2.5 4 6 0.8\n\
+pane polygon window 0 0 12 0.5 6 0.8 3.5 6 0.8 3.5 6 2.5 0.5 6 2.5\n\
+";
+
+/// The sky and ground glows of a gensky sky.
+const SKY_GLOWS: &str = "\
+skyfunc glow sky_glow 0 0 4 1 1 1 0\n\
+sky_glow source sky 0 0 4 0 0 1 180\n\
+skyfunc glow ground_glow 0 0 4 1 1 1 0\n\
+ground_glow source ground 0 0 4 0 0 -1 180\n\
+";
+
+/// Renders the office with `rpict -vta` from its middle towards the window under the gensky
+/// sky of `gensky_args`; returns the picture's path.
+fn render_office(
+    bin: &Path,
+    lib: &Option<PathBuf>,
+    dir: &Path,
+    name: &str,
+    gensky_args: &[&str],
+) -> PathBuf {
+    let mut gensky = tool(bin, lib, "gensky");
+    gensky.args(gensky_args);
+    let sky = String::from_utf8(check_output(gensky, None)).unwrap();
+    let scene = dir.join(format!("{name}.rad"));
+    std::fs::write(&scene, format!("{sky}\n{SKY_GLOWS}\n{ROOM}")).unwrap();
+    let mut oconv = tool(bin, lib, "oconv");
+    oconv.current_dir(dir).arg(&scene);
+    let octree = dir.join(format!("{name}.oct"));
+    std::fs::write(&octree, check_output(oconv, None)).unwrap();
+    let mut rpict = tool(bin, lib, "rpict");
+    rpict.current_dir(dir).args([
+        "-vta", "-vp", "2", "1.5", "1.2", "-vd", "0", "1", "0", "-vu", "0", "0", "1", "-vh", "180",
+        "-vv", "180", "-x", "240", "-y", "240", "-ab", "1", "-ad", "256", "-as", "0", "-aa",
+        "0.15", "-ps", "2",
+    ]);
+    rpict.arg(&octree);
+    let picture = dir.join(format!("{name}.hdr"));
+    std::fs::write(&picture, check_output(rpict, None)).unwrap();
+    picture
+}
+
+#[test]
+fn rendered_office_matches_live_evalglare() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    // A low sun in the north seen through the window, a sun behind the viewer (out of view),
+    // and an overcast sky.
+    let skies: [(&str, &[&str]); 3] = [
+        ("sun_in_view", &["-ang", "15", "180", "+s"]),
+        ("sun_out_of_view", &["-ang", "40", "0", "+s"]),
+        ("overcast", &["-ang", "40", "0", "-c", "-B", "100"]),
+    ];
+    for (name, gensky_args) in skies {
+        let path = render_office(&bin, &lib, dir.path(), name, gensky_args);
+        let ours = evaluate_file(&path, &GlareOptions::default());
+        let theirs = run_evalglare(&bin, &lib, &path, &[]);
+        compare(name, &ours, &theirs, 240.0, 0.01);
+        assert!((ours.dgp - theirs.get("dgp")).abs() <= 0.01, "{name} DGP");
+    }
+}
