@@ -99,17 +99,28 @@ pub fn check_values(image: &LuminanceImage) -> Result<(), GlareError> {
     Ok(())
 }
 
-/// Checks that the picture looks like its view: a fisheye's pixels outside its circle are
-/// black (else the picture is not a fisheye), and a perspective picture does not have black
-/// corners around a lit middle (evalglare's check: it then is a fisheye with a wrong view).
+/// Checks that the picture looks like its view: its aspect is the view's (as rpict makes
+/// it), a fisheye's pixels without a ray (beyond its circle) are black (else the picture is
+/// not that fisheye), and a perspective picture does not have black corners around a lit
+/// middle (evalglare's check: it then is a fisheye given a wrong view). An angular fisheye's
+/// pixels beyond 90° are not checked: rpict renders what lies behind there.
 pub fn check_projection(image: &LuminanceImage, view: &PreparedView) -> Result<(), GlareError> {
     let (w, h) = (image.width_px as usize, image.height_px as usize);
     let lit = |i: usize| image.luminance_cd_m2[i] >= BLACK_CD_M2;
+    let expected_h = w as f64 * view.aspect();
+    if (expected_h - h as f64).abs() > 1.0 + 0.01 * expected_h {
+        return Err(GlareError::Picture(format!(
+            "the picture is {w} × {h} pixels, but the view `{}` frames {w} × {expected_h:.0}: \
+             this is not a picture of that view; give its real view with --view",
+            view.view.to_radiance_string()
+        )));
+    }
     match view.view.kind {
         ViewType::Angular | ViewType::Hemispherical => {
             let outside: Vec<usize> = (0..w * h)
                 .filter(|&i| {
-                    view.pixel_centre_ray((i % w) as u32, (i / w) as u32, w as u32, h as u32)
+                    let (column, row) = ((i % w) as u32, (i / w) as u32);
+                    view.pixel_centre_ray(column, row, w as u32, h as u32)
                         .is_none()
                 })
                 .collect();
