@@ -27,13 +27,22 @@ pub struct GlareArgs {
     json: bool,
     /// Source threshold (evalglare -b): above 100 in cd/m², else a factor on the task's (or
     /// the view's) mean luminance. Default 2000 cd/m², or 5 with --task.
-    #[arg(short = 'b', long = "threshold")]
+    #[arg(short = 'b', long = "threshold", allow_negative_numbers = true)]
     threshold: Option<f64>,
     /// Search radius in evalglare's measure (-r), rad.
-    #[arg(short = 'r', long = "search-radius", default_value_t = 0.2)]
+    #[arg(
+        short = 'r',
+        long = "search-radius",
+        default_value_t = 0.2,
+        allow_negative_numbers = true
+    )]
     search_radius: f64,
     /// Peak extraction limit (evalglare -Y), cd/m².
-    #[arg(long = "peak-limit", default_value_t = 50_000.0)]
+    #[arg(
+        long = "peak-limit",
+        default_value_t = 50_000.0,
+        allow_negative_numbers = true
+    )]
     peak_limit: f64,
     /// No peak extraction (evalglare -x).
     #[arg(long = "no-peaks")]

@@ -270,6 +270,9 @@ fn corpus_photograph_matches_live_evalglare() {
     }
 }
 
+/// Luminance (cd/m²) seen in a direction.
+type Scene = dyn Fn(DVec3) -> f64;
+
 /// A luminance picture of `view` at `size` × `size` pixels (fewer rows for a perspective
 /// view's aspect), each pixel the luminance `scene` gives its centre's direction, written as
 /// a grey RADIANCE picture. Returns its path.
@@ -377,7 +380,7 @@ fn synthetic_pictures_match_live_evalglare() {
     };
     let dir = tempfile::tempdir().unwrap();
     let fisheye = "-vta -vp 0 0 0 -vd 0 1 0 -vu 0 0 1 -vh 180 -vv 180";
-    let cases: [(&str, &str, &dyn Fn(DVec3) -> f64, &[&str], GlareOptions); 7] = [
+    let cases: [(&str, &str, &Scene, &[&str], GlareOptions); 7] = [
         (
             "sun_in_window",
             fisheye,

@@ -96,7 +96,7 @@ fn matches_radiance_tools() {
     let (w, h) = (picture.width_px as usize, picture.height_px as usize);
     let at =
         |p: &HdrPicture, column: usize, row: usize| p.pixels[row * p.width_px as usize + column];
-    let transforms: [(&str, &[&str], &dyn Fn(usize, usize) -> (usize, usize)); 3] = [
+    let transforms: [(&str, &[&str], &PixelMap<'_>); 3] = [
         // Clockwise: output (column c, row r) shows input (column r, row h − 1 − c).
         ("protate", &[], &|c, r| (r, h - 1 - c)),
         ("pflip", &["-v"], &|c, r| (c, h - 1 - r)),
@@ -125,6 +125,9 @@ fn matches_radiance_tools() {
         }
     }
 }
+
+/// Which input pixel (column, row) an output pixel (column, row) shows.
+type PixelMap<'a> = dyn Fn(usize, usize) -> (usize, usize) + 'a;
 
 /// A header, resolution line and body as bytes.
 fn file(header: &str, resolution: &str, body: &[u8]) -> Vec<u8> {

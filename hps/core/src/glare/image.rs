@@ -2,7 +2,7 @@
 //! read from a RADIANCE `.hdr` or from an OpenEXR as `skylux render` writes it, and checked
 //! (values, and whether the picture looks like the view it claims).
 
-use super::GlareError;
+use super::error::GlareError;
 use crate::engine::render::{luminance_from_radiance, PreparedView, View, ViewType};
 use crate::picture::{exr, rgbe};
 use glam::DVec3;

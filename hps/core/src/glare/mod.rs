@@ -9,6 +9,7 @@
 //! its height).
 
 pub mod detection;
+pub mod error;
 pub mod image;
 pub mod metrics;
 pub mod neighbourhood;
@@ -18,29 +19,12 @@ pub mod position_index;
 pub mod sources;
 
 pub use detection::DetectionSettings;
+pub use error::GlareError;
 pub use image::{load_image, LuminanceImage};
 
-use crate::picture::rgbe::PictureReadError;
 use glam::DVec3;
 use metrics::SourceTerms;
 use pixels::PixelGrid;
-use std::path::PathBuf;
-
-/// Why glare could not be evaluated.
-#[derive(Debug, thiserror::Error)]
-pub enum GlareError {
-    #[error(transparent)]
-    Read(#[from] PictureReadError),
-    /// The file was read but cannot be used as given.
-    #[error("{}: {message}", path.display())]
-    Input { path: PathBuf, message: String },
-    /// The picture's values or projection are wrong.
-    #[error("{0}")]
-    Picture(String),
-    /// A setting is out of range.
-    #[error("{0}")]
-    Setting(String),
-}
 
 /// A task area (evalglare's `-t x y angle`): the threshold becomes a multiple of its mean
 /// luminance.
@@ -53,8 +37,8 @@ pub struct TaskArea {
     pub opening_rad: f64,
 }
 
-/// What to evaluate and how (evalglare's options).
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// What to evaluate and how (evalglare's options; the default is evalglare's).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct GlareOptions {
     /// evalglare's `-b`: above 100 a luminance threshold in cd/m², else a factor on the task's
     /// (or without one the field of view's) mean luminance. None: 2000 cd/m², or 5 × the task
@@ -65,17 +49,6 @@ pub struct GlareOptions {
     /// DGP's low-light correction below 1000 lx (evalglare `-C l+`; off by default since
     /// evalglare 2.x).
     pub low_light_correction: bool,
-}
-
-impl Default for GlareOptions {
-    fn default() -> Self {
-        GlareOptions {
-            threshold: None,
-            task: None,
-            detection: DetectionSettings::default(),
-            low_light_correction: false,
-        }
-    }
 }
 
 /// One glare source.
@@ -124,6 +97,10 @@ pub struct GlareReport {
     pub source_of_pixel: Vec<u32>,
 }
 
+/// Most pixels evaluated: 2^22 (2048 × 2048). A pixel costs about 100 bytes here, so this
+/// fits a 32-bit process; glare pictures are rarely over 1500 pixels a side.
+pub const MAX_PIXELS: u64 = 1 << 22;
+
 /// Sums over the valid pixels of the field of view.
 struct Field {
     ev_lux: f64,
@@ -134,6 +111,13 @@ struct Field {
 /// Evaluates glare on `image`.
 pub fn evaluate(image: &LuminanceImage, options: &GlareOptions) -> Result<GlareReport, GlareError> {
     check_options(options)?;
+    if u64::from(image.width_px) * u64::from(image.height_px) > MAX_PIXELS {
+        return Err(GlareError::Picture(format!(
+            "{} × {} pixels is more than the {MAX_PIXELS} glare evaluation takes; reduce the \
+             picture (e.g. pfilt -x /2 -y /2)",
+            image.width_px, image.height_px
+        )));
+    }
     image::check_values(image)?;
     let view = image
         .view
@@ -239,9 +223,9 @@ fn task_luminance(grid: &PixelGrid, luminance: &[f64], task: TaskArea) -> Result
     }
     let centre = grid.index(task.column_px as usize, h - 1 - task.row_px as usize);
     let (mut sum, mut omega) = (0.0, 0.0);
-    for i in 0..w * h {
+    for (i, l) in luminance.iter().enumerate() {
         if grid.doubled_angle_rad(centre, i) <= task.opening_rad {
-            sum += grid.solid_angle_sr[i] * luminance[i];
+            sum += grid.solid_angle_sr[i] * l;
             omega += grid.solid_angle_sr[i];
         }
     }

@@ -78,7 +78,7 @@ pub fn read_exr_luminance(path: &Path) -> Result<ExrLuminance, super::rgbe::Pict
         .channel_data
         .list
         .iter()
-        .find(|c| c.name.to_string() == "Y")
+        .find(|c| c.name.eq("Y"))
         .ok_or_else(|| {
             fail("no `Y` channel (luminance, cd/m², as skylux render writes it)".into())
         })?;
@@ -87,7 +87,7 @@ pub fn read_exr_luminance(path: &Path) -> Result<ExrLuminance, super::rgbe::Pict
         .attributes
         .other
         .iter()
-        .find(|(name, _)| name.to_string() == "skylux.view")
+        .find(|(name, _)| (*name).eq("skylux.view"))
         .and_then(|(_, value)| match value {
             AttributeValue::Text(t) => Some(t.to_string()),
             _ => None,
