@@ -285,3 +285,47 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(96))]
+
+    /// Evaluation of arbitrary small pictures under arbitrary views and settings: a report or
+    /// an error, never a panic, in bounded time; reports hold finite Ev and DGP in [0, 1].
+    #[test]
+    fn arbitrary_pictures_never_panic(
+        size in 1u32..40,
+        square in any::<bool>(),
+        kind in 0usize..3,
+        (hv, vv) in (1.0f64..360.0, 1.0f64..360.0),
+        values in proptest::collection::vec(prop_oneof![0.0f64..3000.0, 1e4f64..1e8, Just(0.0)], 1600),
+        threshold in prop::option::of(0.5f64..5000.0),
+        radius in 0.01f64..1.0,
+    ) {
+        let kind = ["-vta", "-vth", "-vtv"][kind];
+        let (hv, vv) = if kind == "-vta" { (hv, vv) } else { (hv.min(179.0), vv.min(179.0)) };
+        let view = View::parse(&format!("{kind} -vd 0 1 0 -vu 0 0 1 -vh {hv} -vv {vv}")).unwrap();
+        // Mostly the view's own aspect (as rpict frames it), sometimes a square.
+        let (w, h) = if square {
+            (size, size)
+        } else {
+            view.prepare().unwrap().fit_resolution(size, size)
+        };
+        let image = LuminanceImage {
+            width_px: w,
+            height_px: h,
+            view,
+            luminance_cd_m2: values[..(w * h) as usize].to_vec(),
+        };
+        let options = GlareOptions {
+            threshold,
+            detection: glare::DetectionSettings { search_radius_rad: radius, ..Default::default() },
+            ..GlareOptions::default()
+        };
+        let start = std::time::Instant::now();
+        if let Ok(r) = glare::evaluate(&image, &options) {
+            prop_assert!(r.ev_lux.is_finite() && r.ev_lux >= 0.0);
+            prop_assert!((0.0..=1.0).contains(&r.dgp), "DGP {}", r.dgp);
+        }
+        prop_assert!(start.elapsed().as_secs_f64() < 2.0);
+    }
+}
