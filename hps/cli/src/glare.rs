@@ -54,6 +54,10 @@ pub struct GlareArgs {
     /// rows count from the bottom).
     #[arg(long, num_args = 3, value_names = ["COLUMN", "ROW", "ANGLE"])]
     task: Option<Vec<f64>>,
+    /// Report the luminance statistics of a horizontal band this many rad either side of the
+    /// middle row (evalglare -B).
+    #[arg(short = 'B', long = "band")]
+    band: Option<f64>,
     /// Write a falsecolour PNG of the picture with the glare sources outlined.
     #[arg(long)]
     png: Option<PathBuf>,
@@ -69,6 +73,7 @@ pub fn run(args: &GlareArgs) -> anyhow::Result<()> {
             peak_limit_cd_m2: (!args.no_peaks).then_some(args.peak_limit),
         },
         low_light_correction: args.low_light,
+        band_half_width_rad: args.band,
     };
     let report = glare::evaluate(&image, &options)
         .with_context(|| format!("evaluating glare in {}", args.image.display()))?;
@@ -117,6 +122,20 @@ fn print_text(r: &GlareReport) {
         "mean luminance {:.1} cd/m2, background {:.1} cd/m2, threshold {:.1} cd/m2",
         r.average_luminance_cd_m2, r.background_luminance_cd_m2, r.threshold_cd_m2
     );
+    if let Some(b) = &r.band {
+        println!(
+            "band: {:.6} sr, mean {:.2}, median {:.2}, std {:.2}, p75 {:.2}, p95 {:.2}, min {:.2}, \
+             max {:.2} cd/m2",
+            b.solid_angle_sr,
+            b.mean_luminance_cd_m2,
+            b.median_luminance_cd_m2,
+            b.std_luminance_cd_m2,
+            b.percentile_75_cd_m2,
+            b.percentile_95_cd_m2,
+            b.min_luminance_cd_m2,
+            b.max_luminance_cd_m2
+        );
+    }
     println!("{} glare source(s)", r.sources.len());
     println!("  #  column    row  pixels  L cd/m2  omega sr  P      direction");
     for (k, s) in r.sources.iter().enumerate() {

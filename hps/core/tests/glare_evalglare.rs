@@ -511,3 +511,50 @@ fn rendered_office_matches_live_evalglare() {
         assert!((ours.dgp - theirs.get("dgp")).abs() <= 0.01, "{name} DGP");
     }
 }
+
+/// The golden `band:` line RADIANCE's own test of evalglare expects (the corpus's
+/// test_evalglare.cmake, for `-B 0.4` on the photograph).
+fn golden_band_line() -> Vec<f64> {
+    let path = corpus_dir().join("resources/cmake_tests/test_evalglare.cmake");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let line = text
+        .lines()
+        .find(|l| l.contains("band:band_omega"))
+        .unwrap_or_else(|| panic!("no band line in {}", path.display()));
+    let values = line.rsplit_once(": ").unwrap().1;
+    values
+        .split_whitespace()
+        .map(|t| t.trim_end_matches(['"', ')']).parse().unwrap())
+        .collect()
+}
+
+#[test]
+fn corpus_band_matches_radiance_golden_output() {
+    let golden = golden_band_line();
+    assert_eq!(golden.len(), 8);
+    let options = GlareOptions {
+        threshold: Some(2500.0),
+        band_half_width_rad: Some(0.4),
+        ..GlareOptions::default()
+    };
+    let band = evaluate_file(&corpus_image(), &options)
+        .band
+        .expect("a band");
+    let ours = [
+        band.solid_angle_sr,
+        band.mean_luminance_cd_m2,
+        band.median_luminance_cd_m2,
+        band.std_luminance_cd_m2,
+        band.percentile_75_cd_m2,
+        band.percentile_95_cd_m2,
+        band.min_luminance_cd_m2,
+        band.max_luminance_cd_m2,
+    ];
+    println!("band ours {ours:?}\nband golden {golden:?}");
+    for (k, (a, b)) in ours.iter().zip(&golden).enumerate() {
+        assert!(
+            (a - b).abs() <= 1e-3 * b.abs(),
+            "band value {k}: ours {a}, golden {b}"
+        );
+    }
+}

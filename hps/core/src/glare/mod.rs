@@ -8,6 +8,7 @@
 //! shifted views), and peak grouping searches the picture's full width (evalglare stops at
 //! its height).
 
+pub mod band;
 pub mod detection;
 pub mod error;
 pub mod image;
@@ -49,6 +50,9 @@ pub struct GlareOptions {
     /// DGP's low-light correction below 1000 lx (evalglare `-C l+`; off by default since
     /// evalglare 2.x).
     pub low_light_correction: bool,
+    /// Half width, rad, of a horizontal band whose luminance statistics to report
+    /// (evalglare's `-B`); None for none.
+    pub band_half_width_rad: Option<f64>,
 }
 
 /// One glare source.
@@ -92,6 +96,8 @@ pub struct GlareReport {
     pub threshold_cd_m2: f64,
     pub solid_angle_sr: f64,
     pub sources: Vec<GlareSource>,
+    /// The band's luminance statistics, when asked for.
+    pub band: Option<band::BandStatistics>,
     /// Source number (1 = first of `sources`) of each pixel, 0 for none; rows from the top.
     #[serde(skip)]
     pub source_of_pixel: Vec<u32>,
@@ -142,14 +148,18 @@ pub fn evaluate(image: &LuminanceImage, options: &GlareOptions) -> Result<GlareR
     };
     let found = detection::detect(&grid, &luminance, threshold_cd_m2, &options.detection);
     let (sources, source_of_pixel) = summarise_sources(&grid, &luminance, &found);
-    Ok(report(
+    let mut report = report(
         field,
         task_luminance,
         threshold_cd_m2,
         sources,
         source_of_pixel,
         options,
-    ))
+    );
+    report.band = options
+        .band_half_width_rad
+        .and_then(|half_width| band::band_statistics(&grid, &luminance, half_width));
+    Ok(report)
 }
 
 fn check_options(options: &GlareOptions) -> Result<(), GlareError> {
@@ -174,6 +184,9 @@ fn check_options(options: &GlareOptions) -> Result<(), GlareError> {
     }
     if let Some(task) = options.task {
         positive("the task opening angle", task.opening_rad)?;
+    }
+    if let Some(half_width) = options.band_half_width_rad {
+        positive("the band half width (-B)", half_width)?;
     }
     Ok(())
 }
@@ -347,6 +360,7 @@ fn report(
         threshold_cd_m2,
         solid_angle_sr: field.solid_angle_sr,
         sources,
+        band: None,
         source_of_pixel,
     }
 }
