@@ -9,6 +9,7 @@ mod calibrate;
 mod closure;
 mod dc;
 mod demo;
+mod glare;
 mod hdr;
 mod illuminance;
 mod loop_cmd;
@@ -59,6 +60,9 @@ enum Command {
     Loop(loop_cmd::LoopArgs),
     /// The simulated world: `skylux sim campaign --out DIR [--effect NAME=VALUE]`.
     Sim(sim_cmd::SimArgs),
+    /// Glare indices (Ev, DGP, DGI, UGR, CGI, VCP) and glare sources of a luminance picture,
+    /// as evalglare computes them.
+    Glare(glare::GlareArgs),
     /// Renders an image of a RADIANCE scene from a view: PREFIX.exr, PREFIX.hdr, PREFIX.png.
     Render(render::RenderArgs),
     /// Reads every register and prints it decoded, field by field.
@@ -74,6 +78,7 @@ fn main() -> anyhow::Result<()> {
     match Cli::parse().command {
         Command::Demo { out } => demo::run(&out),
         Command::Dc(args) => dc::run(&args),
+        Command::Glare(args) => glare::run(&args),
         Command::Hdr(args) => hdr::run(&args),
         Command::Illuminance(args) => illuminance::run(&args),
         Command::Bench(args) => bench::run(&args),

@@ -7,6 +7,7 @@ pub mod camera;
 pub mod campaign;
 pub mod engine;
 pub mod fpga;
+pub mod glare;
 pub mod hdr;
 pub mod io;
 pub mod model;

@@ -39,3 +39,63 @@ pub fn write_exr(path: &Path, image: &Picture) -> Result<(), OutputError> {
         .to_file(path)
         .map_err(|e| output_error(path, e))
 }
+
+/// An OpenEXR picture's luminance and view, as [`write_exr`] writes them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExrLuminance {
+    pub width_px: u32,
+    pub height_px: u32,
+    /// The `skylux.view` header attribute (RADIANCE view options), if any.
+    pub view: Option<String>,
+    /// The `Y` channel, cd/m², rows from the top.
+    pub luminance_cd_m2: Vec<f64>,
+}
+
+/// Reads the `Y` channel (luminance, cd/m²) and the `skylux.view` attribute of an OpenEXR
+/// file's first layer.
+pub fn read_exr_luminance(path: &Path) -> Result<ExrLuminance, super::rgbe::PictureReadError> {
+    use exr::prelude::*;
+    let fail = |message: String| super::rgbe::PictureReadError {
+        path: path.into(),
+        message,
+    };
+    let image = read()
+        .no_deep_data()
+        .largest_resolution_level()
+        .all_channels()
+        .first_valid_layer()
+        .all_attributes()
+        .from_file(path)
+        .map_err(|e| fail(format!("not a readable OpenEXR file: {e}")))?;
+    let layer = image.layer_data;
+    let (w, h) = (layer.size.width(), layer.size.height());
+    if (w as u64) * (h as u64) > super::rgbe::MAX_READ_PIXELS {
+        return Err(fail(format!(
+            "{w} × {h} pixels is more than this reader accepts"
+        )));
+    }
+    let y = layer
+        .channel_data
+        .list
+        .iter()
+        .find(|c| c.name.eq("Y"))
+        .ok_or_else(|| {
+            fail("no `Y` channel (luminance, cd/m², as skylux render writes it)".into())
+        })?;
+    let luminance_cd_m2: Vec<f64> = y.sample_data.values_as_f32().map(f64::from).collect();
+    let view = layer
+        .attributes
+        .other
+        .iter()
+        .find(|(name, _)| (*name).eq("skylux.view"))
+        .and_then(|(_, value)| match value {
+            AttributeValue::Text(t) => Some(t.to_string()),
+            _ => None,
+        });
+    Ok(ExrLuminance {
+        width_px: w as u32,
+        height_px: h as u32,
+        view,
+        luminance_cd_m2,
+    })
+}

@@ -137,7 +137,28 @@ pub fn write_falsecolour_png(
     image: &Picture,
     options: &FalsecolourOptions,
 ) -> Result<FalsecolourOutcome, OutputError> {
+    write_falsecolour_png_marked(path, image, options, &[])
+}
+
+/// [`write_falsecolour_png`] with some pixels drawn in a colour of their own: `marks` holds
+/// one entry per pixel (rows from the top), or is empty for none (glare sources' outlines).
+pub fn write_falsecolour_png_marked(
+    path: &Path,
+    image: &Picture,
+    options: &FalsecolourOptions,
+    marks: &[Option<[u8; 3]>],
+) -> Result<FalsecolourOutcome, OutputError> {
     use plotters::prelude::*;
+    if !marks.is_empty() && marks.len() != image.luminance_cd_m2.len() {
+        return Err(output_error(
+            path,
+            format!(
+                "{} marks for {} pixels",
+                marks.len(),
+                image.luminance_cd_m2.len()
+            ),
+        ));
+    }
     let factor = match options.unit {
         LegendUnit::Luminance => 1.0,
         LegendUnit::Lux => PI,
@@ -158,8 +179,10 @@ pub fn write_falsecolour_png(
         root.fill(&WHITE).map_err(|e| draw_error(&e))?;
         for row in 0..h {
             for column in 0..w {
-                let v = values[image.index(column, row)];
-                let [r, g, b] = turbo(scale_position(v, maximum, options.scale));
+                let i = image.index(column, row);
+                let mark = marks.get(i).copied().flatten();
+                let [r, g, b] = mark
+                    .unwrap_or_else(|| turbo(scale_position(values[i], maximum, options.scale)));
                 let colour = RGBColor(r, g, b);
                 for dy in 0..zoom {
                     for dx in 0..zoom {

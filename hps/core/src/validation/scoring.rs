@@ -62,7 +62,8 @@ impl Verdict {
         Self {
             accepted: self.gain > 0.0
                 && self.relative_gain >= MIN_RELATIVE_GAIN
-                && !(self.t < -self.t_critical),
+                // A NaN statistic (no moving reading) is no significant rise.
+                && self.t.partial_cmp(&-self.t_critical) != Some(std::cmp::Ordering::Less),
             confirmation: true,
             ..self
         }
