@@ -64,7 +64,45 @@ pub enum SceneError {
     UnsupportedCommand {
         at: SourceLocation,
         command: String,
-        reason: &'static str,
+        reason: String,
+    },
+
+    #[error("{at}: inline command `!{command}`: {message}")]
+    Command {
+        at: SourceLocation,
+        command: String,
+        message: String,
+    },
+
+    #[error("{at}: inline command `!{command}` includes a file already being read: include cycle {chain}")]
+    IncludeCycle {
+        at: SourceLocation,
+        command: String,
+        chain: String,
+    },
+
+    #[error("{at}: inline command `!{command}`: files include files more than {limit} deep ({chain}); expected a shallower chain")]
+    IncludeDepth {
+        at: SourceLocation,
+        command: String,
+        limit: usize,
+        chain: String,
+    },
+
+    #[error("{at}: inline command `!{command}`: cannot read {}: {source}", path.display())]
+    MissingInclude {
+        at: SourceLocation,
+        command: String,
+        path: PathBuf,
+        #[source]
+        source: std::io::Error,
+    },
+
+    #[error("{at}: the scene expands to more than {limit} primitives here{}; expected a scene Skylux can hold", if command.is_empty() { String::new() } else { format!(" (inline command `!{command}`)") })]
+    TooManyPrimitives {
+        at: SourceLocation,
+        command: String,
+        limit: usize,
     },
 
     #[error("{at}: unsupported primitive type `{type_name}` (identifier `{identifier}`): {reason}; expected one of {}", SUPPORTED_TYPES)]
@@ -159,6 +197,11 @@ impl SceneError {
             SceneError::NotUtf8 { at }
             | SceneError::UnterminatedQuote { at, .. }
             | SceneError::UnsupportedCommand { at, .. }
+            | SceneError::Command { at, .. }
+            | SceneError::IncludeCycle { at, .. }
+            | SceneError::IncludeDepth { at, .. }
+            | SceneError::MissingInclude { at, .. }
+            | SceneError::TooManyPrimitives { at, .. }
             | SceneError::UnsupportedType { at, .. }
             | SceneError::UnexpectedEnd { at, .. }
             | SceneError::BadCount { at, .. }
