@@ -2,9 +2,12 @@
 //! `-W`, `-G` or `-P`: the Perez all-weather sky, through the project's port of gendaylit
 //! ([`crate::sky::perez`]), written as gendaylit writes it. The options it takes besides
 //! those are `-O`, `-g`, `-d`, `-s`/`+s`, `-a`, `-o`, `-m`; the rest (`-L`, `-E`, `-y`,
-//! `-c`, ...) are refused by name.
+//! `-c`, ...) are refused by name. As gendaylit 2.5 (the pyradiance wheel's), the hour is
+//! read as a number: `10:30EDT` is 10 h at the `-m` meridian (gensky reads minutes and zones).
 
-use super::gensky::{parse_sun_input, sun_angles, sun_vector, Site, SunInput};
+use super::gensky::{
+    parse_hour_as_number, parse_sun_input, sun_angles, sun_vector, Site, SunInput,
+};
 use super::number;
 use crate::sky::perez::{
     radiance_day_number, GendaylitUnits, PerezConditions, PerezInput, PerezSky,
@@ -17,13 +20,8 @@ const USAGE: &str = "gendaylit month day hour | -ang altitude azimuth, then -W d
                      [-o lon] [-m meridian]";
 
 pub(super) fn generate(args: &[String], _dir: &Path) -> Result<String, String> {
-    let input = parse_sun_input(args, USAGE)?;
+    let input = parse_sun_input(args, USAGE, parse_hour_as_number)?;
     let mut site = Site::default();
-    if let SunInput::Date { hour, .. } = &input {
-        if let Some(m) = hour.meridian_west_deg {
-            site.meridian_west_deg = m;
-        }
-    }
     let mut perez = None;
     let mut units = GendaylitUnits::VisibleRadiance;
     let mut conditions = PerezConditions::gendaylit_ang(glam::DVec3::Z);

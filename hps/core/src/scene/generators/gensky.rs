@@ -113,8 +113,28 @@ pub(super) enum SunInput {
     Date { month: u32, day: u32, hour: Hour },
 }
 
-/// The first three arguments as gensky and gendaylit read them.
-pub(super) fn parse_sun_input(args: &[String], usage: &str) -> Result<SunInput, String> {
+/// gendaylit 2.5's hour (the pyradiance wheel's): C `atof` of the word, so `10:30EDT` is 10 h
+/// at the `-m` meridian; `+` marks solar time.
+pub(super) fn parse_hour_as_number(text: &str) -> Result<Hour, String> {
+    let body = text.strip_prefix('+').unwrap_or(text);
+    let hours = (1..=body.len())
+        .rev()
+        .filter(|&n| body.is_char_boundary(n))
+        .find_map(|n| body[..n].parse::<f64>().ok().filter(|v| v.is_finite()))
+        .ok_or_else(|| format!("bad time `{text}`; expected a number of hours"))?;
+    Ok(Hour {
+        hours,
+        solar: text.starts_with('+'),
+        meridian_west_deg: None,
+    })
+}
+
+/// The first three arguments as gensky and gendaylit read them; `hour` reads the time.
+pub(super) fn parse_sun_input(
+    args: &[String],
+    usage: &str,
+    hour: fn(&str) -> Result<Hour, String>,
+) -> Result<SunInput, String> {
     if args.len() < 3 {
         return Err(format!("{} argument(s) given; usage: {usage}", args.len()));
     }
@@ -132,7 +152,7 @@ pub(super) fn parse_sun_input(args: &[String], usage: &str) -> Result<SunInput, 
     Ok(SunInput::Date {
         month: month as u32,
         day: day as u32,
-        hour: parse_hour(&args[2])?,
+        hour: hour(&args[2])?,
     })
 }
 
@@ -223,7 +243,7 @@ struct Options {
 }
 
 pub(super) fn generate(args: &[String], _dir: &Path) -> Result<String, String> {
-    let input = parse_sun_input(args, USAGE)?;
+    let input = parse_sun_input(args, USAGE, parse_hour)?;
     let zone = match &input {
         SunInput::Date { hour, .. } => hour.meridian_west_deg,
         SunInput::Angles { .. } => None,
