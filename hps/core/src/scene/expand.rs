@@ -49,6 +49,25 @@ fn directory_of(file: &Path) -> PathBuf {
     }
 }
 
+/// `name` as seen from `dir`, without a leading `./` (so messages name `objects/a.rad`).
+pub(crate) fn resolve(dir: &Path, name: &str) -> PathBuf {
+    let name = Path::new(name);
+    let name = name.strip_prefix(".").unwrap_or(name);
+    if dir == Path::new(".") {
+        name.to_path_buf()
+    } else {
+        dir.join(name)
+    }
+}
+
+/// A regular file's bytes: a device or FIFO (`/dev/zero`, `/dev/stdin`) would never end.
+pub(crate) fn read_regular_file(path: &Path) -> std::io::Result<Vec<u8>> {
+    if !std::fs::metadata(path)?.is_file() {
+        return Err(std::io::Error::other("not a regular file"));
+    }
+    std::fs::read(path)
+}
+
 /// A file's identity for cycle detection: its canonical path when it exists.
 fn identity(file: &Path) -> PathBuf {
     std::fs::canonicalize(file).unwrap_or_else(|_| file.to_path_buf())
@@ -176,7 +195,7 @@ impl<'o> Expander<'o> {
     ) -> Result<Vec<Primitive>, SceneError> {
         let mut out = Vec::new();
         for name in files {
-            let path = dir.join(name);
+            let path = resolve(dir, name);
             out.extend(self.included_file(at, command, &path)?);
         }
         Ok(out)
@@ -214,7 +233,7 @@ impl<'o> Expander<'o> {
                 chain: chain(path),
             });
         }
-        let bytes = std::fs::read(path).map_err(|source| SceneError::MissingInclude {
+        let bytes = read_regular_file(path).map_err(|source| SceneError::MissingInclude {
             at: at.clone(),
             command: command.trim().to_string(),
             path: path.to_path_buf(),

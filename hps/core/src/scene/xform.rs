@@ -281,11 +281,19 @@ pub(crate) fn parse_transform(words: &[String]) -> Result<(Transform, usize), St
     Ok((total, i))
 }
 
+/// `total` followed by `matrix` repeated `count` times (xf.c multiplies in a loop; squaring
+/// gives the same product in log2(count) steps).
 fn apply(total: &mut Transform, (matrix, scale, count): &(Matrix4, f64, usize)) {
-    for _ in 0..*count {
-        total.matrix = total.matrix.then(matrix);
-        total.scale *= scale;
+    let (mut base, mut n, mut power) = (*matrix, *count, Matrix4::IDENTITY);
+    while n > 0 {
+        if n & 1 == 1 {
+            power = power.then(&base);
+        }
+        base = base.then(&base);
+        n >>= 1;
     }
+    total.matrix = total.matrix.then(&power);
+    total.scale *= scale.powi(i32::try_from(*count).unwrap_or(i32::MAX));
 }
 
 fn translation(t: [f64; 3]) -> Matrix4 {
@@ -475,7 +483,7 @@ mod tests {
     #[test]
     fn iterate_repeats_what_comes_after_it() {
         let (t, used) = parse_transform(&words("-t 1 0 0 -i 3 -rz 90 f.rad")).unwrap();
-        assert_eq!(used, 7);
+        assert_eq!(used, 8);
         let p = t.matrix.point([0.0, 0.0, 0.0]);
         // Translated to (1,0,0), then turned three quarter turns: (0,-1,0).
         assert!(

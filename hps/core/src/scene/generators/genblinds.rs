@@ -10,8 +10,9 @@ use std::path::Path;
 const USAGE: &str = "genblinds mat name depth width height nslats angle [-r|+r rcurv]";
 /// Most facets per curved slat (genblinds' array size).
 const MAX_FACETS: usize = 180;
-/// Most slats generated.
+/// Most slats generated, and most polygons (slats times facets).
 const MAX_SLATS: i64 = 100_000;
+const MAX_POLYGONS: usize = 1_000_000;
 /// Largest angle one facet of a curved slat spans, degrees (genblinds' `DELTA`).
 const FACET_DEG: f64 = 3.0;
 
@@ -39,6 +40,12 @@ pub(super) fn generate(args: &[String], _dir: &Path) -> Result<String, String> {
     } else {
         curved(width, depth, angle_deg, curvature)?
     };
+    if facets.len().saturating_mul(slats as usize) > MAX_POLYGONS {
+        return Err(format!(
+            "{slats} slats of {} facets exceed {MAX_POLYGONS} polygons",
+            facets.len()
+        ));
+    }
     let mut out = String::new();
     for n in 1..=slats {
         let lift = height * (n as f64 - 0.5) / slats as f64;

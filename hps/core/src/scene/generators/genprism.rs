@@ -121,7 +121,7 @@ fn read_vertices(args: &[String], dir: &Path) -> Result<(Vec<[f64; 2]>, usize), 
             .collect::<Result<Vec<_>, String>>()?;
         (v, 3 + 2 * n)
     } else {
-        (vertex_file(&dir.join(third))?, 3)
+        (vertex_file(&crate::scene::expand::resolve(dir, third))?, 3)
     };
     if vertices.len() < 3 {
         return Err("not enough vertices (at least 3)".into());
@@ -131,8 +131,9 @@ fn read_vertices(args: &[String], dir: &Path) -> Result<(Vec<[f64; 2]>, usize), 
 
 /// Pairs of numbers up to the first word that is not one (genprism's `fscanf` loop).
 fn vertex_file(path: &Path) -> Result<Vec<[f64; 2]>, String> {
-    let text = std::fs::read_to_string(path)
+    let bytes = crate::scene::expand::read_regular_file(path)
         .map_err(|e| format!("cannot read vertex file {}: {e}", path.display()))?;
+    let text = String::from_utf8_lossy(&bytes);
     let numbers: Vec<f64> = text
         .split_whitespace()
         .map_while(|w| w.parse::<f64>().ok().filter(|v| v.is_finite()))
