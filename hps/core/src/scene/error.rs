@@ -223,3 +223,13 @@ pub(crate) fn line_of_offset(bytes: &[u8], offset: usize) -> usize {
         .filter(|&&b| b == b'\n')
         .count()
 }
+
+/// The text of a file, or an error naming the line of its first invalid byte.
+pub(crate) fn utf8<'b>(file: &Arc<Path>, bytes: &'b [u8]) -> Result<&'b str, SceneError> {
+    std::str::from_utf8(bytes).map_err(|e| SceneError::NotUtf8 {
+        at: SourceLocation {
+            file: file.clone(),
+            line: line_of_offset(bytes, e.valid_up_to()),
+        },
+    })
+}

@@ -9,7 +9,8 @@
 //! file and line, never a hang.
 
 use super::command::{program_name, split_pipeline};
-use super::error::{SceneError, SourceLocation};
+use super::error::{utf8, SceneError, SourceLocation};
+use super::files::{read_regular_file, resolve};
 use super::generators;
 use super::lexer::Lexer;
 use super::parse::{read_item, Item};
@@ -47,25 +48,6 @@ fn directory_of(file: &Path) -> PathBuf {
         Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
         _ => PathBuf::from("."),
     }
-}
-
-/// `name` as seen from `dir`, without a leading `./` (so messages name `objects/a.rad`).
-pub(crate) fn resolve(dir: &Path, name: &str) -> PathBuf {
-    let name = Path::new(name);
-    let name = name.strip_prefix(".").unwrap_or(name);
-    if dir == Path::new(".") {
-        name.to_path_buf()
-    } else {
-        dir.join(name)
-    }
-}
-
-/// A regular file's bytes: a device or FIFO (`/dev/zero`, `/dev/stdin`) would never end.
-pub(crate) fn read_regular_file(path: &Path) -> std::io::Result<Vec<u8>> {
-    if !std::fs::metadata(path)?.is_file() {
-        return Err(std::io::Error::other("not a regular file"));
-    }
-    std::fs::read(path)
 }
 
 /// A file's identity for cycle detection: its canonical path when it exists.
@@ -240,7 +222,7 @@ impl<'o> Expander<'o> {
             source,
         })?;
         let label: Arc<Path> = Arc::from(path);
-        let text = super::utf8(&label, &bytes)?;
+        let text = utf8(&label, &bytes)?;
         self.chain.push((id, Some(at.clone())));
         let result = self.text(label, text, &directory_of(path));
         self.chain.pop();
@@ -258,10 +240,10 @@ impl<'o> Expander<'o> {
         self.count(runs.len().saturating_mul(input.len()), at, command)?;
         let mut out = Vec::with_capacity(runs.len() * input.len());
         for run in runs {
-            let moved = run.apply(input).map_err(|(p, why)| SceneError::Command {
+            let moved = run.apply(input).map_err(|message| SceneError::Command {
                 at: at.clone(),
                 command: command.trim().to_string(),
-                message: format!("{} `{}` ({}): {why}", p.type_name, p.identifier, p.origin),
+                message,
             })?;
             out.extend(moved);
         }
@@ -334,7 +316,7 @@ impl<'o> Expander<'o> {
             });
         }
         let label: Arc<Path> = Arc::from(Path::new(&format!("{at} (output of {command})")));
-        let text = super::utf8(&label, &output.stdout)?.to_string();
+        let text = utf8(&label, &output.stdout)?.to_string();
         self.text(label, &text, dir)
     }
 }

@@ -20,6 +20,7 @@
 mod command;
 mod error;
 mod expand;
+mod files;
 mod generators;
 mod lexer;
 mod material;
@@ -40,7 +41,7 @@ pub use sensors::{load_sensors, parse_sensors, Sensor, SensorsError};
 pub use shape::{Cone, Cylinder, DistantSource, Polygon, Ring, Shape, Sphere, MIN_LENGTH_M};
 pub use xform::MAX_ARRAY_COPIES;
 
-use error::line_of_offset;
+use error::utf8;
 use expand::Expander;
 use parse::RawPrimitive;
 use std::collections::HashMap;
@@ -145,16 +146,6 @@ fn read_file(path: &Path) -> Result<Vec<u8>, SceneError> {
     std::fs::read(path).map_err(|source| SceneError::Io {
         path: path.to_path_buf(),
         source,
-    })
-}
-
-/// The text of a file, or an error naming the line of its first invalid byte.
-pub(crate) fn utf8<'b>(file: &Arc<Path>, bytes: &'b [u8]) -> Result<&'b str, SceneError> {
-    std::str::from_utf8(bytes).map_err(|e| SceneError::NotUtf8 {
-        at: SourceLocation {
-            file: file.clone(),
-            line: line_of_offset(bytes, e.valid_up_to()),
-        },
     })
 }
 

@@ -329,10 +329,14 @@ fn rotation(axis: &str, degrees: f64) -> Matrix4 {
 impl Xform {
     /// The primitives as this run writes them; an error names the primitive whose arguments
     /// do not fit its type (xform's "bad TYPE").
-    pub fn apply(&self, input: &[Primitive]) -> Result<Vec<Primitive>, (Primitive, String)> {
+    pub fn apply(&self, input: &[Primitive]) -> Result<Vec<Primitive>, String> {
         input
             .iter()
-            .map(|p| self.apply_one(p).map_err(|why| (p.clone(), why)))
+            .map(|p| {
+                self.apply_one(p).map_err(|why| {
+                    format!("{} `{}` ({}): {why}", p.type_name, p.identifier, p.origin)
+                })
+            })
             .collect()
     }
 
@@ -365,7 +369,7 @@ impl Xform {
                 point_at(r, 0, &t.matrix);
                 r[3] *= sca;
             }
-            "polygon" if plain && r.len() % 3 == 0 => {
+            "polygon" if plain && r.len().is_multiple_of(3) => {
                 let mut points: Vec<[f64; 3]> = r
                     .chunks_exact(3)
                     .map(|c| t.matrix.point([c[0], c[1], c[2]]))

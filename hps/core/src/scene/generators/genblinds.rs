@@ -3,7 +3,8 @@
 //! deep along x and `width` wide along y, tilted by `angle` degrees, flat or curved (radius
 //! `rcurv`, facets of at most 3°).
 
-use super::{integer, number, polygon};
+use super::args::{integer, number};
+use super::text::polygon;
 use std::f64::consts::PI;
 use std::path::Path;
 

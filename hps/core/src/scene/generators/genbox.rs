@@ -4,7 +4,8 @@
 //! segmented rounding (`-r` with `-n`, `-i` or `-s`, written as a mesh through objutil) and
 //! `.OBJ` output (`-o`) are refused.
 
-use super::{number, polygon, reals_primitive, require};
+use super::args::{number, require};
+use super::text::{polygon, reals_primitive};
 use std::path::Path;
 
 const USAGE: &str = "genbox material name xsize ysize zsize [-i] [-b bevel | -r round]";
@@ -67,7 +68,7 @@ pub(super) fn generate(args: &[String], _dir: &Path) -> Result<String, String> {
                 i += 1;
             }
             "-n" => {
-                segments = super::integer(args, i + 1, "-n segments")?;
+                segments = super::args::integer(args, i + 1, "-n segments")?;
                 i += 1;
             }
             "-s" => {}

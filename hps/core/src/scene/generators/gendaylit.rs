@@ -5,10 +5,10 @@
 //! `-c`, ...) are refused by name. As gendaylit 2.5 (the pyradiance wheel's), the hour is
 //! read as a number: `10:30EDT` is 10 h at the `-m` meridian (gensky reads minutes and zones).
 
+use super::args::number;
 use super::gensky::{
     parse_hour_as_number, parse_sun_input, sun_angles, sun_vector, Site, SunInput,
 };
-use super::number;
 use crate::sky::perez::{
     radiance_day_number, GendaylitUnits, PerezConditions, PerezInput, PerezSky,
     MAX_SUN_ALTITUDE_DEG,

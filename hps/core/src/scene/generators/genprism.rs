@@ -3,7 +3,8 @@
 //! with rounded edges (cylinders, spheres) for `-r`. Vertices from a file are read relative
 //! to the command's directory; standard input (`-`) is refused.
 
-use super::{number, polygon, reals_primitive};
+use super::args::number;
+use super::text::{polygon, reals_primitive};
 use std::path::Path;
 
 const USAGE: &str =
@@ -121,7 +122,7 @@ fn read_vertices(args: &[String], dir: &Path) -> Result<(Vec<[f64; 2]>, usize), 
             .collect::<Result<Vec<_>, String>>()?;
         (v, 3 + 2 * n)
     } else {
-        (vertex_file(&crate::scene::expand::resolve(dir, third))?, 3)
+        (vertex_file(&crate::scene::files::resolve(dir, third))?, 3)
     };
     if vertices.len() < 3 {
         return Err("not enough vertices (at least 3)".into());
@@ -131,7 +132,7 @@ fn read_vertices(args: &[String], dir: &Path) -> Result<(Vec<[f64; 2]>, usize), 
 
 /// Pairs of numbers up to the first word that is not one (genprism's `fscanf` loop).
 fn vertex_file(path: &Path) -> Result<Vec<[f64; 2]>, String> {
-    let bytes = crate::scene::expand::read_regular_file(path)
+    let bytes = crate::scene::files::read_regular_file(path)
         .map_err(|e| format!("cannot read vertex file {}: {e}", path.display()))?;
     let text = String::from_utf8_lossy(&bytes);
     let numbers: Vec<f64> = text

@@ -5,7 +5,7 @@
 //! refused.
 
 use super::calc;
-use super::reals_primitive;
+use super::text::reals_primitive;
 use std::path::Path;
 
 const USAGE: &str = "genrev material name z(t) r(t) nseg";

@@ -5,7 +5,7 @@
 //! comes from RADIANCE's sun.c, ported in [`crate::sky::perez`]. `-y` (Michalsky's
 //! algorithm for a given year) is refused.
 
-use super::number;
+use super::args::number;
 use crate::sky::perez::{c_exp, radiance_sun_at_solar_time, radiance_sun_position};
 use glam::DVec3;
 use std::f64::consts::PI;
@@ -144,8 +144,8 @@ pub(super) fn parse_sun_input(
             azimuth_deg: number(args, 2, "azimuth")?,
         });
     }
-    let month = super::integer(args, 0, "month")?;
-    let day = super::integer(args, 1, "day")?;
+    let month = super::args::integer(args, 0, "month")?;
+    let day = super::args::integer(args, 1, "day")?;
     if !(1..=12).contains(&month) || !(1..=31).contains(&day) {
         return Err(format!("bad date {month}/{day}"));
     }
