@@ -4,6 +4,7 @@
 //! whether the engine's subset can load them (or the error that stops it).
 
 use serde_json::json;
+use skylux_hps::engine::World;
 use skylux_hps::scene::{self, LoadOptions, Primitive};
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -66,15 +67,20 @@ fn run_check(args: &CheckArgs) -> anyhow::Result<()> {
         bounds: bounds(&primitives),
         missing_files: missing_files(&primitives),
         unused_modifiers: unused_modifiers(&primitives),
-        engine: scene::load_files_with(&args.files, &options)
-            .map(|_| ())
-            .map_err(|e| e.to_string()),
+        engine: engine_loads(&args.files, &options),
     };
     if args.json {
         println!("{}", serde_json::to_string_pretty(&to_json(&report))?);
     } else {
         print_text(&report);
     }
+    Ok(())
+}
+
+/// Whether the scene loads into the engine: the subset's reader, then the engine's world.
+fn engine_loads(files: &[PathBuf], options: &LoadOptions) -> Result<(), String> {
+    let scene = scene::load_files_with(files, options).map_err(|e| e.to_string())?;
+    World::new(&scene).map_err(|e| e.to_string())?;
     Ok(())
 }
 
