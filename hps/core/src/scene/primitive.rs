@@ -2,7 +2,6 @@
 //! and transform before the subset Skylux traces is built from it.
 
 use super::error::SourceLocation;
-use std::fmt::Write as _;
 
 /// One primitive, `modifier type identifier` and its three argument lists (reference manual
 /// §2.1). `alias` keeps the aliased name as its one string.
@@ -28,32 +27,5 @@ impl Primitive {
     /// Surfaces cannot modify other primitives; modifiers can (RADIANCE `ismodifier`).
     pub fn is_surface(&self) -> bool {
         SURFACE_TYPES.contains(&self.type_name.as_str())
-    }
-
-    /// The primitive as RADIANCE scene text, with reals written exactly (shortest round trip).
-    pub fn to_radiance(&self) -> String {
-        let mut out = format!("{} {} {}\n", self.modifier, self.type_name, self.identifier);
-        if self.type_name == "alias" {
-            let _ = writeln!(out, "\t{}", self.strings.first().map_or("", String::as_str));
-            return out;
-        }
-        let _ = write!(out, "{}", self.strings.len());
-        for s in &self.strings {
-            if s.chars().any(char::is_whitespace) {
-                let _ = write!(out, " \"{s}\"");
-            } else {
-                let _ = write!(out, " {s}");
-            }
-        }
-        let _ = write!(out, "\n{}", self.integers.len());
-        for i in &self.integers {
-            let _ = write!(out, " {i}");
-        }
-        let _ = write!(out, "\n{}", self.reals.len());
-        for r in &self.reals {
-            let _ = write!(out, " {r}");
-        }
-        out.push('\n');
-        out
     }
 }
