@@ -12,6 +12,11 @@ pub struct DcArgs {
     /// The room (RADIANCE scene files, without sky).
     #[arg(long = "scene", required = true)]
     pub scenes: Vec<PathBuf>,
+    /// Run inline commands Skylux does not implement (`!cmd` lines other than xform and the
+    /// gen* generators) through /bin/sh, as oconv would. A scene file can then run any
+    /// program with your rights: use only on files you trust.
+    #[arg(long)]
+    pub allow_commands: bool,
     #[arg(long)]
     pub sensors: PathBuf,
     /// Reinhart multiplication factor (1: Tregenza 145 patches, 4: 2305).
@@ -31,7 +36,12 @@ pub struct DcArgs {
 
 pub fn run(args: &DcArgs) -> anyhow::Result<()> {
     anyhow::ensure!((1..=8).contains(&args.mf), "--mf must be between 1 and 8");
-    let scene = scene::load_files(&args.scenes)?;
+    let scene = scene::load_files_with(
+        &args.scenes,
+        &scene::LoadOptions {
+            allow_commands: args.allow_commands,
+        },
+    )?;
     let sensors = scene::load_sensors(&args.sensors)?;
     let world = World::new(&scene)?;
     anyhow::ensure!(

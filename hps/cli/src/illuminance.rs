@@ -16,6 +16,11 @@ pub struct IlluminanceArgs {
     /// RADIANCE scene file; repeat for several (room, then sky), read in order as oconv would.
     #[arg(long = "scene", required = true)]
     scenes: Vec<PathBuf>,
+    /// Run inline commands Skylux does not implement (`!cmd` lines other than xform and the
+    /// gen* generators) through /bin/sh, as oconv would. A scene file can then run any
+    /// program with your rights: use only on files you trust.
+    #[arg(long)]
+    allow_commands: bool,
     /// Sensor points, RADIANCE .pts (`x y z dx dy dz` per line).
     #[arg(long)]
     sensors: PathBuf,
@@ -31,7 +36,12 @@ pub struct IlluminanceArgs {
 }
 
 pub fn run(args: &IlluminanceArgs) -> anyhow::Result<()> {
-    let scene = scene::load_files(&args.scenes)?;
+    let scene = scene::load_files_with(
+        &args.scenes,
+        &scene::LoadOptions {
+            allow_commands: args.allow_commands,
+        },
+    )?;
     let sensors = scene::load_sensors(&args.sensors)?;
     let world = World::new(&scene)?;
     let settings = Settings {

@@ -15,6 +15,7 @@ mod illuminance;
 mod loop_cmd;
 mod regs;
 mod render;
+mod scene_check;
 mod sim_cmd;
 mod solpos;
 mod sun_cmd;
@@ -65,6 +66,9 @@ enum Command {
     Glare(glare::GlareArgs),
     /// Renders an image of a RADIANCE scene from a view: PREFIX.exr, PREFIX.hdr, PREFIX.png.
     Render(render::RenderArgs),
+    /// Scene files: `skylux scene check FILE... [--json]` loads them as the engine would and
+    /// reports counts, bounds, units, missing files and unused modifiers.
+    Scene(scene_check::SceneArgs),
     /// Reads every register and prints it decoded, field by field.
     Regs(regs::RegsArgs),
     /// Prints the sun's zenith and azimuth (NREL SPA) for one time and place, as CSV.
@@ -88,6 +92,7 @@ fn main() -> anyhow::Result<()> {
         Command::Sim(args) => sim_cmd::run(&args),
         Command::Regs(args) => regs::run(&args),
         Command::Render(args) => render::run(&args),
+        Command::Scene(args) => scene_check::run(&args),
         Command::Solpos(args) => solpos::run(&args),
         Command::Sun(args) => sun_cmd::run(&args),
     }

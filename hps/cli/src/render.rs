@@ -22,6 +22,11 @@ pub struct RenderArgs {
     /// RADIANCE scene file; repeat for several (room, then sky), read in order as oconv would.
     #[arg(long = "scene", required = true)]
     scenes: Vec<PathBuf>,
+    /// Run inline commands Skylux does not implement (`!cmd` lines other than xform and the
+    /// gen* generators) through /bin/sh, as oconv would. A scene file can then run any
+    /// program with your rights: use only on files you trust.
+    #[arg(long)]
+    allow_commands: bool,
     /// View options, rpict style, e.g. "-vtv -vp 1.4 5 1.2 -vd 0 -1 0 -vh 60 -vv 45".
     #[arg(long, allow_hyphen_values = true)]
     view: Option<String>,
@@ -92,7 +97,12 @@ pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
             anyhow::bail!("--scale {s}: the scale maximum must be > 0");
         }
     }
-    let scene = scene::load_files(&args.scenes)?;
+    let scene = scene::load_files_with(
+        &args.scenes,
+        &scene::LoadOptions {
+            allow_commands: args.allow_commands,
+        },
+    )?;
     let world = World::new(&scene)?;
 
     let bar = indicatif::ProgressBar::new(u64::from(height_px));

@@ -163,8 +163,64 @@ fn primitive() -> impl Strategy<Value = String> {
         })
 }
 
+/// Words of inline command lines: programs, their options, numbers and shell syntax.
+fn command_word() -> impl Strategy<Value = String> {
+    prop_oneof![
+        3 => prop::sample::select(vec![
+            "xform", "genbox", "genblinds", "genprism", "genrev", "gensky", "gendaylit", "cat",
+            "-e", "-n", "-m", "-a", "-i", "-t", "-rx", "-ry", "-rz", "-s", "-mx", "-my", "-mz",
+            "-I", "-c", "-f", "-b", "-r", "+r", "-l", "-ang", "+s", "-u", "-W", "-G", "-P",
+            "-O", "-g", "-d", "-o", "-y", "-B", "-R", "|", "\\\n", "'t'", "'1-t'", "\"a b\"",
+            "'", "\"", ">", ";", "$X", "#", "m", "b", "10:30EDT", "+12", "sin(PI*t)", "-",
+            "fuzz.rad", "-", "999999", "100000",
+        ])
+        .prop_map(str::to_string),
+        3 => (-5i32..40).prop_map(|n| n.to_string()),
+        1 => (-1e3f64..1e3).prop_map(|v| v.to_string()),
+    ]
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn random_command_lines_never_panic_or_hang(
+        lines in prop::collection::vec(prop::collection::vec(command_word(), 0..14), 1..4),
+    ) {
+        let mut text = String::from("void plastic m 0 0 5 .5 .5 .5 0 0\n");
+        for words in &lines {
+            text.push('!');
+            text.push_str(&words.join(" "));
+            text.push('\n');
+        }
+        let start = std::time::Instant::now();
+        check(text.as_bytes())?;
+        prop_assert!(start.elapsed().as_secs() < 20, "{:?} for {}", start.elapsed(), text);
+    }
+
+    #[test]
+    fn generator_commands_with_random_numbers_never_panic(
+        program in prop::sample::select(vec![
+            "genbox m b", "genblinds m b", "genprism m p", "genrev m r t t", "gensky",
+            "gendaylit", "xform -t", "xform -a",
+        ]),
+        numbers in prop::collection::vec(
+            prop_oneof![
+                (-100i32..100).prop_map(|n| n.to_string()),
+                (-1e6f64..1e6).prop_map(|v| v.to_string()),
+                prop::sample::select(vec!["0", "1e308", "-0", "nan", "inf", "4"])
+                    .prop_map(str::to_string),
+            ],
+            0..12,
+        ),
+        tail in prop::sample::select(vec!["", " -W 500 100", " -r 0.1", " -i", " -c", " | xform -rz 9"]),
+    ) {
+        let text = format!(
+            "void plastic m 0 0 5 .5 .5 .5 0 0\n!{program} {}{tail}\n",
+            numbers.join(" ")
+        );
+        check(text.as_bytes())?;
+    }
 
     #[test]
     fn random_bytes_never_panic(bytes in prop::collection::vec(any::<u8>(), 0..2048)) {

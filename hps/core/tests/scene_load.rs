@@ -560,12 +560,10 @@ box_mat polygon part.2
     assert_eq!(scene.surfaces().len(), 2);
     assert_eq!(scene.surfaces()[1].origin.line, 12);
 
+    // The command is expanded now (issue 19); the file it names is not there.
     let with_command = format!("{obj}\n!xform -rz 90 -t 1 0 0 part.rad\n");
     let err = load_generated(&with_command).unwrap_err();
-    assert!(
-        matches!(err, SceneError::UnsupportedCommand { .. }),
-        "{err}"
-    );
+    assert!(matches!(err, SceneError::MissingInclude { .. }), "{err}");
     let text = err.to_string();
     assert!(text.starts_with("generated.rad:21:"), "{text}");
     assert!(text.contains("!xform -rz 90 -t 1 0 0 part.rad"), "{text}");
@@ -607,12 +605,16 @@ fn commands_and_unsupported_types_are_errors_with_file_and_line() {
     assert_error(
         &format!("{MAT}\n!xform -rz 90 box.rad\n"),
         4,
-        &["`!xform -rz 90 box.rad`", "`xform` is not supported"],
+        &["`!xform -rz 90 box.rad`", "cannot read box.rad"],
     );
     assert_error(
-        &format!("{MAT}!genbox m b 1 1 1\n"),
+        &format!("{MAT}!genworm m w 0 0 t 0.1 8\n"),
         3,
-        &["`!genbox m b 1 1 1`", "does not run commands"],
+        &[
+            "`!genworm m w 0 0 t 0.1 8`",
+            "`genworm` is not a command",
+            "--allow-commands",
+        ],
     );
     assert_error(
         &format!("{MAT}m bubble b 0 0 4 0 0 0 1\n"),

@@ -64,7 +64,45 @@ pub enum SceneError {
     UnsupportedCommand {
         at: SourceLocation,
         command: String,
-        reason: &'static str,
+        reason: String,
+    },
+
+    #[error("{at}: inline command `!{command}`: {message}")]
+    Command {
+        at: SourceLocation,
+        command: String,
+        message: String,
+    },
+
+    #[error("{at}: inline command `!{command}` includes a file already being read: include cycle {chain}")]
+    IncludeCycle {
+        at: SourceLocation,
+        command: String,
+        chain: String,
+    },
+
+    #[error("{at}: inline command `!{command}`: files include files more than {limit} deep ({chain}); expected a shallower chain")]
+    IncludeDepth {
+        at: SourceLocation,
+        command: String,
+        limit: usize,
+        chain: String,
+    },
+
+    #[error("{at}: inline command `!{command}`: cannot read {}: {source}", path.display())]
+    MissingInclude {
+        at: SourceLocation,
+        command: String,
+        path: PathBuf,
+        #[source]
+        source: std::io::Error,
+    },
+
+    #[error("{at}: the scene expands to more than {limit} primitives here{}; expected a scene Skylux can hold", if command.is_empty() { String::new() } else { format!(" (inline command `!{command}`)") })]
+    TooManyPrimitives {
+        at: SourceLocation,
+        command: String,
+        limit: usize,
     },
 
     #[error("{at}: unsupported primitive type `{type_name}` (identifier `{identifier}`): {reason}; expected one of {}", SUPPORTED_TYPES)]
@@ -159,6 +197,11 @@ impl SceneError {
             SceneError::NotUtf8 { at }
             | SceneError::UnterminatedQuote { at, .. }
             | SceneError::UnsupportedCommand { at, .. }
+            | SceneError::Command { at, .. }
+            | SceneError::IncludeCycle { at, .. }
+            | SceneError::IncludeDepth { at, .. }
+            | SceneError::MissingInclude { at, .. }
+            | SceneError::TooManyPrimitives { at, .. }
             | SceneError::UnsupportedType { at, .. }
             | SceneError::UnexpectedEnd { at, .. }
             | SceneError::BadCount { at, .. }
@@ -179,4 +222,14 @@ pub(crate) fn line_of_offset(bytes: &[u8], offset: usize) -> usize {
         .iter()
         .filter(|&&b| b == b'\n')
         .count()
+}
+
+/// The text of a file, or an error naming the line of its first invalid byte.
+pub(crate) fn utf8<'b>(file: &Arc<Path>, bytes: &'b [u8]) -> Result<&'b str, SceneError> {
+    std::str::from_utf8(bytes).map_err(|e| SceneError::NotUtf8 {
+        at: SourceLocation {
+            file: file.clone(),
+            line: line_of_offset(bytes, e.valid_up_to()),
+        },
+    })
 }

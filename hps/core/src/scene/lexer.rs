@@ -129,12 +129,28 @@ impl<'a> Lexer<'a> {
         }
     }
 
-    /// The rest of the current line (after the last word read), consumed; used to quote a
-    /// `!command` in full in its error message.
-    pub fn rest_of_line(&mut self) -> &'a str {
+    /// The rest of a `!command` line after the last word read, consumed. A line ending in a
+    /// backslash continues on the next (RADIANCE's `fgetline` keeps both for the shell, which
+    /// joins them); the lines it spans are counted.
+    pub fn command_tail(&mut self) -> &'a str {
+        let bytes = self.text.as_bytes();
         let start = self.pos;
-        self.skip_to_end_of_line();
-        self.text[start..self.pos].trim_end()
+        while let Some(&b) = bytes.get(self.pos) {
+            if b == b'\n' {
+                let mut end = self.pos;
+                if end > 0 && bytes[end - 1] == b'\r' {
+                    end -= 1;
+                }
+                if end > 0 && bytes[end - 1] == b'\\' {
+                    self.line += 1;
+                    self.pos += 1;
+                    continue;
+                }
+                break;
+            }
+            self.pos += 1;
+        }
+        &self.text[start..self.pos]
     }
 
     fn skip_to_end_of_line(&mut self) {
@@ -199,10 +215,13 @@ mod tests {
     }
 
     #[test]
-    fn rest_of_line_returns_the_command_tail() {
-        let mut lexer = Lexer::new(Arc::from(Path::new("c.rad")), "!xform -rz 90 box.rad\nnext");
+    fn command_tail_joins_continued_lines() {
+        let mut lexer = Lexer::new(
+            Arc::from(Path::new("c.rad")),
+            "!xform -rz 90 \\\n  box.rad\nnext",
+        );
         assert_eq!(lexer.next_token().unwrap().unwrap().text, "!xform");
-        assert_eq!(lexer.rest_of_line(), " -rz 90 box.rad");
-        assert_eq!(lexer.next_token().unwrap().unwrap().line, 2);
+        assert_eq!(lexer.command_tail(), " -rz 90 \\\n  box.rad");
+        assert_eq!(lexer.next_token().unwrap().unwrap().line, 3);
     }
 }

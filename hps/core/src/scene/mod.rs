@@ -1,8 +1,10 @@
 //! The room and its sky, read from RADIANCE scene files, and the virtual sensors from `.pts`.
 //!
 //! The subset read is listed in shared/spec/campaign.md ("Scene subset") and in
-//! [`SUPPORTED_TYPES`]: anything outside it, including `!command` lines and `xform`, is
-//! an error naming the file and line, never silently dropped. Geometry is in metres in the
+//! [`SUPPORTED_TYPES`]: anything outside it is an error naming the file and line, never
+//! silently dropped. Inline commands (`!xform`, `!genbox`, `!gensky`, ...) are expanded
+//! natively (`expand.rs`); others run only with [`LoadOptions::allow_commands`]. See
+//! docs/radiance-compatibility.md. Geometry is in metres in the
 //! campaign world frame (+x east, +y north, +z up), in `f64` (`glam::DVec3`) so the
 //! Monte-Carlo engine can trace on it directly.
 //!
@@ -15,24 +17,33 @@
 //! # Ok::<(), skylux_hps::scene::SceneError>(())
 //! ```
 
+mod command;
 mod error;
+mod expand;
+mod files;
+mod generators;
 mod lexer;
 mod material;
 mod parse;
+mod primitive;
 mod sensors;
 mod shape;
+mod xform;
 
 pub use error::{ArgumentList, SceneError, SourceLocation, SUPPORTED_TYPES};
+pub use expand::{LoadOptions, MAX_INCLUDE_DEPTH, MAX_PRIMITIVES};
 pub use material::{
     Brightfunc, Glass, Glow, Light, Metal, Mirror, ModifierId, ModifierKind, ModifierRef, Plastic,
     Trans, GLASS_DEFAULT_REFRACTIVE_INDEX,
 };
+pub use primitive::Primitive;
 pub use sensors::{load_sensors, parse_sensors, Sensor, SensorsError};
 pub use shape::{Cone, Cylinder, DistantSource, Polygon, Ring, Shape, Sphere, MIN_LENGTH_M};
+pub use xform::MAX_ARRAY_COPIES;
 
-use error::line_of_offset;
-use lexer::Lexer;
-use parse::read_primitive;
+use error::utf8;
+use expand::Expander;
+use parse::RawPrimitive;
 use std::collections::HashMap;
 use std::path::Path;
 use std::sync::Arc;
@@ -79,11 +90,63 @@ pub fn load(path: impl AsRef<Path>) -> Result<Scene, SceneError> {
 /// Loads scene files in order into one scene, as `oconv room.rad sky.rad` would: modifiers
 /// defined in an earlier file can be used in a later one.
 pub fn load_files<P: AsRef<Path>>(paths: &[P]) -> Result<Scene, SceneError> {
+    load_files_with(paths, &LoadOptions::default())
+}
+
+/// [`load_files`] with options (running other commands through the shell).
+pub fn load_files_with<P: AsRef<Path>>(
+    paths: &[P],
+    options: &LoadOptions,
+) -> Result<Scene, SceneError> {
     let mut scene = Scene::new();
     for path in paths {
-        scene.add_file(path)?;
+        scene.add_file_with(path, options)?;
     }
     Ok(scene)
+}
+
+/// The primitives of scene files after every inline command is expanded, of any RADIANCE
+/// type, in order: what `xform -e` would write for each file, before Skylux interprets them.
+pub fn expand_files<P: AsRef<Path>>(
+    paths: &[P],
+    options: &LoadOptions,
+) -> Result<Vec<Primitive>, SceneError> {
+    let mut out = Vec::new();
+    for path in paths {
+        let path = path.as_ref();
+        let bytes = read_file(path)?;
+        let label: Arc<Path> = Arc::from(path);
+        let text = utf8(&label, &bytes)?;
+        out.extend(Expander::new(options).top_text(label.clone(), text)?);
+    }
+    Ok(out)
+}
+
+/// Primitives of RADIANCE scene text without commands (a program's output), of any type.
+pub fn parse_primitives(label: impl AsRef<Path>, text: &str) -> Result<Vec<Primitive>, SceneError> {
+    let label: Arc<Path> = Arc::from(label.as_ref());
+    let mut lexer = lexer::Lexer::new(label, text);
+    let mut out = Vec::new();
+    while let Some(item) = parse::read_item(&mut lexer)? {
+        match item {
+            parse::Item::Primitive(p) => out.push(p),
+            parse::Item::Command { line, text } => {
+                return Err(SceneError::UnsupportedCommand {
+                    at: lexer.at(line),
+                    command: format!("!{text}"),
+                    reason: "commands are not run here".into(),
+                })
+            }
+        }
+    }
+    Ok(out)
+}
+
+fn read_file(path: &Path) -> Result<Vec<u8>, SceneError> {
+    std::fs::read(path).map_err(|source| SceneError::Io {
+        path: path.to_path_buf(),
+        source,
+    })
 }
 
 /// Reads a scene from bytes in memory; `label` names it in errors and origins.
@@ -101,21 +164,37 @@ impl Scene {
 
     /// Appends the primitives of a scene file. On error the scene is left as it was.
     pub fn add_file(&mut self, path: impl AsRef<Path>) -> Result<(), SceneError> {
-        let path = path.as_ref();
-        let bytes = std::fs::read(path).map_err(|source| SceneError::Io {
-            path: path.to_path_buf(),
-            source,
-        })?;
-        self.add_bytes(path, &bytes)
+        self.add_file_with(path, &LoadOptions::default())
     }
 
-    /// Appends the primitives of scene text in memory; `label` names it in errors and origins.
-    /// On error the scene is left as it was.
+    /// [`Scene::add_file`] with options.
+    pub fn add_file_with(
+        &mut self,
+        path: impl AsRef<Path>,
+        options: &LoadOptions,
+    ) -> Result<(), SceneError> {
+        let path = path.as_ref();
+        let bytes = read_file(path)?;
+        self.add_bytes_with(path, &bytes, options)
+    }
+
+    /// Appends the primitives of scene text in memory; `label` names it in errors and origins,
+    /// and its directory is where its commands run. On error the scene is left as it was.
     pub fn add_bytes(&mut self, label: impl AsRef<Path>, bytes: &[u8]) -> Result<(), SceneError> {
+        self.add_bytes_with(label, bytes, &LoadOptions::default())
+    }
+
+    /// [`Scene::add_bytes`] with options.
+    pub fn add_bytes_with(
+        &mut self,
+        label: impl AsRef<Path>,
+        bytes: &[u8],
+        options: &LoadOptions,
+    ) -> Result<(), SceneError> {
         let modifier_count = self.modifiers.len();
         let surface_count = self.surfaces.len();
         let mut replaced: Vec<(String, Option<ModifierId>)> = Vec::new();
-        let result = self.read(Arc::from(label.as_ref()), bytes, &mut replaced);
+        let result = self.read(Arc::from(label.as_ref()), bytes, options, &mut replaced);
         if result.is_err() {
             self.modifiers.truncate(modifier_count);
             self.surfaces.truncate(surface_count);
@@ -171,16 +250,13 @@ impl Scene {
         &mut self,
         file: Arc<Path>,
         bytes: &[u8],
+        options: &LoadOptions,
         replaced: &mut Vec<(String, Option<ModifierId>)>,
     ) -> Result<(), SceneError> {
-        let text = std::str::from_utf8(bytes).map_err(|e| SceneError::NotUtf8 {
-            at: SourceLocation {
-                file: file.clone(),
-                line: line_of_offset(bytes, e.valid_up_to()),
-            },
-        })?;
-        let mut lexer = Lexer::new(file, text);
-        while let Some(raw) = read_primitive(&mut lexer)? {
+        let text = utf8(&file, bytes)?;
+        let primitives = Expander::new(options).top_text(file, text)?;
+        for primitive in &primitives {
+            let raw = RawPrimitive::from_primitive(primitive)?;
             let modifier = self.modifier_named(raw.modifier).ok_or_else(|| {
                 let hint = if self.surfaces.iter().any(|s| s.name == raw.modifier) {
                     format!(

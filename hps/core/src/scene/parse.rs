@@ -4,14 +4,15 @@
 //! RADIANCE reference manual (ray.html), §2.1 "Scene Description": a primitive is
 //! `modifier type identifier`, then a string argument count and the strings, an integer
 //! argument count and the integers, a real argument count and the reals. A line starting with
-//! `!` is a shell command whose output RADIANCE would read; Skylux does not run commands.
+//! `!` is a command whose output RADIANCE reads in its place (`expand.rs` runs it).
 
 use super::error::{ArgumentList, SceneError, SourceLocation};
 use super::lexer::{Lexer, Token};
+use super::primitive::Primitive;
 
 /// Every other primitive type RADIANCE 5 knows, so a message can say whether an unsupported
 /// type is a RADIANCE type outside the subset or a typo.
-const OTHER_RADIANCE_TYPES: &[&str] = &[
+pub(crate) const OTHER_RADIANCE_TYPES: &[&str] = &[
     "bubble",
     "cup",
     "tube",
@@ -177,7 +178,29 @@ pub(crate) struct RawPrimitive<'a> {
     pub reals: Vec<f64>,
 }
 
-impl RawPrimitive<'_> {
+impl<'a> RawPrimitive<'a> {
+    /// A read primitive as one of the subset's types; any other RADIANCE type is an error
+    /// naming it.
+    pub fn from_primitive(p: &'a Primitive) -> Result<Self, SceneError> {
+        let Some(kind) = PrimitiveType::from_name(&p.type_name) else {
+            return Err(SceneError::UnsupportedType {
+                at: p.origin.clone(),
+                type_name: p.type_name.clone(),
+                identifier: p.identifier.clone(),
+                reason: "a RADIANCE type outside the subset Skylux reads",
+            });
+        };
+        Ok(RawPrimitive {
+            at: p.origin.clone(),
+            modifier: &p.modifier,
+            kind,
+            identifier: &p.identifier,
+            strings: p.strings.iter().map(String::as_str).collect(),
+            integers: p.integers.clone(),
+            reals: p.reals.clone(),
+        })
+    }
+
     /// ``type `identifier` ``, as error messages name a primitive.
     pub fn describe(&self) -> String {
         describe(self.kind.name(), self.identifier)
@@ -268,28 +291,28 @@ fn describe(type_name: &str, identifier: &str) -> String {
     format!("{type_name} `{identifier}`")
 }
 
-/// Reads the next primitive, or `None` at the end of the file.
-pub(crate) fn read_primitive<'a>(
-    lexer: &mut Lexer<'a>,
-) -> Result<Option<RawPrimitive<'a>>, SceneError> {
+/// What a scene file holds at the top level: a primitive or an inline command.
+#[derive(Debug)]
+pub(crate) enum Item {
+    Primitive(Primitive),
+    /// A `!command` line (continuation lines joined), without its `!`, and its first line.
+    Command {
+        line: usize,
+        text: String,
+    },
+}
+
+/// Reads the next primitive or command, or `None` at the end of the file. Every RADIANCE type
+/// is read (so `xform` can carry it); [`RawPrimitive::from_primitive`] then refuses those
+/// outside the subset.
+pub(crate) fn read_item(lexer: &mut Lexer<'_>) -> Result<Option<Item>, SceneError> {
     let Some(modifier) = lexer.next_token()? else {
         return Ok(None);
     };
     let line = modifier.line;
     if !modifier.quoted && modifier.text.starts_with('!') {
-        let command = format!("{}{}", modifier.text, lexer.rest_of_line());
-        let program = command[1..].split_whitespace().next().unwrap_or("");
-        let reason = if program == "xform" || program.ends_with("/xform") {
-            "`xform` is not supported; run xform yourself and load its output as a scene file"
-        } else {
-            "Skylux does not run commands from scene files; run the command yourself and \
-             load its output as a scene file"
-        };
-        return Err(SceneError::UnsupportedCommand {
-            at: lexer.at(line),
-            command,
-            reason,
-        });
+        let text = format!("{}{}", &modifier.text[1..], lexer.command_tail());
+        return Ok(Some(Item::Command { line, text }));
     }
     let type_token = expect(lexer, || {
         (
@@ -297,34 +320,68 @@ pub(crate) fn read_primitive<'a>(
             "a primitive type".to_string(),
         )
     })?;
-    let Some(kind) = PrimitiveType::from_name(type_token.text) else {
+    let kind = PrimitiveType::from_name(type_token.text);
+    if kind.is_none() && !OTHER_RADIANCE_TYPES.contains(&type_token.text) {
         let identifier = lexer
             .next_token()
             .ok()
             .flatten()
             .map_or_else(|| "(none)".to_string(), |t| t.text.to_string());
-        let reason = if OTHER_RADIANCE_TYPES.contains(&type_token.text) {
-            "a RADIANCE type outside the subset Skylux reads"
-        } else {
-            "not a RADIANCE primitive type"
-        };
         return Err(SceneError::UnsupportedType {
             at: lexer.at(type_token.line),
             type_name: type_token.text.to_string(),
             identifier,
-            reason,
+            reason: "not a RADIANCE primitive type",
         });
-    };
+    }
+    let type_name = type_token.text;
     let identifier = expect(lexer, || {
         (
-            format!("after `{} {}` (line {line})", modifier.text, kind.name()),
+            format!("after `{} {type_name}` (line {line})", modifier.text),
             "an identifier".to_string(),
         )
     })?
     .text;
+    let mut primitive = Primitive {
+        modifier: modifier.text.to_string(),
+        type_name: type_name.to_string(),
+        identifier: identifier.to_string(),
+        strings: Vec::new(),
+        integers: Vec::new(),
+        reals: Vec::new(),
+        origin: lexer.at(line),
+    };
+    if type_name == "alias" {
+        // `mod alias new old`: one word, no argument lists (RADIANCE 5 readobj).
+        let target = expect(lexer, || {
+            (
+                format!("after `{} alias {identifier}` (line {line})", modifier.text),
+                "the aliased modifier".to_string(),
+            )
+        })?;
+        primitive.strings.push(target.text.to_string());
+        return Ok(Some(Item::Primitive(primitive)));
+    }
+    read_arguments(lexer, &mut primitive, kind)?;
+    Ok(Some(Item::Primitive(primitive)))
+}
+
+/// The three argument lists of `p`, named after `kind`'s synopsis when it is known.
+fn read_arguments(
+    lexer: &mut Lexer<'_>,
+    p: &mut Primitive,
+    kind: Option<PrimitiveType>,
+) -> Result<(), SceneError> {
+    let line = p.origin.line;
+    let type_name = p.type_name.clone();
+    let identifier = p.identifier.clone();
     // Messages are only formatted on the error path: this loop runs for every word of a
     // 10,000-polygon scene.
-    let primitive = || describe(kind.name(), identifier);
+    let primitive = || describe(&type_name, &identifier);
+    let real_field = |i: usize| match kind {
+        Some(k) => k.real_field(i),
+        None => format!("real argument {}", i + 1),
+    };
     let inside = |list: ArgumentList| {
         format!(
             "inside the {list} arguments of {} (which starts on line {line})",
@@ -333,7 +390,7 @@ pub(crate) fn read_primitive<'a>(
     };
 
     let string_count = read_count(lexer, &primitive, line, ArgumentList::String)?;
-    let mut strings = Vec::with_capacity(string_count.min(16));
+    p.strings.reserve(string_count.min(16));
     for i in 0..string_count {
         let token = expect(lexer, || {
             (
@@ -341,11 +398,11 @@ pub(crate) fn read_primitive<'a>(
                 format!("string argument {} of {string_count}", i + 1),
             )
         })?;
-        strings.push(token.text);
+        p.strings.push(token.text.to_string());
     }
 
     let integer_count = read_count(lexer, &primitive, line, ArgumentList::Integer)?;
-    let mut integers = Vec::with_capacity(integer_count.min(16));
+    p.integers.reserve(integer_count.min(16));
     for i in 0..integer_count {
         let token = expect(lexer, || {
             (
@@ -362,22 +419,22 @@ pub(crate) fn read_primitive<'a>(
                 index: i + 1,
                 token: token.text.to_string(),
             })?;
-        integers.push(value);
+        p.integers.push(value);
     }
 
     let real_count = read_count(lexer, &primitive, line, ArgumentList::Real)?;
-    let mut reals = Vec::with_capacity(real_count.min(1024));
+    p.reals.reserve(real_count.min(1024));
     for i in 0..real_count {
         let token = expect(lexer, || {
             (
                 inside(ArgumentList::Real),
-                format!("{} of {real_count}", kind.real_field(i)),
+                format!("{} of {real_count}", real_field(i)),
             )
         })?;
         let value = token.text.parse::<f64>().map_err(|_| SceneError::BadReal {
             at: lexer.at(token.line),
             primitive: primitive(),
-            field: kind.real_field(i),
+            field: real_field(i),
             token: token.text.to_string(),
         })?;
         // Rust also parses `nan`, `inf` and overflowing exponents, which RADIANCE's `atof`
@@ -386,22 +443,13 @@ pub(crate) fn read_primitive<'a>(
             return Err(SceneError::NonFiniteReal {
                 at: lexer.at(token.line),
                 primitive: primitive(),
-                field: kind.real_field(i),
+                field: real_field(i),
                 token: token.text.to_string(),
             });
         }
-        reals.push(value);
+        p.reals.push(value);
     }
-
-    Ok(Some(RawPrimitive {
-        at: lexer.at(line),
-        modifier: modifier.text,
-        kind,
-        identifier,
-        strings,
-        integers,
-        reals,
-    }))
+    Ok(())
 }
 
 /// The next word; at the end of the file, an error built from `describe()`'s (where, what
@@ -454,11 +502,17 @@ mod tests {
     use std::path::Path;
     use std::sync::Arc;
 
-    fn read_all(text: &str) -> Result<Vec<RawPrimitive<'_>>, SceneError> {
+    fn read_all(text: &str) -> Result<Vec<Primitive>, SceneError> {
         let mut lexer = Lexer::new(Arc::from(Path::new("p.rad")), text);
         let mut out = Vec::new();
-        while let Some(p) = read_primitive(&mut lexer)? {
-            out.push(p);
+        while let Some(item) = read_item(&mut lexer)? {
+            match item {
+                Item::Primitive(p) => {
+                    RawPrimitive::from_primitive(&p)?;
+                    out.push(p);
+                }
+                Item::Command { text, .. } => panic!("command {text}"),
+            }
         }
         Ok(out)
     }
@@ -470,7 +524,7 @@ mod tests {
         assert_eq!(a[0].reals, b[0].reals);
         assert_eq!(a[0].reals, [0.5, 0.4, 0.3, 0.0, 0.0]);
         assert_eq!(a[0].identifier, "red");
-        assert_eq!(a[0].kind, PrimitiveType::Plastic);
+        assert_eq!(a[0].type_name, "plastic");
     }
 
     #[test]
@@ -487,8 +541,8 @@ mod tests {
     fn primitive_line_is_the_modifier_line() {
         let ps =
             read_all("# c\n\nvoid light l\n0 0 3 1 1 1\n\nl source s 0 0 4 0 0 1 0.5").unwrap();
-        assert_eq!(ps[0].at.line, 3);
-        assert_eq!(ps[1].at.line, 6);
+        assert_eq!(ps[0].origin.line, 3);
+        assert_eq!(ps[1].origin.line, 6);
     }
 
     #[test]

@@ -344,14 +344,16 @@ fn polygon(raw: &RawPrimitive<'_>) -> Result<Polygon, SceneError> {
 mod tests {
     use super::*;
     use crate::scene::lexer::Lexer;
-    use crate::scene::parse::read_primitive;
+    use crate::scene::parse::{read_item, Item, RawPrimitive};
     use std::path::Path;
     use std::sync::Arc;
 
     fn shape(text: &str) -> Result<Shape, SceneError> {
         let mut lexer = Lexer::new(Arc::from(Path::new("s.rad")), text);
-        let raw = read_primitive(&mut lexer).unwrap().unwrap();
-        build(&raw)
+        let Some(Item::Primitive(p)) = read_item(&mut lexer).unwrap() else {
+            panic!("no primitive in {text}")
+        };
+        build(&RawPrimitive::from_primitive(&p)?)
     }
 
     #[test]

@@ -1,1 +1,2 @@
+pub mod primitives;
 pub mod radiance;

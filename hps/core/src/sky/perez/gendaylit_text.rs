@@ -9,6 +9,12 @@ impl PerezSky {
     /// first line (the command line echoed as a comment): the same lines and number formats,
     /// sun as `light`/`source`, sky as `brightfunc skyfunc` over `perezlum.cal`.
     pub fn gendaylit_text(&self, units: GendaylitUnits) -> String {
+        self.gendaylit_text_with(units, true)
+    }
+
+    /// [`Self::gendaylit_text`], or without the sun and its share of the ground as
+    /// `gendaylit -s` writes it (`with_sun` false).
+    pub fn gendaylit_text_with(&self, units: GendaylitUnits, with_sun: bool) -> String {
         let mut out = String::new();
         let st = self.local_solar_time_h.unwrap_or(0.0);
         let azimuth_deg = (-self.sun_direction.x)
@@ -36,22 +42,24 @@ impl PerezSky {
             "# epsilon, delta, atmospheric precipitable water content : {:.4} {:.4} {:.4} ",
             self.clearness, self.brightness, self.precipitable_water_cm
         );
-        let (normalisation, sun, ground) = self.radiometry(units);
+        let (normalisation, sun, ground) = self.radiometry_with(units, with_sun);
         let sun_text = if self.clearness > 1.0 {
             let r = c_exp(sun, 3);
             format!("{r} {r} {r}")
         } else {
             "0.0 0.0 0.0".to_string()
         };
-        let _ = write!(
-            out,
-            "\nvoid light solar\n0\n0\n3 {sun_text}\n\nsolar source sun\n0\n0\n\
-             4 {:.6} {:.6} {:.6} {:.6}\n",
-            s.x,
-            s.y,
-            s.z,
-            2.0 * GENDAYLIT_HALF_SUN_ANGLE_DEG
-        );
+        if with_sun {
+            let _ = write!(
+                out,
+                "\nvoid light solar\n0\n0\n3 {sun_text}\n\nsolar source sun\n0\n0\n\
+                 4 {:.6} {:.6} {:.6} {:.6}\n",
+                s.x,
+                s.y,
+                s.z,
+                2.0 * GENDAYLIT_HALF_SUN_ANGLE_DEG
+            );
+        }
         let [a, b, c, d, e] = self.coefficients;
         let _ = write!(
             out,

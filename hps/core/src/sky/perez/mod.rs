@@ -33,7 +33,7 @@ mod radiance_sun;
 mod tables;
 
 pub use gendaylit_text::c_exp;
-pub use radiance_sun::{radiance_day_number, radiance_sun_position};
+pub use radiance_sun::{radiance_day_number, radiance_sun_at_solar_time, radiance_sun_position};
 
 /// Solar constant, W/m² (`gendaylit.c` `solar_constant_e`).
 pub const SOLAR_CONSTANT_W_M2: f64 = 1367.0;
@@ -410,6 +410,11 @@ impl PerezSky {
     /// The normalisation A1, sun radiance and ground brightness A2 in `units`, zero for an
     /// error sky.
     fn radiometry(&self, units: GendaylitUnits) -> (f64, f64, f64) {
+        self.radiometry_with(units, true)
+    }
+
+    /// [`Self::radiometry`]; without the sun (`gendaylit -s`) the ground has no sun term.
+    fn radiometry_with(&self, units: GendaylitUnits, with_sun: bool) -> (f64, f64, f64) {
         if self.error_sky(units).is_some() {
             return (0.0, 0.0, 0.0);
         }
@@ -429,7 +434,7 @@ impl PerezSky {
             ),
         };
         let mut ground = normalisation * self.ground_per_normalisation;
-        if self.clearness > 1.0 {
+        if with_sun && self.clearness > 1.0 {
             ground += GROUND_SUN_SOLID_ANGLE_SR / PI * sun * self.sun_direction.z;
         }
         (normalisation, sun, ground * self.ground_reflectance)

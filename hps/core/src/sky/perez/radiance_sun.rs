@@ -28,15 +28,29 @@ pub fn radiance_sun_position(
     meridian_east_deg: f64,
 ) -> Option<(DVec3, f64)> {
     let jd = f64::from(radiance_day_number(month, day)?);
-    let latitude = latitude_deg * (PI / 180.0);
     let longitude_west = -longitude_east_deg * (PI / 180.0);
     let meridian_west = -meridian_east_deg * (PI / 180.0);
-    let declination = 0.4093 * ((2.0 * PI / 365.0) * (jd - 81.0)).sin();
     let solar_time = standard_hour
         + (0.170 * ((4.0 * PI / 373.0) * (jd - 80.0)).sin()
             - 0.129 * ((2.0 * PI / 355.0) * (jd - 8.0)).sin()
             + (12.0 / PI) * (meridian_west - longitude_west));
-    let hour_angle = solar_time * (PI / 12.0);
+    let direction = radiance_sun_at_solar_time(month, day, solar_time, latitude_deg)?;
+    Some((direction, solar_time))
+}
+
+/// The sun where RADIANCE's `sun.c` puts it at local solar time `solar_hour` (gensky and
+/// gendaylit with a `+hour`): declination `sdec`, altitude `salt`, azimuth `sazi`. `None` for an
+/// invalid month or day, or a non-finite result.
+pub fn radiance_sun_at_solar_time(
+    month: u32,
+    day: u32,
+    solar_hour: f64,
+    latitude_deg: f64,
+) -> Option<DVec3> {
+    let jd = f64::from(radiance_day_number(month, day)?);
+    let latitude = latitude_deg * (PI / 180.0);
+    let declination = 0.4093 * ((2.0 * PI / 365.0) * (jd - 81.0)).sin();
+    let hour_angle = solar_hour * (PI / 12.0);
     let altitude = (latitude.sin() * declination.sin()
         - latitude.cos() * declination.cos() * hour_angle.cos())
     .asin();
@@ -48,8 +62,5 @@ pub fn radiance_sun_position(
         -azimuth.cos() * altitude.cos(),
         altitude.sin(),
     );
-    if !direction.is_finite() || !solar_time.is_finite() {
-        return None;
-    }
-    Some((direction, solar_time))
+    direction.is_finite().then_some(direction)
 }
