@@ -414,6 +414,7 @@ mod tests {
             rejected += usize::from(v.accepted);
         }
         let rate = rejected as f64 / trials as f64;
+        println!("rejection rate under the null: {rate}");
         assert!(rate < ACCEPT_ALPHA, "false-discovery rate {rate}");
     }
 }
