@@ -4,6 +4,7 @@
 pub mod calibration;
 pub mod camera;
 pub mod campaign;
+pub mod compare;
 pub mod engine;
 pub mod fpga;
 pub mod glare;
