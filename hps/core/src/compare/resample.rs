@@ -39,7 +39,7 @@ fn check_same_point(
     rendered: &LuminanceImage,
 ) -> Result<(), CompareError> {
     let gap_m = measured.view.position_m.distance(rendered.view.position_m);
-    if !(gap_m <= SAME_POINT_M) {
+    if gap_m.is_nan() || gap_m > SAME_POINT_M {
         return Err(CompareError::Views(format!(
             "the two views are taken from points {gap_m:.3} m apart ({} and {}): pictures from \
              different eye points cannot be mapped pixel to pixel; give both the same -vp",

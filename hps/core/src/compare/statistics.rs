@@ -69,7 +69,7 @@ impl LuminanceHistogram {
         let (lo, hi) = positive.fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
             (lo.min(v), hi.max(v))
         });
-        if !(hi > 0.0) {
+        if hi <= 0.0 || !lo.is_finite() {
             return None;
         }
         let first = (lo.log10() * BINS_PER_DECADE).floor();
