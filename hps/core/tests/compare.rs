@@ -332,6 +332,39 @@ fn bad_input_gives_clear_errors() {
     );
 }
 
+#[test]
+fn locate_is_the_inverse_of_ray_in_every_view_type() {
+    let views = [
+        "-vtv -vp 1 2 3 -vd 1 0.5 -0.2 -vu 0 0 1 -vh 70 -vv 50 -vs 0.1 -vl -0.05",
+        "-vth -vp 0 0 0 -vd 0 1 0 -vu 0 0 1 -vh 180 -vv 180",
+        "-vta -vp 0 0 0 -vd 0 0 1 -vu 0 1 0 -vh 180 -vv 180",
+        "-vta -vp 0 0 0 -vd 1 1 0 -vu 0 0 1 -vh 300 -vv 200",
+    ];
+    for text in views {
+        let view = View::parse(text).unwrap().prepare().unwrap();
+        let mut checked = 0;
+        for i in 0..41 {
+            for j in 0..41 {
+                let (x, y) = (f64::from(i) / 40.0, f64::from(j) / 40.0);
+                let Some(ray) = view.ray(x, y) else { continue };
+                let (u, v) = view.locate(ray.direction).unwrap();
+                assert!(
+                    (u - x).abs() < 1e-9 && (v - y).abs() < 1e-9,
+                    "{text}: ({x}, {y}) → ({u}, {v})"
+                );
+                checked += 1;
+            }
+        }
+        assert!(checked > 41 * 41 / 2, "{text}: {checked}");
+    }
+    let perspective = View::parse(MEASURED_VIEW).unwrap().prepare().unwrap();
+    assert!(
+        perspective.locate(DVec3::new(0.0, -1.0, 0.0)).is_none(),
+        "behind"
+    );
+    assert!(perspective.locate(DVec3::ZERO).is_none());
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
 

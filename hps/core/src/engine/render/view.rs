@@ -460,7 +460,9 @@ impl PreparedView {
                 (h, vert)
             }
             ViewType::Angular => {
-                // ray(): sin(πr) = |(h, v)| and cos(πr) = d · direction, r the scaled radius.
+                // setview leaves an angular view's image vectors unit: ray() gives
+                // sin(πr) = |(d · hvec, d · vvec)| and cos(πr) = d · direction.
+                let (h, vert) = (d.dot(self.hvec), d.dot(self.vvec));
                 let r = along.clamp(-1.0, 1.0).acos() / PI;
                 let sine = (h * h + vert * vert).sqrt();
                 let s = if sine <= FTINY { 1.0 / PI } else { r / sine };
