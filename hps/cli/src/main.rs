@@ -7,6 +7,7 @@ mod bench_loop;
 mod bench_raybox;
 mod calibrate;
 mod closure;
+mod compare;
 mod dc;
 mod demo;
 mod glare;
@@ -61,6 +62,9 @@ enum Command {
     Loop(loop_cmd::LoopArgs),
     /// The simulated world: `skylux sim campaign --out DIR [--effect NAME=VALUE]`.
     Sim(sim_cmd::SimArgs),
+    /// Compares a measured luminance picture with a rendered one of the same view: relative
+    /// errors per pixel and per region, luminance histograms, a falsecolour error map.
+    Compare(compare::CompareArgs),
     /// Glare indices (Ev, DGP, DGI, UGR, CGI, VCP) and glare sources of a luminance picture,
     /// as evalglare computes them.
     Glare(glare::GlareArgs),
@@ -82,6 +86,7 @@ fn main() -> anyhow::Result<()> {
     match Cli::parse().command {
         Command::Demo { out } => demo::run(&out),
         Command::Dc(args) => dc::run(&args),
+        Command::Compare(args) => compare::run(&args),
         Command::Glare(args) => glare::run(&args),
         Command::Hdr(args) => hdr::run(&args),
         Command::Illuminance(args) => illuminance::run(&args),

@@ -143,6 +143,7 @@ pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
                 None => ColourScale::Linear,
             },
             maximum: args.scale,
+            minimum: None,
             divisions: 8,
         },
     )?;

@@ -5,6 +5,7 @@ pub mod bsdf;
 pub mod calibration;
 pub mod camera;
 pub mod campaign;
+pub mod compare;
 pub mod engine;
 pub mod fpga;
 pub mod glare;

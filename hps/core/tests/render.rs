@@ -449,6 +449,7 @@ fn picture_files_read_back() {
             unit: LegendUnit::Lux,
             scale: ColourScale::Log { decades: 2.0 },
             maximum: None,
+            minimum: None,
             divisions: 4,
         },
     )

@@ -14,6 +14,8 @@ pub enum LegendUnit {
     /// (falsecolor's `-i` scales an irradiance picture to lux; a radiance picture of a
     /// diffuser of reflectance 1 gives the same numbers times π.)
     Lux,
+    /// A relative error, (rendered − measured)/measured, dimensionless (`skylux compare`).
+    RelativeError,
 }
 
 /// How values map to colours.
@@ -33,6 +35,8 @@ pub struct FalsecolourOptions {
     /// Top of the scale in the legend's unit; None: a round number (1, 2 or 5 × 10^k) at or
     /// above the 99th percentile of the picture.
     pub maximum: Option<f64>,
+    /// Bottom of a linear scale (None: 0); below 0 for signed values such as errors.
+    pub minimum: Option<f64>,
     /// Labelled divisions of the legend (falsecolor's `-n`, default 8).
     pub divisions: u32,
 }
@@ -43,6 +47,7 @@ impl Default for FalsecolourOptions {
             unit: LegendUnit::Luminance,
             scale: ColourScale::Linear,
             maximum: None,
+            minimum: None,
             divisions: 8,
         }
     }
@@ -160,11 +165,12 @@ pub fn write_falsecolour_png_marked(
         ));
     }
     let factor = match options.unit {
-        LegendUnit::Luminance => 1.0,
+        LegendUnit::Luminance | LegendUnit::RelativeError => 1.0,
         LegendUnit::Lux => PI,
     };
     let values: Vec<f64> = image.luminance_cd_m2.iter().map(|l| l * factor).collect();
     let maximum = scale_maximum(&values, options).map_err(|e| output_error(path, e))?;
+    let minimum = scale_minimum(maximum, options).map_err(|e| output_error(path, e))?;
     let (w, h) = (image.width_px, image.height_px);
     let zoom = (400 / h.max(1)).clamp(1, (4096 / w.max(1)).max(1));
     let legend_w = 170u32;
@@ -181,8 +187,9 @@ pub fn write_falsecolour_png_marked(
             for column in 0..w {
                 let i = image.index(column, row);
                 let mark = marks.get(i).copied().flatten();
-                let [r, g, b] = mark
-                    .unwrap_or_else(|| turbo(scale_position(values[i], maximum, options.scale)));
+                let [r, g, b] = mark.unwrap_or_else(|| {
+                    turbo(scale_position(values[i], minimum, maximum, options.scale))
+                });
                 let colour = RGBColor(r, g, b);
                 for dy in 0..zoom {
                     for dx in 0..zoom {
@@ -195,7 +202,8 @@ pub fn write_falsecolour_png_marked(
                 }
             }
         }
-        draw_legend(&root, options, maximum, pic_w, total_h, text).map_err(|e| draw_error(&e))?;
+        draw_legend(&root, options, (minimum, maximum), pic_w, total_h, text)
+            .map_err(|e| draw_error(&e))?;
         root.present().map_err(|e| draw_error(&e))?;
     }
     Ok(FalsecolourOutcome {
@@ -230,10 +238,24 @@ fn scale_maximum(values: &[f64], options: &FalsecolourOptions) -> Result<f64, St
     Ok(maximum)
 }
 
-/// Where `v` lies on the colour scale, 0 at the bottom and 1 at `maximum`.
-fn scale_position(v: f64, maximum: f64, scale: ColourScale) -> f64 {
+/// Bottom of the scale: the given minimum (linear scales only, below the maximum), else 0.
+fn scale_minimum(maximum: f64, options: &FalsecolourOptions) -> Result<f64, String> {
+    match (options.minimum, options.scale) {
+        (None, _) => Ok(0.0),
+        (Some(m), ColourScale::Linear) if m.is_finite() && m < maximum => Ok(m),
+        (Some(m), ColourScale::Linear) => Err(format!(
+            "scale minimum {m} must be finite and below the maximum {maximum}"
+        )),
+        (Some(_), ColourScale::Log { .. }) => {
+            Err("a log scale starts at max / 10^decades, not at a given minimum".into())
+        }
+    }
+}
+
+/// Where `v` lies on the colour scale, 0 at `minimum` and 1 at `maximum`.
+fn scale_position(v: f64, minimum: f64, maximum: f64, scale: ColourScale) -> f64 {
     match scale {
-        ColourScale::Linear => v / maximum,
+        ColourScale::Linear => (v - minimum) / (maximum - minimum),
         ColourScale::Log { decades } => {
             if v <= 0.0 {
                 0.0
@@ -251,7 +273,7 @@ fn draw_legend(
         plotters::coord::Shift,
     >,
     options: &FalsecolourOptions,
-    maximum: f64,
+    (minimum, maximum): (f64, f64),
     pic_w: u32,
     total_h: u32,
     text: bool,
@@ -278,6 +300,7 @@ fn draw_legend(
     let unit = match options.unit {
         LegendUnit::Luminance => "cd/m²",
         LegendUnit::Lux => "lux (π L)",
+        LegendUnit::RelativeError => "(R - M)/M",
     };
     let scale = match options.scale {
         ColourScale::Linear => "linear",
@@ -293,7 +316,7 @@ fn draw_legend(
     for k in 0..=divisions {
         let t = f64::from(k) / f64::from(divisions);
         let value = match options.scale {
-            ColourScale::Linear => t * maximum,
+            ColourScale::Linear => minimum + t * (maximum - minimum),
             ColourScale::Log { decades } => maximum * 10f64.powf((t - 1.0) * decades),
         };
         let y = bar_bottom - (t * f64::from(span)) as i32;

@@ -436,6 +436,51 @@ impl PreparedView {
         Some(Ray::new(origin, direction))
     }
 
+    /// RADIANCE's `viewloc`, the inverse of [`PreparedView::ray`]: the image position
+    /// (x, y), both in [0, 1] inside the image, at which a ray from the view point in
+    /// `direction` lands; None when the view cannot show that direction (behind a perspective
+    /// or hemispherical view, beyond an angular fisheye's circle, or a zero direction).
+    /// Positions outside [0, 1] are directions beside the image.
+    pub fn locate(&self, direction: DVec3) -> Option<(f64, f64)> {
+        let v = &self.view;
+        let d = direction.try_normalize()?;
+        let along = d.dot(self.direction);
+        let (h, vert) = (d.dot(self.hvec) / self.hn2, d.dot(self.vvec) / self.vn2);
+        let (x, y) = match v.kind {
+            ViewType::Perspective => {
+                if along <= FTINY {
+                    return None;
+                }
+                (h / along, vert / along)
+            }
+            ViewType::Hemispherical => {
+                if along < 0.0 {
+                    return None;
+                }
+                (h, vert)
+            }
+            ViewType::Angular => {
+                // setview leaves an angular view's image vectors unit: ray() gives
+                // sin(πr) = |(d · hvec, d · vvec)| and cos(πr) = d · direction.
+                let (h, vert) = (d.dot(self.hvec), d.dot(self.vvec));
+                let r = along.clamp(-1.0, 1.0).acos() / PI;
+                let sine = (h * h + vert * vert).sqrt();
+                let s = if sine <= FTINY { 1.0 / PI } else { r / sine };
+                let (x, y) = (
+                    h * s * 180.0 / v.horizontal_deg,
+                    vert * s * 180.0 / v.vertical_deg,
+                );
+                if (x * v.horizontal_deg / 180.0).powi(2) + (y * v.vertical_deg / 180.0).powi(2)
+                    > 1.0 + 1e-9
+                {
+                    return None;
+                }
+                (x, y)
+            }
+        };
+        Some((x + 0.5 - v.shift, y + 0.5 - v.lift))
+    }
+
     /// The ray through the centre of pixel (`column`, `row`) of a `width` × `height` image,
     /// row 0 at the top (rpict's and vwrays' order, pix2loc with PIXSTANDARD).
     pub fn pixel_centre_ray(&self, column: u32, row: u32, width: u32, height: u32) -> Option<Ray> {
