@@ -380,7 +380,7 @@ impl PassingClouds {
     fn at(&self, t_s: f64) -> f64 {
         let passed = self.edges_s.partition_point(|&e| e <= t_s);
         let state = |edges_passed: usize| {
-            if (edges_passed % 2 == 0) == self.sunny_before_first {
+            if edges_passed.is_multiple_of(2) == self.sunny_before_first {
                 1.0
             } else {
                 0.0
