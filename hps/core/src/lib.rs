@@ -1,6 +1,7 @@
 //! The HPS side of Skylux: drivers for the fabric (over `skylux-bus`), and from later issues
 //! HDR synthesis, the sky, the sun and the daylighting engine.
 
+pub mod cal;
 pub mod calibration;
 pub mod camera;
 pub mod campaign;
