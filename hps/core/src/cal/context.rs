@@ -36,11 +36,19 @@ pub enum RayVariable {
     /// Mesh local coordinates.
     Lu,
     Lv,
+    /// Perturbed normal, ray dot product and material colour (`*func`, `*data` materials).
+    NxP,
+    NyP,
+    NzP,
+    RdotP,
+    CrP,
+    CgP,
+    CbP,
 }
 
 impl RayVariable {
     /// Every ray variable, in declaration order (its index in [`RayValues`]).
-    pub const ALL: [RayVariable; 27] = [
+    pub const ALL: [RayVariable; 34] = [
         Self::Dx,
         Self::Dy,
         Self::Dz,
@@ -68,13 +76,21 @@ impl RayVariable {
         Self::Kz,
         Self::Lu,
         Self::Lv,
+        Self::NxP,
+        Self::NyP,
+        Self::NzP,
+        Self::RdotP,
+        Self::CrP,
+        Self::CgP,
+        Self::CbP,
     ];
 
     /// The name a `.cal` file uses for it.
     pub fn name(self) -> &'static str {
-        const NAMES: [&str; 27] = [
+        const NAMES: [&str; 34] = [
             "Dx", "Dy", "Dz", "Nx", "Ny", "Nz", "Px", "Py", "Pz", "T", "Ts", "Rdot", "S", "Tx",
-            "Ty", "Tz", "Ix", "Iy", "Iz", "Jx", "Jy", "Jz", "Kx", "Ky", "Kz", "Lu", "Lv",
+            "Ty", "Tz", "Ix", "Iy", "Iz", "Jx", "Jy", "Jz", "Kx", "Ky", "Kz", "Lu", "Lv", "NxP",
+            "NyP", "NzP", "RdotP", "CrP", "CgP", "CbP",
         ];
         NAMES[self as usize]
     }
@@ -95,14 +111,14 @@ pub trait CalContext {
 #[derive(Debug, Clone, PartialEq)]
 pub struct RayValues {
     /// Indexed by `RayVariable as usize`.
-    pub values: [f64; 27],
+    pub values: [f64; RayVariable::ALL.len()],
     pub real_arguments: Vec<f64>,
 }
 
 impl Default for RayValues {
     /// Zero everywhere, with an identity world transform (`S` = 1, I J K the axes).
     fn default() -> Self {
-        let mut values = [0.0; 27];
+        let mut values = [0.0; RayVariable::ALL.len()];
         for (v, x) in [
             (RayVariable::S, 1.0),
             (RayVariable::Ix, 1.0),

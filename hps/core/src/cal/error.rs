@@ -31,6 +31,9 @@ pub enum CalError {
     /// Evaluation nested deeper than the evaluator allows (runaway recursion).
     #[error("{name}(): recursion deeper than {limit} levels")]
     TooDeep { name: String, limit: usize },
+    /// One evaluation took more steps than the evaluator allows (exponential recursion).
+    #[error("{name}(): evaluation longer than {limit} steps")]
+    TooLong { name: String, limit: u64 },
 }
 
 /// What calcomp prints as a warning and answers 0 for: kept so callers can report it.

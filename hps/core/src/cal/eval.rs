@@ -12,6 +12,9 @@ use super::program::{CalProgram, Callee, Node, NodeId, SymbolId};
 /// Deepest evaluation (expression levels and calls together): bounds the stack for runaway
 /// recursion such as `f(x) = f(x)`, which calcomp would follow until it crashes.
 const MAX_DEPTH: usize = 1500;
+/// Most expression nodes one top-level evaluation may visit: bounds the time of a function
+/// such as a Fibonacci without a reachable base case, which calcomp would run for ever.
+const MAX_STEPS: u64 = 2_000_000;
 /// Warnings kept per evaluator (the rest are counted).
 const MAX_WARNINGS: usize = 64;
 
@@ -37,6 +40,7 @@ pub struct Evaluator<'p> {
     variables: Vec<(u64, f64)>,
     generation: u64,
     depth: usize,
+    steps: u64,
     warnings: Vec<CalWarning>,
     warning_count: usize,
 }
@@ -52,6 +56,7 @@ impl<'p> Evaluator<'p> {
             variables: vec![(0, 0.0); n],
             generation: 0,
             depth: 0,
+            steps: 0,
             warnings: Vec::new(),
             warning_count: 0,
         }
@@ -111,6 +116,7 @@ impl<'p> Evaluator<'p> {
     fn begin(&mut self) {
         self.generation += 1;
         self.depth = 0;
+        self.steps = 0;
         self.frames.clear();
         self.argument_values.clear();
         // The root frame: no function, no arguments.
@@ -142,6 +148,13 @@ impl<'p> Evaluator<'p> {
         frame: usize,
         context: &dyn CalContext,
     ) -> Result<f64, CalError> {
+        self.steps += 1;
+        if self.steps > MAX_STEPS {
+            return Err(CalError::TooLong {
+                name: self.current_name(frame),
+                limit: MAX_STEPS,
+            });
+        }
         self.depth += 1;
         if self.depth > MAX_DEPTH {
             return Err(CalError::TooDeep {

@@ -44,7 +44,9 @@ pub(super) fn tokenize(file: &str, text: &str) -> Result<Vec<Located>, CalError>
         } else if c.is_whitespace() {
             i += 1;
         } else if c == '{' {
-            i = skip_comment(&chars, i, &mut line).ok_or_else(|| error(line, "'}' expected"))?;
+            let opened = line;
+            i = skip_comment(&chars, i, &mut line)
+                .ok_or_else(|| error(opened, "'}' expected for the comment opened here"))?;
         } else if c.is_ascii_digit() || c == '.' {
             let (value, next) = scan_number(&chars, i).map_err(|m| error(line, m))?;
             tokens.push(Located {

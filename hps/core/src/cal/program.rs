@@ -7,8 +7,9 @@ use std::collections::HashMap;
 use std::path::Path;
 
 use super::ast::{BinaryOp, Definition, Expr};
-use super::context::RayVariable;
+use super::context::{RayValues, RayVariable};
 use super::error::CalError;
+use super::eval::Evaluator;
 use super::library::LibraryFunction;
 use super::parser::parse_file;
 
@@ -135,6 +136,20 @@ impl CalProgram {
         });
     }
 
+    /// The value of `name` if it is already a `:` constant variable: calcomp folds such a
+    /// reference when it reads it (`calexpr.c` `rconst`), so a later redefinition of the
+    /// constant does not reach expressions read before it.
+    fn constant_value(&self, name: &str) -> Option<f64> {
+        let symbol = &self.symbols[self.symbol(name)?.0 as usize];
+        let definition = symbol.definition.as_ref()?;
+        if !definition.constant || definition.parameter_count.is_some() {
+            return None;
+        }
+        Evaluator::new(self)
+            .variable(name, &RayValues::default())
+            .ok()
+    }
+
     fn push(&mut self, node: Node) -> NodeId {
         self.nodes.push(node);
         (self.nodes.len() - 1) as NodeId
@@ -147,10 +162,13 @@ impl CalProgram {
             Expr::Number(v) => self.push(Node::Number(*v)),
             Expr::Name(name) => match parameter(name) {
                 Some(i) => self.push(Node::Parameter(i as u16)),
-                None => {
-                    let id = self.intern(name);
-                    self.push(Node::Variable(id))
-                }
+                None => match self.constant_value(name) {
+                    Some(v) => self.push(Node::Number(v)),
+                    None => {
+                        let id = self.intern(name);
+                        self.push(Node::Variable(id))
+                    }
+                },
             },
             Expr::Negate(inner) => {
                 let inner = self.compile(inner, parameters);
