@@ -473,8 +473,10 @@ fn evaluation_errors_and_warnings_follow_calcomp() {
                 fibs(n) = if(n + 60, fibs(n - 1) + fibs(n - 2), 1);";
     program.load_str("t.cal", text).unwrap();
     let mut ev = Evaluator::new(&program);
-    let mut ray = RayValues::default();
-    ray.real_arguments = vec![4.0, 9.0];
+    let ray = RayValues {
+        real_arguments: vec![4.0, 9.0],
+        ..Default::default()
+    };
     let err = |ev: &mut Evaluator, name: &str| ev.variable(name, &ray).unwrap_err().to_string();
     assert!(err(&mut ev, "u").contains("nothing: undefined variable"));
     assert!(err(&mut ev, "v").contains("argument not a function"));

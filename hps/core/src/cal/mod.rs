@@ -16,6 +16,7 @@ mod error;
 mod eval;
 mod lexer;
 mod library;
+mod load;
 mod parser;
 mod program;
 

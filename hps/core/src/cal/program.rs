@@ -4,14 +4,10 @@
 //! expression that uses it, as in calcomp (names link to their definition, not its text).
 
 use std::collections::HashMap;
-use std::path::Path;
 
 use super::ast::{BinaryOp, Definition, Expr};
-use super::context::{RayValues, RayVariable};
-use super::error::CalError;
-use super::eval::Evaluator;
+use super::context::RayVariable;
 use super::library::LibraryFunction;
-use super::parser::parse_file;
 
 /// Index of a name in a [`CalProgram`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -74,25 +70,6 @@ impl CalProgram {
         Self::default()
     }
 
-    /// Reads and compiles `path`; its definitions replace earlier ones of the same names.
-    pub fn load_file(&mut self, path: &Path) -> Result<(), CalError> {
-        let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| CalError::Io {
-            file: file.clone(),
-            message: e.to_string(),
-        })?;
-        self.load_str(&file, &text)
-    }
-
-    /// Compiles `text` (named `file` in errors). On an error nothing of `text` is kept.
-    pub fn load_str(&mut self, file: &str, text: &str) -> Result<(), CalError> {
-        let definitions = parse_file(file, text)?;
-        for definition in &definitions {
-            self.define(definition);
-        }
-        Ok(())
-    }
-
     /// The symbol of `name`, if any file or the library uses or defines it.
     pub fn symbol(&self, name: &str) -> Option<SymbolId> {
         self.by_name.get(name).copied()
@@ -125,7 +102,14 @@ impl CalProgram {
             .is_some_and(|id| self.symbols[id.0 as usize].definition.is_some())
     }
 
-    fn define(&mut self, definition: &Definition) {
+    /// Whether `name` is currently a variable defined with `:`.
+    pub(super) fn is_constant_variable(&self, name: &str) -> bool {
+        self.symbol(name)
+            .and_then(|id| self.symbols[id.0 as usize].definition.as_ref())
+            .is_some_and(|d| d.constant && d.parameter_count.is_none())
+    }
+
+    pub(super) fn define(&mut self, definition: &Definition) {
         let parameters = definition.parameters.as_deref().unwrap_or(&[]);
         let body = self.compile(&definition.body, parameters);
         let id = self.intern(&definition.name);
@@ -134,20 +118,6 @@ impl CalProgram {
             constant: definition.constant,
             body,
         });
-    }
-
-    /// The value of `name` if it is already a `:` constant variable: calcomp folds such a
-    /// reference when it reads it (`calexpr.c` `rconst`), so a later redefinition of the
-    /// constant does not reach expressions read before it.
-    fn constant_value(&self, name: &str) -> Option<f64> {
-        let symbol = &self.symbols[self.symbol(name)?.0 as usize];
-        let definition = symbol.definition.as_ref()?;
-        if !definition.constant || definition.parameter_count.is_some() {
-            return None;
-        }
-        Evaluator::new(self)
-            .variable(name, &RayValues::default())
-            .ok()
     }
 
     fn push(&mut self, node: Node) -> NodeId {
@@ -162,13 +132,10 @@ impl CalProgram {
             Expr::Number(v) => self.push(Node::Number(*v)),
             Expr::Name(name) => match parameter(name) {
                 Some(i) => self.push(Node::Parameter(i as u16)),
-                None => match self.constant_value(name) {
-                    Some(v) => self.push(Node::Number(v)),
-                    None => {
-                        let id = self.intern(name);
-                        self.push(Node::Variable(id))
-                    }
-                },
+                None => {
+                    let id = self.intern(name);
+                    self.push(Node::Variable(id))
+                }
             },
             Expr::Negate(inner) => {
                 let inner = self.compile(inner, parameters);
