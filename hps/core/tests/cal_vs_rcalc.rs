@@ -557,3 +557,41 @@ mod fuzz {
         }
     }
 }
+
+/// Every `.cal` file of RADIANCE's library and of its examples that rcalc reads, we read;
+/// rcalc and pcomb scripts (they use `$n` channels) are not function files and are left out.
+#[test]
+fn every_library_file_rcalc_reads_loads() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let mut files: Vec<PathBuf> = [radiance_lib(&lib), examples_lib()]
+        .iter()
+        .flat_map(|dir| std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()))
+        .filter(|p| p.extension().is_some_and(|e| e == "cal"))
+        .collect();
+    files.sort();
+    let mut read_by_rcalc = 0;
+    for file in &files {
+        let mut rcalc = tool(&bin, &lib, "rcalc");
+        rcalc.args(["-n", "-f"]).arg(file).args(["-e", "$1=0"]);
+        let accepted = rcalc.output().is_ok_and(|o| o.status.success());
+        let text = String::from_utf8_lossy(&std::fs::read(file).unwrap()).into_owned();
+        let script = text
+            .as_bytes()
+            .windows(2)
+            .any(|w| w[0] == b'$' && w[1].is_ascii_digit());
+        if accepted && !script {
+            read_by_rcalc += 1;
+            let mut program = CalProgram::new();
+            if let Err(e) = program.load_file(file) {
+                panic!("rcalc reads {} but we do not: {e}", file.display());
+            }
+        }
+    }
+    println!(
+        "{read_by_rcalc} of {} library files read by rcalc and by us",
+        files.len()
+    );
+    assert!(read_by_rcalc > 50, "only {read_by_rcalc} files");
+}
