@@ -2,6 +2,7 @@
 //! HDR synthesis, the sky, the sun and the daylighting engine.
 
 pub mod bsdf;
+pub mod cal;
 pub mod calibration;
 pub mod camera;
 pub mod campaign;
