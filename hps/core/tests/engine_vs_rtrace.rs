@@ -23,12 +23,9 @@
 //! different random seeds (`-u+`); ours runs 2^17 paths per sensor.
 
 use glam::DVec3;
-use skylux_hps::engine::{self, Settings, World};
-use skylux_hps::scene;
 mod common;
-use common::radiance::{
-    agreement_failures, check_output, radiance_or_skip, rtrace_lux_runs, tool, RTRACE_PATH_TRACING,
-};
+use common::compare::{compare_with_rtrace, sky, Effort};
+use common::radiance::{radiance_or_skip, RTRACE_PATH_TRACING};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 
@@ -45,11 +42,6 @@ const OUR_SAMPLES: u32 = if cfg!(target_arch = "arm") {
 } else {
     131_072
 };
-
-/// The glows that complete `gensky`/`gendaylit` output (gensky man page).
-const SKY_GLOWS: &str =
-    "\nskyfunc glow sky_glow 0 0 4 1 1 1 0\nsky_glow source sky 0 0 4 0 0 1 180\n\
-    skyfunc glow ground_glow 0 0 4 1 1 1 0\nground_glow source ground 0 0 4 0 0 -1 180\n";
 
 /// A room's RADIANCE text, built in the room's own frame (façade in the plane y = 0, the
 /// room at y > 0) and turned by `rotation_deg` about the vertical through the origin
@@ -257,61 +249,16 @@ fn corner_room() -> (String, String) {
     (r.text, sensors)
 }
 
-/// Sky text from a RADIANCE generator (`gensky` or `gendaylit`), completed with the glows.
-fn sky(bin: &Path, lib: &Option<PathBuf>, generator: &str, args: &[&str]) -> Vec<u8> {
-    let mut c = tool(bin, lib, generator);
-    c.args(args);
-    let mut text = check_output(c, None);
-    text.extend_from_slice(SKY_GLOWS.as_bytes());
-    text
-}
-
 /// Runs both programs on `room` + `sky_text` at `sensors` and asserts agreement.
 fn compare(label: &str, room_files: &[PathBuf], sky_text: &[u8], sensors: &[u8], dir: &Path) {
-    let Some((bin, lib)) = radiance_or_skip() else {
-        return;
+    let effort = Effort {
+        rtrace_args: RTRACE_PATH_TRACING,
+        rtrace_samples: RTRACE_SAMPLES,
+        our_samples: OUR_SAMPLES,
+        our_bounces: 8,
+        k_sigma: 4.0,
     };
-    let sky_path = dir.join(format!("{label}-sky.rad"));
-    std::fs::write(&sky_path, sky_text).unwrap();
-    let octree = dir.join(format!("{label}.oct"));
-    let mut oconv = tool(&bin, &lib, "oconv");
-    oconv.current_dir(dir).args(room_files).arg(&sky_path);
-    std::fs::write(&octree, check_output(oconv, None)).unwrap();
-    let start = std::time::Instant::now();
-    let reference = rtrace_lux_runs(
-        &bin,
-        &lib,
-        dir,
-        &octree,
-        sensors,
-        RTRACE_PATH_TRACING,
-        RTRACE_SAMPLES,
-    );
-    let rtrace_s = start.elapsed().as_secs_f64();
-
-    let mut files: Vec<PathBuf> = room_files.to_vec();
-    files.push(sky_path);
-    let scene = scene::load_files(&files).unwrap();
-    let sensors = scene::parse_sensors(format!("{label}.pts"), sensors).unwrap();
-    let world = World::new(&scene).unwrap();
-    let settings = Settings {
-        ambient_bounces: 8,
-        samples_per_sensor: OUR_SAMPLES,
-        seed: 77,
-        ..Settings::default()
-    };
-    let start = std::time::Instant::now();
-    let ours = engine::illuminance(&world, &sensors, &settings, &|_, _| {}).unwrap();
-    println!(
-        "{label}: rtrace {RTRACE_SAMPLES} x 4096 paths/sensor in {rtrace_s:.2} s; ours {OUR_SAMPLES} paths/sensor in {:.2} s",
-        start.elapsed().as_secs_f64()
-    );
-    assert!(
-        ours.iter().all(|o| o.illuminance_lux > 1.0),
-        "{label}: every sensor is lit: {ours:?}"
-    );
-    let failures = agreement_failures(label, &ours, &reference, 4.0);
-    assert!(failures.is_empty(), "{label}: {failures:?}");
+    compare_with_rtrace(label, room_files, sky_text, sensors, dir, dir, &effort);
 }
 
 /// Writes a generated room and returns its path.

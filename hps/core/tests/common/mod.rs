@@ -1,2 +1,3 @@
+pub mod compare;
 pub mod primitives;
 pub mod radiance;

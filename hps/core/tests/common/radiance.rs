@@ -37,6 +37,14 @@ pub fn radiance() -> Option<(PathBuf, Option<PathBuf>)> {
 
 pub fn tool(bin: &Path, lib: &Option<PathBuf>, name: &str) -> Command {
     let mut c = Command::new(bin.join(name));
+    // The folder first on PATH: a scene's inline commands (`!xform ...`) that oconv runs
+    // must find the same programs, not fail and leave the scene empty.
+    let mut path = std::ffi::OsString::from(bin);
+    if let Some(old) = std::env::var_os("PATH") {
+        path.push(":");
+        path.push(old);
+    }
+    c.env("PATH", path);
     if let Some(lib) = lib {
         // "." first, as RADIANCE's default RAYPATH has it: function files beside the scene.
         let mut path = std::ffi::OsString::from(".:");
