@@ -71,32 +71,27 @@ impl Verdict {
 
     /// One line for the report: the statistic against its threshold.
     pub fn describe(&self) -> String {
-        if self.confirmation {
-            return format!(
-                "identified without the lux-meters; confirmed by the hold-out set: gain {:.2} \
-                 points ({:.0} % of the error; needs {:.0} %), {} = {:.1} over {} units (no \
-                 significant rise: above −{:.2})",
-                100.0 * self.gain,
-                100.0 * self.relative_gain,
-                100.0 * MIN_RELATIVE_GAIN,
-                if self.projection { "z" } else { "t" },
-                self.t,
-                self.units,
-                self.t_critical
-            );
-        }
-        format!(
-            "gain {:.2} points ({:.0} % of the error; needs {:.0} %), {} = {:.1} over {} \
-             units (needs {:.2}, one-sided α = {})",
+        let gain = format!(
+            "gain {:.2} points ({:.0} % of the error; needs {:.0} %), {} = {:.1} over {} units",
             100.0 * self.gain,
             100.0 * self.relative_gain,
             100.0 * MIN_RELATIVE_GAIN,
             if self.projection { "z" } else { "t" },
             self.t,
             self.units,
-            self.t_critical,
-            ACCEPT_ALPHA
-        )
+        );
+        if self.confirmation {
+            format!(
+                "identified without the lux-meters; confirmed by the hold-out set: {gain} (no \
+                 significant rise: above −{:.2})",
+                self.t_critical
+            )
+        } else {
+            format!(
+                "{gain} (needs {:.2}, one-sided α = {})",
+                self.t_critical, ACCEPT_ALPHA
+            )
+        }
     }
 }
 
