@@ -26,6 +26,8 @@ pub struct ApiState {
     pub cycles_failed: u64,
     /// Failures per kind (`sensor_absent`, `output`, ...).
     pub failures_by_kind: std::collections::BTreeMap<String, u64>,
+    /// Successful cycles whose record carried each plausibility flag.
+    pub plausibility_by_flag: std::collections::BTreeMap<String, u64>,
     pub last_durations: Option<StageDurations>,
     /// Time to write the last successful cycle's results, ms.
     pub last_output_ms: f64,
@@ -148,6 +150,15 @@ fn metrics(s: &ApiState) -> String {
         s.failures_by_kind
             .iter()
             .map(|(k, v)| (format!("{{kind=\"{k}\"}}"), *v as f64))
+            .collect(),
+    );
+    put(
+        "skyluxd_plausibility_flags_total",
+        "counter",
+        "Successful cycles with a value outside physical bounds, by flag.",
+        s.plausibility_by_flag
+            .iter()
+            .map(|(k, v)| (format!("{{flag=\"{k}\"}}"), *v as f64))
             .collect(),
     );
     put(
@@ -279,6 +290,7 @@ mod tests {
                 message: "m".into(),
                 time: "t".into(),
             }),
+            plausibility_by_flag: [("outdoor_above_clear_sky_bound".to_string(), 3)].into(),
             ..ApiState::default()
         };
         let v: serde_json::Value =
@@ -287,6 +299,12 @@ mod tests {
         assert_eq!(v["last_error"]["kind"], "i2c_nack");
         let m = respond("GET", "/v1/metrics", &degraded).2;
         assert!(m.contains("skyluxd_consecutive_failures 2"), "{m}");
+        assert!(
+            m.contains(
+                "skyluxd_plausibility_flags_total{flag=\"outdoor_above_clear_sky_bound\"} 3"
+            ),
+            "{m}"
+        );
     }
 
     #[test]

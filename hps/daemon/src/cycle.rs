@@ -14,7 +14,7 @@
 
 use crate::config::Config;
 use crate::source::CaptureSet;
-use chrono::Utc;
+use chrono::{Datelike, Utc};
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 use skylux_hps::camera::{CameraModel, DeviceConfig};
@@ -134,8 +134,13 @@ pub struct SunRecord {
     /// Direct-normal illuminance of the extracted disk, lux.
     #[serde(default)]
     pub direct_normal_lux: Option<f64>,
-    /// `saturated`, `partly_covered`, `other_candidates`.
+    /// `saturated`, `partly_covered`, `other_candidates`; without a sun, the reason's flag
+    /// (`sun_below_horizon`, `no_direct_sun`, `sun_out_of_view`, `no_candidate_near_spa`,
+    /// `all_saturated`, `sun_not_measurable`): `extracted = false` never comes without one.
     pub flags: Vec<String>,
+    /// Without a sun, why, in words (the flag's long form).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub missing_reason: Option<String>,
 }
 
 /// How long each stage took, milliseconds.
@@ -179,6 +184,13 @@ pub struct CycleRecord {
     #[serde(default)]
     pub capture: Option<String>,
     pub durations_ms: StageDurations,
+    /// In simulation, the simulated world's own outdoor global horizontal illuminance, lux,
+    /// beside the measured `outdoor_horizontal_lux` (absent on real hardware).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub truth_outdoor_horizontal_lux: Option<f64>,
+    /// Values outside physical bounds (`plausibility.rs`): empty when all are plausible.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub plausibility: Vec<String>,
 }
 
 /// What the cycle hands to the output stage besides the record.
@@ -452,7 +464,7 @@ impl Pipeline {
         let monte_carlo_ms = ms(t);
 
         let sun = &terms.sun;
-        let record = CycleRecord {
+        let mut record = CycleRecord {
             time: set.time.to_rfc3339(),
             sequence: 0,
             source: source.to_string(),
@@ -463,10 +475,12 @@ impl Pipeline {
                 extracted_altitude_deg: sun.as_ref().map(|s| altitude_deg(s.direction)),
                 extracted_azimuth_deg: sun.as_ref().map(|s| azimuth_deg(s.direction)),
                 direct_normal_lux: sun.as_ref().map(|s| s.direct_normal_illuminance_lux),
-                flags: sun
-                    .as_ref()
-                    .map(|s| s.flags.iter().map(|f| sun_flag(*f).to_string()).collect())
-                    .unwrap_or_default(),
+                flags: match (sun, &terms.sun_missing) {
+                    (Some(s), _) => s.flags.iter().map(|f| sun_flag(*f).to_string()).collect(),
+                    (None, Some(why)) => vec![why.flag().to_string()],
+                    (None, None) => vec!["sun_missing_unexplained".to_string()],
+                },
+                missing_reason: terms.sun_missing.as_ref().map(|why| why.to_string()),
             },
             illuminance: self
                 .room
@@ -493,7 +507,15 @@ impl Pipeline {
                 monte_carlo_ms,
                 total_ms: capture_ms + ms(started),
             },
+            truth_outdoor_horizontal_lux: set.truth_outdoor_horizontal_lux,
+            plausibility: vec![],
         };
+        let day_of_year = set.time.ordinal() as u16;
+        record.plausibility =
+            crate::plausibility::check(&record, self.site.elevation_m, day_of_year)
+                .into_iter()
+                .map(str::to_string)
+                .collect();
         Ok(CycleProducts { record, map })
     }
 

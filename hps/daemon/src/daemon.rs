@@ -514,6 +514,8 @@ impl Daemon<'_> {
             time = %record.time,
             sun_altitude_deg = record.sun.spa_altitude_deg,
             sun_extracted = record.sun.extracted,
+            sun_flags = ?record.sun.flags,
+            plausibility = ?record.plausibility,
             sensors = record.illuminance.len(),
             first_lux = record.illuminance.first().map_or(f64::NAN, |s| s.lux),
             capture_ms = record.durations_ms.capture_ms,
@@ -531,6 +533,9 @@ impl Daemon<'_> {
             s.consecutive_failures = 0;
             s.last_durations = Some(record.durations_ms.clone());
             s.last_output_ms = output_ms;
+            for flag in &record.plausibility {
+                *s.plausibility_by_flag.entry(flag.clone()).or_default() += 1;
+            }
             s.latest = Some(record);
         }
         match &mut self.clock {

@@ -344,6 +344,7 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
             config: self.capture_config(at),
             frames,
             frame_flags,
+            truth_outdoor_horizontal_lux: None,
         })
     }
 
@@ -771,6 +772,11 @@ impl CaptureSource for SimFabricSource {
             Ok(mut s) => s.luminance_cd_m2 = Box::new(world),
             Err(p) => p.into_inner().luminance_cd_m2 = Box::new(world),
         }
-        self.inner.capture(at)
+        let mut set = self.inner.capture(at)?;
+        set.truth_outdoor_horizontal_lux = Some(
+            crate::source::sim_outdoor_horizontal_lux(&self.site, self.sky, at)
+                .map_err(SourceError::Other)?,
+        );
+        Ok(set)
     }
 }

@@ -28,6 +28,7 @@ pub mod fabric_source;
 pub mod hardware;
 pub mod notify;
 pub mod output;
+pub mod plausibility;
 pub mod privilege;
 pub mod source;
 pub mod spawn;

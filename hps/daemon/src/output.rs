@@ -554,7 +554,8 @@ mod tests {
                 extracted_altitude_deg: None,
                 extracted_azimuth_deg: None,
                 direct_normal_lux: None,
-                flags: vec![],
+                flags: vec!["no_direct_sun".into()],
+                missing_reason: Some("no sun extracted: no direct sun in the map".into()),
             },
             illuminance: vec![crate::cycle::SensorLux {
                 sensor: "S1".into(),
@@ -567,6 +568,8 @@ mod tests {
             map: None,
             capture: None,
             durations_ms: Default::default(),
+            truth_outdoor_horizontal_lux: None,
+            plausibility: vec![],
         }
     }
 

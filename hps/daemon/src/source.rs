@@ -29,6 +29,9 @@ pub struct CaptureSet {
     pub frames: Vec<RawFrame>,
     /// Per frame, the names of the DMA descriptor flags that were set (empty: a good frame).
     pub frame_flags: Vec<Vec<String>>,
+    /// In simulation, the world's own outdoor global horizontal illuminance, lux (what the
+    /// measurement is checked against); `None` from real hardware.
+    pub truth_outdoor_horizontal_lux: Option<f64>,
 }
 
 impl CaptureSet {
@@ -145,6 +148,65 @@ impl SimSource {
     }
 }
 
+/// The simulated world's sky at `at`: the Perez sky and whether it has a sun (None with the
+/// sun under [`MIN_SUN_ALTITUDE_DEG`]), and the sun's direction.
+fn sim_sky(
+    site: &Site,
+    sky_kind: SimSky,
+    at: DateTime<FixedOffset>,
+) -> Result<(Option<(PerezSky, bool)>, DVec3), String> {
+    let sun = solar_position(at.with_timezone(&Utc), site, None).map_err(|e| e.to_string())?;
+    let sun_dir = sun.direction();
+    let altitude = sun.altitude_deg();
+    if altitude < MIN_SUN_ALTITUDE_DEG {
+        return Ok((None, sun_dir));
+    }
+    let (dni_clear, dhi_clear) = ashrae_clear_day_w_m2(altitude.to_radians());
+    let (dni, dhi) = match sky_kind {
+        SimSky::Clear => (dni_clear, dhi_clear),
+        // Overcast as in the campaign simulator: no beam, 35 % of the clear global.
+        SimSky::Overcast => (
+            0.0,
+            0.35 * (dni_clear * altitude.to_radians().sin() + dhi_clear),
+        ),
+    };
+    let perez = PerezSky::new(
+        PerezInput::DirectNormalDiffuse {
+            direct_normal_w_m2: dni,
+            diffuse_horizontal_w_m2: dhi,
+        },
+        &PerezConditions {
+            day_of_year: at.ordinal() as u16,
+            ground_reflectance: GROUND_REFLECTANCE,
+            ..PerezConditions::gendaylit_ang(sun_dir)
+        },
+    )
+    .map_err(|e| e.to_string())?;
+    Ok((Some((perez, dni > 0.0)), sun_dir))
+}
+
+/// The simulated world's own outdoor global horizontal illuminance at `at`, lux: the Perez
+/// sky's diffuse horizontal plus the beam on the horizontal, as the world is defined (not as
+/// the device measures it): the truth the daemon's measurement is checked against.
+pub fn sim_outdoor_horizontal_lux(
+    site: &Site,
+    sky_kind: SimSky,
+    at: DateTime<FixedOffset>,
+) -> Result<f64, String> {
+    let (sky, sun_dir) = sim_sky(site, sky_kind, at)?;
+    Ok(match &sky {
+        Some((p, with_sun)) => {
+            p.diffuse_horizontal_illuminance_lux()
+                + if *with_sun {
+                    p.direct_normal_illuminance_lux() * sun_dir.z.max(0.0)
+                } else {
+                    0.0
+                }
+        }
+        None => 0.0,
+    })
+}
+
 /// The luminance of the simulated world (SPA sun, ASHRAE clear-day or overcast Perez sky, a
 /// grey ground) in every direction at `at`, cd/m²: what [`SimSource`] renders, and what the
 /// simulated MT9P031 of the fabric source images.
@@ -153,67 +215,30 @@ pub fn sim_world(
     sky_kind: SimSky,
     at: DateTime<FixedOffset>,
 ) -> Result<impl Fn(DVec3) -> f64 + Sync + Send + 'static, String> {
-    {
-        let sun = solar_position(at.with_timezone(&Utc), site, None).map_err(|e| e.to_string())?;
-        let sun_dir = sun.direction();
-        let altitude = sun.altitude_deg();
-        let sky = if altitude >= MIN_SUN_ALTITUDE_DEG {
-            let (dni_clear, dhi_clear) = ashrae_clear_day_w_m2(altitude.to_radians());
-            let (dni, dhi) = match sky_kind {
-                SimSky::Clear => (dni_clear, dhi_clear),
-                // Overcast as in the campaign simulator: no beam, 35 % of the clear global.
-                SimSky::Overcast => (
-                    0.0,
-                    0.35 * (dni_clear * altitude.to_radians().sin() + dhi_clear),
-                ),
-            };
-            let perez = PerezSky::new(
-                PerezInput::DirectNormalDiffuse {
-                    direct_normal_w_m2: dni,
-                    diffuse_horizontal_w_m2: dhi,
-                },
-                &PerezConditions {
-                    day_of_year: at.ordinal() as u16,
-                    ground_reflectance: GROUND_REFLECTANCE,
-                    ..PerezConditions::gendaylit_ang(sun_dir)
-                },
-            )
-            .map_err(|e| e.to_string())?;
-            Some((perez, dni > 0.0))
-        } else {
-            None
-        };
-        let (ground, sun_cd_m2, sun_cos_half) = match &sky {
-            Some((p, with_sun)) => {
-                let horizontal = p.diffuse_horizontal_illuminance_lux()
-                    + if *with_sun {
-                        p.direct_normal_illuminance_lux() * sun_dir.z.max(0.0)
-                    } else {
-                        0.0
-                    };
-                (
-                    GROUND_REFLECTANCE * horizontal / std::f64::consts::PI,
-                    if *with_sun {
-                        p.sun_luminance_cd_m2()
-                    } else {
-                        0.0
-                    },
-                    1.0 - p.sun_solid_angle_sr() / std::f64::consts::TAU,
-                )
-            }
-            None => (0.0, 0.0, 1.0),
-        };
-        Ok(move |d: DVec3| {
-            let Some((perez, _)) = &sky else { return 0.0 };
-            if d.z < 0.0 {
-                ground
-            } else if sun_cd_m2 > 0.0 && d.dot(sun_dir) >= sun_cos_half {
-                sun_cd_m2
+    let horizontal = sim_outdoor_horizontal_lux(site, sky_kind, at)?;
+    let (sky, sun_dir) = sim_sky(site, sky_kind, at)?;
+    let (ground, sun_cd_m2, sun_cos_half) = match &sky {
+        Some((p, with_sun)) => (
+            GROUND_REFLECTANCE * horizontal / std::f64::consts::PI,
+            if *with_sun {
+                p.sun_luminance_cd_m2()
             } else {
-                perez.luminance_cd_m2(d)
-            }
-        })
-    }
+                0.0
+            },
+            1.0 - p.sun_solid_angle_sr() / std::f64::consts::TAU,
+        ),
+        None => (0.0, 0.0, 1.0),
+    };
+    Ok(move |d: DVec3| {
+        let Some((perez, _)) = &sky else { return 0.0 };
+        if d.z < 0.0 {
+            ground
+        } else if sun_cd_m2 > 0.0 && d.dot(sun_dir) >= sun_cos_half {
+            sun_cd_m2
+        } else {
+            perez.luminance_cd_m2(d)
+        }
+    })
 }
 
 /// ASHRAE clear-day model for May (ASHRAE Handbook of Fundamentals 1985, ch. 27, table 1,
@@ -300,6 +325,10 @@ impl CaptureSource for SimSource {
             config,
             frames,
             frame_flags,
+            truth_outdoor_horizontal_lux: Some(
+                sim_outdoor_horizontal_lux(&self.site, self.sim.sky, at)
+                    .map_err(SourceError::Other)?,
+            ),
         })
     }
 }

@@ -13,4 +13,4 @@ pub use captures::{load_captures, load_captures_with, CaptureData};
 pub use error::ModelError;
 pub use prediction::{parts, predict, ModelState};
 pub use room::Room;
-pub use terms::{capture_terms, CaptureTerms};
+pub use terms::{capture_terms, CaptureTerms, SunMissing};

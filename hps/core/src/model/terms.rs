@@ -10,18 +10,43 @@ use super::room::Room;
 use crate::camera::{CameraModel, DeviceConfig};
 use crate::hdr::{GeometryCache, GroupGeometry, LuminanceMap, MapFlag};
 use crate::sky::SkyPatches;
-use crate::sun::{extract_sun, remove_sun, ExtractedSun, SunSearch};
+use crate::sun::{extract_sun, remove_sun, ExtractedSun, NoSun, SunSearch};
 use glam::DVec3;
 
 /// Minimum fraction of a patch's solid angle the lens must see for the patch to count as
 /// measured.
 pub const MIN_COVERAGE: f64 = 0.3;
 
+/// Why a capture has no extracted sun.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum SunMissing {
+    #[error("the sun is below the horizon (SPA altitude {altitude_deg:.2} deg)")]
+    BelowHorizon { altitude_deg: f64 },
+    #[error("no sun extracted: {0}")]
+    NotFound(#[from] NoSun),
+    #[error("a sun was found but its direct-normal illuminance is not finite")]
+    NotMeasurable,
+}
+
+impl SunMissing {
+    /// The reason as a record flag (snake case, stable: records and the API carry it).
+    pub fn flag(&self) -> &'static str {
+        match self {
+            SunMissing::BelowHorizon { .. } => "sun_below_horizon",
+            SunMissing::NotFound(no_sun) => no_sun.flag(),
+            SunMissing::NotMeasurable => "sun_not_measurable",
+        }
+    }
+}
+
 /// Per capture, what the model derives from the map under one camera orientation.
 #[derive(Clone, Debug)]
 pub struct CaptureTerms {
     /// The sun, if the map shows one.
     pub sun: Option<ExtractedSun>,
+    /// Why `sun` is `None` (always set then; `None` when a sun was extracted): a record
+    /// never says "no sun" without a reason.
+    pub sun_missing: Option<SunMissing>,
     /// Illuminance per sensor from the measured sky and the seen ground, with the sun left
     /// inside the map's patches (spread over its patch: the undersampled sun).
     pub sky_with_sun_lux: Vec<f64>,
@@ -143,12 +168,20 @@ fn terms_of(
         max_offset_deg: 12.0,
         ..Default::default()
     };
-    let sun = if c.spa_sun.z > 0.0 {
-        extract_sun(&c.map, geometry, &search)
-            .ok()
-            .filter(|s| s.direct_normal_illuminance_lux.is_finite())
+    let found = if c.spa_sun.z > 0.0 {
+        match extract_sun(&c.map, geometry, &search) {
+            Ok(s) if s.direct_normal_illuminance_lux.is_finite() => Ok(s),
+            Ok(_) => Err(SunMissing::NotMeasurable),
+            Err(e) => Err(SunMissing::NotFound(e)),
+        }
     } else {
-        None
+        Err(SunMissing::BelowHorizon {
+            altitude_deg: c.spa_sun.z.clamp(-1.0, 1.0).asin().to_degrees(),
+        })
+    };
+    let (sun, sun_missing) = match found {
+        Ok(s) => (Some(s), None),
+        Err(e) => (None, Some(e)),
     };
     let (with_sun, seen, horizontal_map) = bins(patches, &c.map, geometry);
     // With a sun extracted, the outdoor horizontal illuminance is the sky without the
@@ -175,6 +208,7 @@ fn terms_of(
         None => (vec![0.0; sensors], 0.0),
     };
     Ok(CaptureTerms {
+        sun_missing,
         sky_with_sun_lux: room.dc.apply_seen(&with_sun),
         sky_without_sun_lux: room.dc.apply_seen(&without_sun),
         sun_lux_per_dn_lux,

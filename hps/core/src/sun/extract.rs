@@ -19,7 +19,8 @@ pub const SOLAR_DISK_SR: f64 = 6.794e-5;
 /// How to look for the sun.
 #[derive(Clone, Debug)]
 pub struct SunSearch {
-    /// Groups at or above this luminance are sun candidates (cd/m²).
+    /// Groups at or above this luminance are sun candidates (cd/m²); a group larger than the
+    /// solar disk needs this times Ω_disk / Ω_group (it integrates the disk over itself).
     pub threshold_cd_m2: f64,
     /// Where the sun should be (from the solar position and the camera orientation).
     pub predicted_direction: Option<DVec3>,
@@ -83,6 +84,18 @@ pub enum NoSun {
     AllSaturated,
 }
 
+impl NoSun {
+    /// The reason as a record flag (snake case, stable: records and the API carry it).
+    pub fn flag(&self) -> &'static str {
+        match self {
+            NoSun::BelowThreshold { .. } => "no_direct_sun",
+            NoSun::OutsideFieldOfView => "sun_out_of_view",
+            NoSun::FarFromPrediction { .. } => "no_candidate_near_spa",
+            NoSun::AllSaturated => "all_saturated",
+        }
+    }
+}
+
 fn angle_deg(a: DVec3, b: DVec3) -> f64 {
     a.cross(b).length().atan2(a.dot(b)).to_degrees()
 }
@@ -114,11 +127,18 @@ pub fn extract_sun(
             return Err(NoSun::OutsideFieldOfView);
         }
     }
+    // A group larger than the disk that integrates its footprint (a binned readout, or the
+    // simulator's integrated footprint) holds a whole disk's flux diluted over its own solid
+    // angle: its threshold is the luminance a disk at the threshold gives over the group.
+    // Groups no larger than the disk keep the luminance threshold.
+    let threshold = |i: usize| {
+        search.threshold_cd_m2 * (SOLAR_DISK_SR / geometry.solid_angle_sr[i] as f64).min(1.0)
+    };
     let candidate = |i: usize| {
         seen(i)
             && (map.flags[i] == MapFlag::OverRange
                 || (map.flags[i] == MapFlag::Valid
-                    && map.luminance_cd_m2[i] as f64 >= search.threshold_cd_m2))
+                    && map.luminance_cd_m2[i] as f64 >= threshold(i)))
     };
     // 8-connected components of candidates.
     let mut label = vec![usize::MAX; n];

@@ -462,6 +462,9 @@ mod angular_tests {
         seen[n + ground] = false;
         let terms = CaptureTerms {
             sun: None,
+            sun_missing: Some(crate::model::terms::SunMissing::BelowHorizon {
+                altitude_deg: -10.0,
+            }),
             sky_with_sun_lux: vec![300.0],
             sky_without_sun_lux: vec![300.0],
             sun_lux_per_dn_lux: vec![0.0],

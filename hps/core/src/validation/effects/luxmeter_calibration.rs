@@ -121,6 +121,7 @@ mod tests {
                     .collect();
                 Terms::new(CaptureTerms {
                     sun: None,
+                    sun_missing: Some(crate::model::terms::SunMissing::BelowHorizon { altitude_deg: -10.0 }),
                     sky_with_sun_lux: sky.clone(),
                     sky_without_sun_lux: sky,
                     sun_lux_per_dn_lux: vec![0.0; n_sensors],
