@@ -41,7 +41,10 @@ fn a_clear_day_reads_as_the_simulated_world_and_every_missing_sun_says_why() {
         (l.len() as u64 >= cycles).then_some(l)
     });
     // `--cycles` done: the daemon exits on its own.
-    assert!(child.wait().unwrap().success(), "skyluxd did not exit cleanly");
+    assert!(
+        child.wait().unwrap().success(),
+        "skyluxd did not exit cleanly"
+    );
     let mut extracted = 0;
     let mut off = vec![];
     for line in &lines {
