@@ -23,7 +23,7 @@ use skylux_hps::engine::{self, DaylightCoefficients, Settings, World};
 use skylux_hps::hdr::{merge, GroupGeometry, LuminanceMap};
 use skylux_hps::model::{capture_terms, predict, CaptureData, CaptureTerms, ModelState, Room};
 use skylux_hps::sky::SkyPatches;
-use skylux_hps::sun::{remove_sun, solar_position, Site, SunFlag, SOLAR_DISK_SR};
+use skylux_hps::sun::{remove_sun, solar_position, Site, SOLAR_DISK_SR};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
@@ -134,9 +134,10 @@ pub struct SunRecord {
     /// Direct-normal illuminance of the extracted disk, lux.
     #[serde(default)]
     pub direct_normal_lux: Option<f64>,
-    /// `saturated`, `partly_covered`, `other_candidates`; without a sun, the reason's flag
-    /// (`sun_below_horizon`, `no_direct_sun`, `sun_out_of_view`, `no_candidate_near_spa`,
-    /// `all_saturated`, `sun_not_measurable`): `extracted = false` never comes without one.
+    /// `saturated`, `partly_covered`, `other_candidates`; without a sun, `no_sun:` and the
+    /// reason, as `sun.csv` writes it (`below_horizon`, `below_threshold`,
+    /// `outside_field_of_view`, `far_from_prediction`, `all_saturated`, `not_measurable`):
+    /// `extracted = false` never comes without one.
     pub flags: Vec<String>,
     /// Without a sun, why, in words (the flag's long form).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -476,9 +477,9 @@ impl Pipeline {
                 extracted_azimuth_deg: sun.as_ref().map(|s| azimuth_deg(s.direction)),
                 direct_normal_lux: sun.as_ref().map(|s| s.direct_normal_illuminance_lux),
                 flags: match (sun, &terms.sun_missing) {
-                    (Some(s), _) => s.flags.iter().map(|f| sun_flag(*f).to_string()).collect(),
-                    (None, Some(why)) => vec![why.flag().to_string()],
-                    (None, None) => vec!["sun_missing_unexplained".to_string()],
+                    (Some(s), _) => s.flags.iter().map(|f| f.name().to_string()).collect(),
+                    (None, Some(why)) => vec![format!("no_sun:{}", why.tag())],
+                    (None, None) => vec!["no_sun:unexplained".to_string()],
                 },
                 missing_reason: terms.sun_missing.as_ref().map(|why| why.to_string()),
             },
@@ -602,14 +603,6 @@ fn altitude_deg(d: DVec3) -> f64 {
 /// Azimuth from north towards east, [0, 360) (campaign.md conventions).
 fn azimuth_deg(d: DVec3) -> f64 {
     d.x.atan2(d.y).to_degrees().rem_euclid(360.0)
-}
-
-fn sun_flag(f: SunFlag) -> &'static str {
-    match f {
-        SunFlag::Saturated => "saturated",
-        SunFlag::PartlyCovered => "partly_covered",
-        SunFlag::OtherCandidates => "other_candidates",
-    }
 }
 
 #[cfg(test)]

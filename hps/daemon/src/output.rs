@@ -554,7 +554,7 @@ mod tests {
                 extracted_altitude_deg: None,
                 extracted_azimuth_deg: None,
                 direct_normal_lux: None,
-                flags: vec!["no_direct_sun".into()],
+                flags: vec!["no_sun:below_threshold".into()],
                 missing_reason: Some("no sun extracted: no direct sun in the map".into()),
             },
             illuminance: vec![crate::cycle::SensorLux {

@@ -86,7 +86,7 @@ fn a_clear_day_reads_as_the_simulated_world_and_every_missing_sun_says_why() {
                 "{time}: no sun and no reason in words"
             );
             if altitude <= 0.0 {
-                assert_eq!(flags, ["sun_below_horizon"], "{time}");
+                assert_eq!(flags, ["no_sun:below_horizon"], "{time}");
             }
         }
     }

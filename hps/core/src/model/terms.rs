@@ -29,12 +29,12 @@ pub enum SunMissing {
 }
 
 impl SunMissing {
-    /// The reason as a record flag (snake case, stable: records and the API carry it).
-    pub fn flag(&self) -> &'static str {
+    /// The reason as a short tag, as `sun.csv` writes it after `no_sun:`.
+    pub fn tag(&self) -> &'static str {
         match self {
-            SunMissing::BelowHorizon { .. } => "sun_below_horizon",
-            SunMissing::NotFound(no_sun) => no_sun.flag(),
-            SunMissing::NotMeasurable => "sun_not_measurable",
+            SunMissing::BelowHorizon { .. } => "below_horizon",
+            SunMissing::NotFound(no_sun) => no_sun.tag(),
+            SunMissing::NotMeasurable => "not_measurable",
         }
     }
 }

@@ -85,13 +85,25 @@ pub enum NoSun {
 }
 
 impl NoSun {
-    /// The reason as a record flag (snake case, stable: records and the API carry it).
-    pub fn flag(&self) -> &'static str {
+    /// The reason as a short tag (stable: `sun.csv` and `skyluxd`'s records write it after
+    /// `no_sun:`).
+    pub fn tag(&self) -> &'static str {
         match self {
-            NoSun::BelowThreshold { .. } => "no_direct_sun",
-            NoSun::OutsideFieldOfView => "sun_out_of_view",
-            NoSun::FarFromPrediction { .. } => "no_candidate_near_spa",
+            NoSun::BelowThreshold { .. } => "below_threshold",
+            NoSun::OutsideFieldOfView => "outside_field_of_view",
+            NoSun::FarFromPrediction { .. } => "far_from_prediction",
             NoSun::AllSaturated => "all_saturated",
+        }
+    }
+}
+
+impl SunFlag {
+    /// The flag's name in `sun.csv` and `skyluxd`'s records.
+    pub fn name(self) -> &'static str {
+        match self {
+            SunFlag::Saturated => "saturated",
+            SunFlag::PartlyCovered => "partly_covered",
+            SunFlag::OtherCandidates => "other_candidates",
         }
     }
 }

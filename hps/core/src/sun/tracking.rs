@@ -139,24 +139,6 @@ impl SunTrack {
     }
 }
 
-/// Name of a flag in `sun.csv`.
-pub fn flag_name(flag: SunFlag) -> &'static str {
-    match flag {
-        SunFlag::Saturated => "saturated",
-        SunFlag::PartlyCovered => "partly_covered",
-        SunFlag::OtherCandidates => "other_candidates",
-    }
-}
-
-fn no_sun_tag(reason: &NoSun) -> &'static str {
-    match reason {
-        NoSun::BelowThreshold { .. } => "below_threshold",
-        NoSun::OutsideFieldOfView => "outside_field_of_view",
-        NoSun::FarFromPrediction { .. } => "far_from_prediction",
-        NoSun::AllSaturated => "all_saturated",
-    }
-}
-
 /// Why tracking could not run. Every variant names the file or folder.
 #[derive(Debug, thiserror::Error)]
 pub enum TrackingError {
@@ -300,7 +282,7 @@ pub fn track_capture(
 /// per group): it is out of view, not hidden (the extraction only knows there is no imaged
 /// group near it when none is within its search radius).
 fn record_no_sun(track: &mut SunTrack, reason: &NoSun, directions: &[glam::Vec3], spa: DVec3) {
-    track.no_sun = Some(no_sun_tag(reason));
+    track.no_sun = Some(reason.tag());
     track.note = Some(reason.to_string());
     if matches!(reason, NoSun::BelowThreshold { .. }) {
         let cos_nearest = directions

@@ -1,7 +1,7 @@
 //! The files `skylux sun` writes: `sun.csv`, one row per capture, and `sun.png`.
 
 use super::position::angle_between_deg;
-use super::tracking::{flag_name, DniSource, SunTrack, TrackingError};
+use super::tracking::{DniSource, SunTrack, TrackingError};
 use crate::camera::alt_az_from_direction;
 use crate::output::plot::{panels_png, Frame, Panel, Series};
 use crate::output::write_atomic;
@@ -40,7 +40,7 @@ pub fn csv_text(tracks: &[SunTrack], fitted: Option<&[Option<DVec3>]>) -> String
         let measured = t.measured_direction.map(alt_az_from_direction);
         let fit_dir = fitted.and_then(|f| f.get(i).copied().flatten());
         let fit = fit_dir.map(alt_az_from_direction);
-        let mut flags: Vec<String> = t.flags.iter().map(|f| flag_name(*f).to_string()).collect();
+        let mut flags: Vec<String> = t.flags.iter().map(|f| f.name().to_string()).collect();
         if let Some(tag) = t.no_sun {
             flags.push(format!("no_sun:{tag}"));
         }
