@@ -129,14 +129,17 @@ pub struct BsdfShading {
 }
 
 impl BsdfShading {
-    /// m_bsdf.c `dir_bsdf`: f(source, viewer) |cos| Ω, with the extra Lambertian parts
-    /// (ρ/π |cos| Ω on their side).
+    /// m_bsdf.c `dir_bsdf`: f |cos| Ω, with the extra Lambertian parts (ρ/π |cos| Ω on their
+    /// side). RADIANCE traces backwards and queries `SDevalBSDF(outVec = view, inVec =
+    /// source)`: the view direction is the data's first direction, as it is for sampling
+    /// (`SDsampComponent` from the view), so a file whose front and back transmissions are
+    /// not reciprocal answers here as in rtrace (Satine: 30 % apart).
     pub fn source_coefficient(&self, ldir: DVec3, omega_sr: f64) -> DVec3 {
         let ldot = self.pnorm.dot(ldir);
         if ldot.abs() <= FTINY {
             return DVec3::ZERO;
         }
-        let f_per_sr = self.data.eval(self.frame.to_local(ldir), self.view_local);
+        let f_per_sr = self.data.eval(self.view_local, self.frame.to_local(ldir));
         let extra = if ldot > 0.0 {
             self.extra_reflectance_rgb
         } else {
