@@ -175,27 +175,61 @@ fn box_room_with_the_electrochromic_glazing() {
     box_room_under_every_sky("ec60", &xml, &effort);
 }
 
-#[test]
-#[ignore]
-fn diagnostic() {
-    let Some(_) = radiance_or_skip() else {
-        return;
-    };
-    let xml = corpus().join(std::env::var("XML").unwrap_or("bsdf/frads/2011-SA1.xml".into()));
-    let refl = std::env::var("REFL").unwrap_or("0".into());
+/// The tutorial's room as `commands/3PM_NonCop.sh` loads it (`oconv -f materials.rad room.rad
+/// overhang/aluminiumGrate.rad`, run in `room/`), in a folder laid out as the tutorial's: the
+/// room's files, with the grate's XML (kept apart in the corpus) at `overhang/metalGrate.xml`
+/// where the scene names it. Returns the folder (kept alive by the `TempDir`).
+fn tutorial_room_with_the_grate() -> tempfile::TempDir {
+    let corpus = corpus();
+    let room = corpus.join("sariths-matrix-tutorial/room");
     let dir = tempfile::tempdir().unwrap();
-    let room = dir.path().join("room.rad");
-    std::fs::write(
-        &room,
-        box_room(&xml)
-            .replace("0.5 0.5 0.5 0 0", &format!("{refl} {refl} {refl} 0 0"))
-            .replace("0.2 0.2 0.2 0 0", &format!("{refl} {refl} {refl} 0 0"))
-            .replace("0.7 0.7 0.7 0 0", &format!("{refl} {refl} {refl} 0 0")),
+    for entry in ["materials.rad", "room.rad", "objects", "points.txt"] {
+        std::os::unix::fs::symlink(room.join(entry), dir.path().join(entry)).unwrap();
+    }
+    let overhang = dir.path().join("overhang");
+    std::fs::create_dir(&overhang).unwrap();
+    std::os::unix::fs::symlink(
+        room.join("overhang/aluminiumGrate.rad"),
+        overhang.join("aluminiumGrate.rad"),
     )
     .unwrap();
-    let sky_text = std::env::var("SKY").unwrap_or(
-        "void light solar 0 0 3 1e5 1e5 1e5\nsolar source sun 0 0 4 0 -0.5 0.866 0.533\n".into(),
+    std::os::unix::fs::symlink(
+        corpus.join("bsdf/sariths-matrix-tutorial/room/overhang/metalGrate.xml"),
+        overhang.join("metalGrate.xml"),
+    )
+    .unwrap();
+    dir
+}
+
+/// The tutorial's own sky (New York, 20 March 10:30 EDT, DNI 706, DHI 162 W/m²): the sun is
+/// high in the south-east, through the grate into the window. Every eighth of the
+/// tutorial's 99 workplane points.
+#[test]
+fn tutorial_room_with_its_aluminium_grate_overhang() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let dir = tutorial_room_with_the_grate();
+    let sky_text = sky(
+        &bin,
+        &lib,
+        "gendaylit",
+        &[
+            "3", "20", "10:30EDT", "-m", "75", "-o", "73.96", "-a", "40.78", "-W", "706", "162",
+        ],
     );
+    let points = std::fs::read_to_string(dir.path().join("points.txt")).unwrap();
+    let sensors: String = points
+        .lines()
+        .filter(|l| !l.trim().is_empty())
+        .step_by(8)
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let files = [
+        PathBuf::from("materials.rad"),
+        PathBuf::from("room.rad"),
+        PathBuf::from("overhang/aluminiumGrate.rad"),
+    ];
     let effort = Effort {
         rtrace_args: RTRACE_BSDF,
         rtrace_samples: 8,
@@ -204,12 +238,68 @@ fn diagnostic() {
         k_sigma: 3.0,
     };
     compare_with_rtrace(
-        "diag",
-        &[room],
-        sky_text.as_bytes(),
-        BOX_SENSORS.as_bytes(),
+        "tutorial-grate",
+        &files,
+        &sky_text,
+        sensors.as_bytes(),
         dir.path(),
         dir.path(),
         &effort,
     );
+}
+
+/// A scene naming `xml` (relative to the scene's folder) as a BSDF, loaded into the engine.
+fn load_with_bsdf(dir: &Path, xml: &str) -> String {
+    let scene_path = dir.join("window.rad");
+    std::fs::write(
+        &scene_path,
+        format!(
+            "# a window\nvoid BSDF shade\n6 0 {xml} 0 0 1 .\n0\n0\n\
+             shade polygon w 0 0 12 0 0 0 1 0 0 1 0 1 0 0 1\n"
+        ),
+    )
+    .unwrap();
+    match scene::load(&scene_path) {
+        Err(e) => e.to_string(),
+        Ok(scene) => match World::new(&scene) {
+            Err(e) => e.to_string(),
+            Ok(_) => panic!("{xml}: loaded"),
+        },
+    }
+}
+
+#[test]
+fn a_missing_xml_names_the_scene_file_line_and_xml() {
+    let dir = tempfile::tempdir().unwrap();
+    let message = load_with_bsdf(dir.path(), "shades/absent.xml");
+    for part in ["window.rad:2", "`shade`", "shades/absent.xml", "BSDF file"] {
+        assert!(message.contains(part), "{part} not in: {message}");
+    }
+}
+
+#[test]
+fn a_malformed_xml_names_the_scene_file_line_and_the_xml_element() {
+    let dir = tempfile::tempdir().unwrap();
+    let satine = std::fs::read_to_string(corpus().join("bsdf/frads/2011-SA1.xml")).unwrap();
+    // Truncated in the middle of its first scattering matrix.
+    let cut = satine.find("<ScatteringData>").unwrap() + 200;
+    std::fs::write(dir.path().join("cut.xml"), &satine[..cut]).unwrap();
+    let message = load_with_bsdf(dir.path(), "cut.xml");
+    for part in ["window.rad:2", "BSDF `shade`", "cut.xml"] {
+        assert!(message.contains(part), "{part} not in: {message}");
+    }
+    // A well-formed file whose matrix has a value too few for its basis.
+    let start = satine.find("<ScatteringData>").unwrap() + "<ScatteringData>".len();
+    let first_value_end = start + satine[start..].find(',').unwrap() + 1;
+    let short = format!("{}{}", &satine[..start], &satine[first_value_end..]);
+    std::fs::write(dir.path().join("short.xml"), short).unwrap();
+    let message = load_with_bsdf(dir.path(), "short.xml");
+    for part in [
+        "window.rad:2",
+        "BSDF `shade`",
+        "short.xml:",
+        "<ScatteringData>",
+    ] {
+        assert!(message.contains(part), "{part} not in: {message}");
+    }
 }

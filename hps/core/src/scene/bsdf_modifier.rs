@@ -4,7 +4,7 @@
 //! `BSDF`: 6+ strings `thick BSDFfile ux uy uz funcfile [transform]`, 0 integers, 0, 3, 6 or
 //! 9 reals (extra diffuse reflectance front, back, then transmittance, RGB each). `aBSDF` has
 //! no thickness. The file is looked up as RADIANCE's `getpath` does with `RAYPATH`, "."
-//! being where `oconv`/`rtrace` would run: the directory of the top-level scene file.
+//! being where `oconv`/`rtrace` would run ([`super::LoadOptions::working_directory`]).
 
 use super::error::ArgumentList;
 use super::parse::{PrimitiveType, RawPrimitive};
@@ -40,9 +40,13 @@ pub struct BsdfModifier {
     pub extra_transmittance_rgb: DVec3,
 }
 
-/// Reads a `BSDF`/`aBSDF` primitive; `top_file` is the top-level scene file (RADIANCE's
-/// working directory is its directory).
-pub(crate) fn build(raw: &RawPrimitive<'_>, top_file: &Path) -> Result<BsdfModifier, SceneError> {
+/// Reads a `BSDF`/`aBSDF` primitive; `top_file` is the top-level scene file being read,
+/// `working_directory` where RADIANCE would run (None: the process's).
+pub(crate) fn build(
+    raw: &RawPrimitive<'_>,
+    top_file: &Path,
+    working_directory: Option<&Path>,
+) -> Result<BsdfModifier, SceneError> {
     let kind = if raw.kind == PrimitiveType::ABsdf {
         BsdfType::ABsdf
     } else {
@@ -104,17 +108,21 @@ pub(crate) fn build(raw: &RawPrimitive<'_>, top_file: &Path) -> Result<BsdfModif
         return Err(raw.invalid("up vector", "0 0 0", "a non-zero vector"));
     }
     let xml_name = s[skip].to_string();
-    let xml_path = find_xml(&xml_name, &raw.at.file, top_file).ok_or_else(|| {
-        raw.invalid(
-            format!("string argument {} (BSDF file)", skip + 1),
-            xml_name.as_str(),
-            format!(
-                "an existing file (looked in {}, beside {} and on RAYPATH)",
-                run_directory(top_file).display(),
-                run_directory(&raw.at.file).display()
-            ),
-        )
-    })?;
+    let run = working_directory.map_or_else(|| PathBuf::from("."), Path::to_path_buf);
+    let searched = search_directories(&xml_name, &run, &raw.at.file, top_file);
+    let xml_path = searched
+        .iter()
+        .map(|dir| dir.join(&xml_name))
+        .find(|p| Path::new(&xml_name).is_absolute() || p.is_file())
+        .filter(|p| p.is_file())
+        .ok_or_else(|| {
+            let dirs: Vec<String> = searched.iter().map(|d| d.display().to_string()).collect();
+            raw.invalid(
+                format!("string argument {} (BSDF file)", skip + 1),
+                xml_name.as_str(),
+                format!("an existing file (looked in: {})", dirs.join(", ")),
+            )
+        })?;
     let rgb = |k: usize| {
         r.get(3 * k..3 * k + 3)
             .map_or(DVec3::ZERO, |c| DVec3::new(c[0], c[1], c[2]))
@@ -136,35 +144,38 @@ pub(crate) fn build(raw: &RawPrimitive<'_>, top_file: &Path) -> Result<BsdfModif
 }
 
 /// The directory a scene file's relative names are taken from.
-fn run_directory(file: &Path) -> PathBuf {
+fn directory_of(file: &Path) -> PathBuf {
     match file.parent() {
         Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
         _ => PathBuf::from("."),
     }
 }
 
-/// RADIANCE's `getpath`: an absolute name as it is; a name starting with `.` from the working
-/// directory only; any other name from each `RAYPATH` entry ("." by default). Skylux's
-/// working directory is the top-level file's; the naming file's own directory is tried after
-/// it, as for every file a scene names.
-fn find_xml(name: &str, naming_file: &Path, top_file: &Path) -> Option<PathBuf> {
-    let path = Path::new(name);
-    let exists = |p: &Path| p.is_file().then(|| p.to_path_buf());
-    if path.is_absolute() {
-        return exists(path);
+/// Where RADIANCE's `getpath` looks for `name`, in order: an absolute name as it is; a name
+/// starting with `.` in the working directory `run` only; any other name in each `RAYPATH`
+/// entry ("." by default, meaning `run`). Skylux then tries the naming file's directory and
+/// the top-level file's, as for every file a scene names.
+fn search_directories(name: &str, run: &Path, naming_file: &Path, top_file: &Path) -> Vec<PathBuf> {
+    if Path::new(name).is_absolute() {
+        return vec![PathBuf::new()];
     }
-    let run = run_directory(top_file);
-    let mut candidates = vec![run.join(path), run_directory(naming_file).join(path)];
-    if !name.starts_with('.') {
-        if let Some(raypath) = std::env::var_os("RAYPATH") {
-            candidates.extend(std::env::split_paths(&raypath).map(|dir| {
-                if dir == Path::new(".") {
-                    run.join(path)
-                } else {
-                    dir.join(path)
-                }
-            }));
+    let mut dirs = Vec::new();
+    if name.starts_with('.') {
+        dirs.push(run.to_path_buf());
+    } else {
+        let raypath = std::env::var_os("RAYPATH").unwrap_or_else(|| ".".into());
+        for dir in std::env::split_paths(&raypath) {
+            dirs.push(if dir == Path::new(".") || dir.as_os_str().is_empty() {
+                run.to_path_buf()
+            } else {
+                dir
+            });
         }
     }
-    candidates.iter().find_map(|c| exists(c))
+    for dir in [directory_of(naming_file), directory_of(top_file)] {
+        if !dirs.contains(&dir) {
+            dirs.push(dir);
+        }
+    }
+    dirs
 }

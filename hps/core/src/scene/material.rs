@@ -171,11 +171,13 @@ pub struct Brightfunc {
 
 /// Interprets a modifier primitive. `resolve` looks up modifier names referenced in string
 /// arguments (mirror's alternate material) as defined before this primitive; `top_file` is
-/// the top-level scene file being read (where RADIANCE would run).
+/// the top-level scene file being read, `working_directory` where RADIANCE would run (both
+/// for the files a modifier names).
 pub(crate) fn build(
     raw: &RawPrimitive<'_>,
     resolve: &dyn Fn(&str) -> Option<ModifierRef>,
     top_file: &Path,
+    working_directory: Option<&Path>,
 ) -> Result<ModifierKind, SceneError> {
     let r = &raw.reals;
     let rgb = |i: usize| DVec3::new(r[i], r[i + 1], r[i + 2]);
@@ -288,7 +290,7 @@ pub(crate) fn build(
             })
         }
         PrimitiveType::Bsdf | PrimitiveType::ABsdf => {
-            ModifierKind::Bsdf(bsdf_modifier::build(raw, top_file)?)
+            ModifierKind::Bsdf(bsdf_modifier::build(raw, top_file, working_directory)?)
         }
         PrimitiveType::Polygon
         | PrimitiveType::Sphere

@@ -277,7 +277,12 @@ impl Scene {
                 }
             })?;
             if raw.kind.is_modifier() {
-                let kind = material::build(&raw, &|name| self.modifier_named(name), &file)?;
+                let kind = material::build(
+                    &raw,
+                    &|name| self.modifier_named(name),
+                    &file,
+                    options.working_directory.as_deref(),
+                )?;
                 if kind.is_material() {
                     self.check_no_material_below(&raw, modifier)?;
                 }

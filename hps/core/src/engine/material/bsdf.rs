@@ -9,8 +9,9 @@
 //!
 //! A non-zero thickness makes the surface a proxy for detailed geometry behind it: shadow
 //! rays, view (camera) rays and rays meeting its hidden side pass through it, as m_bsdf.c
-//! decides (`raytrans`); the offset m_bsdf.c gives transmitted rays (to bypass the detailed
-//! geometry) is not applied, which matters only when such geometry is in the scene.
+//! decides (`raytrans`); light transmitted through it (the sun's next-event estimate and
+//! the sampled continuation) is traced from the hit moved by the thickness against the
+//! front normal, past the detailed geometry (m_bsdf.c: `-thick` times `ron`).
 
 use super::scattering::{bright, Scatter};
 use crate::bsdf::Bsdf;
@@ -76,6 +77,7 @@ impl BsdfMaterial {
             frame,
             view_local: frame.to_local(-d),
             pnorm: if hit_front { normal } else { -normal },
+            transmitted_offset_m: -self.thickness_m * normal.normalize(),
             extra_reflectance_rgb,
             extra_transmittance_rgb: self.extra_transmittance_rgb,
         })
@@ -126,9 +128,20 @@ pub struct BsdfShading {
     pnorm: DVec3,
     extra_reflectance_rgb: DVec3,
     extra_transmittance_rgb: DVec3,
+    /// Where transmitted light is traced from, relative to the hit (zero when thin).
+    transmitted_offset_m: DVec3,
 }
 
 impl BsdfShading {
+    /// The hit `p_m`, moved by the thickness when `dir` is on the far side (transmission).
+    pub fn origin_towards(&self, p_m: DVec3, dir: DVec3) -> DVec3 {
+        if self.pnorm.dot(dir) < 0.0 {
+            p_m + self.transmitted_offset_m
+        } else {
+            p_m
+        }
+    }
+
     /// m_bsdf.c `dir_bsdf`: f |cos| Ω, with the extra Lambertian parts (ρ/π |cos| Ω on their
     /// side). RADIANCE traces backwards and queries `SDevalBSDF(outVec = view, inVec =
     /// source)`: the view direction is the data's first direction, as it is for sampling

@@ -114,6 +114,17 @@ impl Shading {
         }
     }
 
+    /// Where light arriving from, or a path leaving towards, unit direction `dir` is traced
+    /// from for a hit at `p_m`: `p_m` itself, except across a proxy (a `BSDF` with thickness),
+    /// which hands transmitted light over beyond the detailed geometry it stands for
+    /// (m_bsdf.c offsets those rays by the thickness).
+    pub fn origin_towards(&self, p_m: DVec3, dir: DVec3) -> DVec3 {
+        match self {
+            Shading::Normal(_) => p_m,
+            Shading::Bsdf(s) => s.origin_towards(p_m, dir),
+        }
+    }
+
     /// Samples the continuation; diffuse components only if `allow_diffuse` (ambient bounces
     /// left).
     pub fn sample(&self, allow_diffuse: bool, rng: &mut Rng) -> Scatter {
