@@ -139,7 +139,7 @@ fn box_room_under_every_sky(label: &str, xml: &Path, effort: &Effort) {
         let sky_text = sky(&bin, &lib, "gensky", args);
         compare_with_rtrace(
             &format!("{label}-{sky_label}"),
-            &[room.clone()],
+            std::slice::from_ref(&room),
             &sky_text,
             BOX_SENSORS.as_bytes(),
             dir.path(),

@@ -14,7 +14,7 @@ pub enum EngineError {
     BsdfFile {
         at: SourceLocation,
         material: String,
-        error: crate::bsdf::BsdfError,
+        error: Box<crate::bsdf::BsdfError>,
     },
 
     /// A setting outside its range.

@@ -66,7 +66,7 @@ pub(crate) fn build(
     let r = &raw.reals;
     raw.check_count(
         ArgumentList::Real,
-        r.len() <= 9 && r.len() % 3 == 0,
+        r.len() <= 9 && r.len().is_multiple_of(3),
         "0, 3, 6 or 9 (extra diffuse rgb front, back, transmitted)",
     )?;
     for (i, v) in r.iter().enumerate() {

@@ -108,11 +108,11 @@ impl Frame {
         })
     }
 
-    fn to_local(&self, v: DVec3) -> DVec3 {
+    fn to_local(self, v: DVec3) -> DVec3 {
         DVec3::new(v.dot(self.x), v.dot(self.y), v.dot(self.z))
     }
 
-    fn to_world(&self, v: DVec3) -> DVec3 {
+    fn to_world(self, v: DVec3) -> DVec3 {
         self.x * v.x + self.y * v.y + self.z * v.z
     }
 }

@@ -299,7 +299,7 @@ fn bsdf_material(m: &Modifier, b: &BsdfModifier) -> Result<BsdfMaterial, EngineE
     let data = Bsdf::load(&b.xml_path).map_err(|error| EngineError::BsdfFile {
         at: m.origin.clone(),
         material: m.name.clone(),
-        error,
+        error: Box::new(error),
     })?;
     Ok(BsdfMaterial::new(b, Arc::new(data)))
 }
