@@ -228,8 +228,80 @@ impl BsdfShading {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bsdf::Scattering;
+    use crate::scene::{BsdfModifier, BsdfType};
 
-    /// The frame of a wall facing -y with up +z: x = z × (−y) = +x... RADIANCE's convention.
+    fn satine(extra_reflectance_front: f64) -> BsdfMaterial {
+        let xml = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../../shared/data/radiance-corpus/bsdf/frads/2011-SA1.xml");
+        let data = Bsdf::load(&xml).expect("the corpus's Satine XML (shared/data)");
+        let args = BsdfModifier {
+            kind: BsdfType::Bsdf,
+            thickness_m: 0.0,
+            xml_name: "2011-SA1.xml".into(),
+            xml_path: xml,
+            up: DVec3::Z,
+            extra_reflectance_front_rgb: DVec3::splat(extra_reflectance_front),
+            extra_reflectance_back_rgb: DVec3::ZERO,
+            extra_transmittance_rgb: DVec3::ZERO,
+        };
+        BsdfMaterial::new(&args, Arc::new(data))
+    }
+
+    /// The sampled continuation's weights average to the data's R + T for the view direction
+    /// (RADIANCE `SDdirectHemi`), plus the extra reflectance: the lobe selection is unbiased.
+    #[test]
+    fn sampling_weights_average_to_the_hemispherical_values() {
+        let m = satine(0.1);
+        let normal = DVec3::new(0.0, 1.0, 0.0);
+        let d = DVec3::new(0.3, -0.8, -0.2).normalize();
+        let s = m.shade(d, normal).unwrap();
+        let r = m.data.hemispherical(s.view_local, Scattering::Reflection);
+        let t = m.data.hemispherical(s.view_local, Scattering::Transmission);
+        let mut rng = Rng::for_stream(3, 0);
+        let n = 200_000;
+        let mut sum = DVec3::ZERO;
+        for _ in 0..n {
+            if let Scatter::Diffuse { weight, .. } | Scatter::Specular { weight, .. } =
+                s.sample(true, &mut rng)
+            {
+                sum += weight;
+            }
+        }
+        let mean = sum.x / n as f64;
+        let expect = r + t + 0.1;
+        assert!(
+            (mean - expect).abs() < 0.005,
+            "{mean} vs {expect} (R {r}, T {t})"
+        );
+    }
+
+    /// Integrated over all source directions, the direct coefficient is the data's R + T for
+    /// the view (reciprocity of the whole, f queried view first as RADIANCE does).
+    #[test]
+    fn source_coefficients_integrate_to_the_hemispherical_values() {
+        let m = satine(0.0);
+        let normal = DVec3::new(0.0, 1.0, 0.0);
+        let d = DVec3::new(-0.2, -0.9, 0.1).normalize();
+        let s = m.shade(d, normal).unwrap();
+        let expect = m.data.hemispherical(s.view_local, Scattering::Reflection)
+            + m.data.hemispherical(s.view_local, Scattering::Transmission);
+        // Uniform directions on the sphere, weight 4π.
+        let mut rng = Rng::for_stream(9, 0);
+        let n = 400_000;
+        let mut sum = 0.0;
+        for _ in 0..n {
+            let z = 2.0 * rng.uniform() - 1.0;
+            let phi = 2.0 * PI * rng.uniform();
+            let r = (1.0 - z * z).sqrt();
+            let l = DVec3::new(r * phi.cos(), r * phi.sin(), z);
+            sum += s.source_coefficient(l, 1.0).x * 4.0 * PI;
+        }
+        let mean = sum / n as f64;
+        assert!((mean - expect).abs() < 0.01, "{mean} vs {expect}");
+    }
+
+    /// SDcompXform on a wall facing -y with up +z: right-handed, y along up, invertible.
     #[test]
     fn frame_is_right_handed_and_up_projects_on_y() {
         let f = Frame::new(DVec3::new(0.0, -1.0, 0.0), DVec3::Z).unwrap();
