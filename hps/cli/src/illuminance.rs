@@ -40,6 +40,7 @@ pub fn run(args: &IlluminanceArgs) -> anyhow::Result<()> {
         &args.scenes,
         &scene::LoadOptions {
             allow_commands: args.allow_commands,
+            ..Default::default()
         },
     )?;
     let sensors = scene::load_sensors(&args.sensors)?;

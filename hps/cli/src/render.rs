@@ -101,6 +101,7 @@ pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
         &args.scenes,
         &scene::LoadOptions {
             allow_commands: args.allow_commands,
+            ..Default::default()
         },
     )?;
     let world = World::new(&scene)?;

@@ -59,6 +59,7 @@ struct Report {
 fn run_check(args: &CheckArgs) -> anyhow::Result<()> {
     let options = LoadOptions {
         allow_commands: args.allow_commands,
+        ..Default::default()
     };
     let primitives = scene::expand_files(&args.files, &options)?;
     let report = Report {

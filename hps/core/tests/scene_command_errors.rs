@@ -157,6 +157,7 @@ fn other_commands_need_allow_commands_and_then_run_in_the_file_directory() {
 
     let allow = LoadOptions {
         allow_commands: true,
+        ..Default::default()
     };
     let loaded = scene::load_files_with(&[dir.path().join("top.rad")], &allow).unwrap();
     let scene::Shape::Sphere(ball) = &loaded.surfaces()[0].shape else {

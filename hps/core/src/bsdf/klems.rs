@@ -8,6 +8,7 @@ use super::side::Side;
 use super::xml::{DataStructure, NamedAt, RawAngleBasis, RawBlock};
 use glam::DVec3;
 use std::f64::consts::PI;
+use std::sync::{Arc, OnceLock};
 
 /// One ring of patches between two polar angles.
 #[derive(Debug, Clone, PartialEq)]
@@ -236,6 +237,10 @@ pub struct KlemsMatrix {
     frames: (BasisFrame, BasisFrame),
     /// Values at `outgoing_patch * n_incident + incident_patch`.
     values: Vec<f32>,
+    /// Each fixed patch's cumulative patch weights, built on first use and kept (RADIANCE
+    /// caches its `SDCDst` likewise): a material samples one per hit. Index 0 for an
+    /// incident patch, 1 for an outgoing one (the reversed direction).
+    cumulative_cache: [Vec<OnceLock<Arc<[f64]>>>; 2],
 }
 
 /// Finds a basis by name: those the file defines first, then the built-in ones.
@@ -310,12 +315,17 @@ impl KlemsMatrix {
             _ => read,
         };
         let side = block_side(block);
+        let cumulative_cache = [
+            (0..incident.n_patches).map(|_| OnceLock::new()).collect(),
+            (0..outgoing.n_patches).map(|_| OnceLock::new()).collect(),
+        ];
         Ok(KlemsMatrix {
             side,
             incident,
             outgoing,
             frames: BasisFrame::of(side),
             values,
+            cumulative_cache,
         })
     }
 
@@ -373,6 +383,11 @@ impl KlemsMatrix {
             return 0.0;
         }
         self.values.iter_mut().for_each(|v| *v -= min_value);
+        // Distributions built before this are stale.
+        self.cumulative_cache
+            .iter_mut()
+            .flatten()
+            .for_each(|c| *c = OnceLock::new());
         PI * min_value as f64
     }
 
@@ -395,6 +410,19 @@ impl KlemsMatrix {
             Some(i) => (i, false),
             None => (self.outgoing_patch(incident)?, true),
         };
+        let cumulative = self.cumulative_cache[usize::from(reversed)][patch]
+            .get_or_init(|| self.cumulative_weights(patch, reversed))
+            .clone();
+        Some(PatchDistribution {
+            matrix: self,
+            patch,
+            reversed,
+            cumulative,
+        })
+    }
+
+    /// Running sums of the patch weights scattered from patch `fixed`, starting at 0.
+    fn cumulative_weights(&self, fixed: usize, reversed: bool) -> Arc<[f64]> {
         let n = if reversed {
             self.incident.n_patches
         } else {
@@ -404,15 +432,10 @@ impl KlemsMatrix {
         let mut sum = 0.0;
         cumulative.push(0.0);
         for k in 0..n {
-            sum += self.weight(patch, k, reversed);
+            sum += self.weight(fixed, k, reversed);
             cumulative.push(sum);
         }
-        Some(PatchDistribution {
-            matrix: self,
-            patch,
-            reversed,
-            cumulative,
-        })
+        cumulative.into()
     }
 
     /// f·projected solid angle of scattered patch `k` for the fixed patch `fixed`.
@@ -434,7 +457,7 @@ pub struct PatchDistribution<'a> {
     matrix: &'a KlemsMatrix,
     patch: usize,
     reversed: bool,
-    cumulative: Vec<f64>,
+    cumulative: Arc<[f64]>,
 }
 
 impl PatchDistribution<'_> {

@@ -17,6 +17,14 @@ pub struct BsdfSample {
     pub value_per_sr: f64,
     /// Probability density of `direction` per steradian.
     pub pdf_per_sr: f64,
+    /// The chosen lobe alone: its f(ωi, ωo) in 1/sr and the density per steradian of
+    /// choosing it and drawing `direction` from it, so that `lobe_value_per_sr` |cos θo| /
+    /// `lobe_pdf_per_sr` estimates that lobe's share without bias (one-sample lobe selection,
+    /// what a caller needs to treat Lambertian and directional lobes differently).
+    pub lobe_value_per_sr: f64,
+    pub lobe_pdf_per_sr: f64,
+    /// The direction came from a Lambertian lobe (diffuse, an ambient bounce for RADIANCE).
+    pub lambertian: bool,
 }
 
 enum Lobe<'a> {
@@ -103,16 +111,30 @@ impl OutgoingDistribution<'_> {
             inside
         })?;
         let u0 = (target / lobe.total()).clamp(0.0, 1.0 - f64::EPSILON);
-        let direction = match lobe {
-            Lobe::Lambertian { outgoing_front, .. } => {
-                cosine_direction(*outgoing_front, u[1], u[2])
+        let (direction, lobe_value_per_sr, lobe_per_projected_sr) = match lobe {
+            Lobe::Lambertian {
+                outgoing_front,
+                hemispherical,
+            } => {
+                let d = cosine_direction(*outgoing_front, u[1], u[2]);
+                (d, hemispherical / PI, hemispherical / PI)
             }
-            Lobe::Part(d) => d.sample([u0, u[1], u[2]]),
+            Lobe::Part(p) => {
+                let d = p.sample([u0, u[1], u[2]]);
+                let f = self
+                    .bsdf
+                    .part_for(self.incident.z > 0.0, d.z > 0.0)
+                    .map_or(0.0, |part| part.eval(self.incident, d));
+                (d, f, p.weight_per_projected_sr(d))
+            }
         };
         Some(BsdfSample {
             direction,
             value_per_sr: self.bsdf.eval(self.incident, direction),
             pdf_per_sr: self.pdf_per_sr(direction),
+            lobe_value_per_sr,
+            lobe_pdf_per_sr: lobe_per_projected_sr * direction.z.abs() / self.total,
+            lambertian: matches!(lobe, Lobe::Lambertian { .. }),
         })
     }
 

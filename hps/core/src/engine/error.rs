@@ -9,6 +9,14 @@ pub enum EngineError {
     #[error("{at}: {what}")]
     Unsupported { at: SourceLocation, what: String },
 
+    /// A `BSDF` material whose XML file cannot be read or makes no sense.
+    #[error("{at}: BSDF `{material}`: {error}")]
+    BsdfFile {
+        at: SourceLocation,
+        material: String,
+        error: Box<crate::bsdf::BsdfError>,
+    },
+
     /// A setting outside its range.
     #[error("invalid setting {name} = {value}: expected {expected}")]
     Setting {

@@ -376,7 +376,7 @@ impl<'a> SkyNee<'a> {
                     if h.primitive == prim_y && (h.t_m - dist).abs() <= 1e-6 * dist.max(1.0) => {}
                 _ => continue,
             }
-            let t = world.shadow_transmission(y, Some(prim_y), l);
+            let t = world.shadow_transmission(shading.origin_towards(y, l), Some(prim_y), l);
             if t == DVec3::ZERO {
                 continue;
             }
@@ -583,6 +583,9 @@ struct PathState {
     /// segment, while the path has gone straight from it with no crossing: what the sun-patch
     /// strategy's weight at the next vertex needs.
     direct: Option<f64>,
+    /// Where the next segment starts when not at the vertex (a proxy's transmitted light,
+    /// [`Shading::origin_towards`]).
+    next_origin: Option<DVec3>,
 }
 
 /// Radiance arriving back along `ray`, for a path that has already made `ambient_used`
@@ -620,6 +623,7 @@ fn trace(
         crossings: 0,
         last,
         direct: last.filter(|l| l.sun_patch_sampled).map(|l| l.pdf_sr),
+        next_origin: None,
     };
     loop {
         let Some(hit) = world.intersect(&path.ray, path.from) else {
@@ -644,7 +648,9 @@ fn trace(
         };
         match next {
             Next::End => return path.radiance,
-            Next::Bounce(direction) => path.ray = Ray::new(p, direction),
+            Next::Bounce(direction) => {
+                path.ray = Ray::new(path.next_origin.take().unwrap_or(p), direction)
+            }
             Next::Straight(next) => {
                 if path.throughput.max_element() <= 0.0 {
                     return path.radiance;
@@ -655,7 +661,7 @@ fn trace(
                 }
                 // Any crossing or specular event: the next vertex is not reached directly.
                 path.direct = None;
-                path.ray = Ray::new(p, next);
+                path.ray = Ray::new(path.next_origin.take().unwrap_or(p), next);
             }
         }
     }
@@ -722,7 +728,11 @@ impl Tracer<'_, '_> {
             });
         let allow_diffuse = path.ambient_used < self.settings.ambient_bounces;
         let lobe = self.sky(path, p, shading, allow_diffuse, rng);
-        match shading.sample(allow_diffuse, rng) {
+        let scatter = shading.sample(allow_diffuse, rng);
+        if let Scatter::Diffuse { direction, .. } | Scatter::Specular { direction, .. } = scatter {
+            path.next_origin = Some(shading.origin_towards(p, direction));
+        }
+        match scatter {
             Scatter::Absorbed => Next::End,
             Scatter::Diffuse { direction, weight } => {
                 self.bounce(path, p, direction, weight, lobe, rng)
@@ -755,7 +765,9 @@ impl Tracer<'_, '_> {
             if c == DVec3::ZERO {
                 continue;
             }
-            let t = self.world.shadow_transmission(p, path.from, l);
+            let t = self
+                .world
+                .shadow_transmission(shading.origin_towards(p, l), path.from, l);
             if t == DVec3::ZERO {
                 continue;
             }

@@ -31,6 +31,9 @@ pub struct LoadOptions {
     /// scene file can then run any program with the user's rights: only for files you trust.
     /// The daemon never sets it.
     pub allow_commands: bool,
+    /// Where RADIANCE would run (`oconv`, `rtrace`): the "." its file search starts from
+    /// for files a scene names by a path (`BSDF` XML files). None: the process's directory.
+    pub working_directory: Option<std::path::PathBuf>,
 }
 
 /// Expands scene text into primitives, following commands.

@@ -5,9 +5,11 @@
 //! channel, kept as a `DVec3` (x = red, y = green, z = blue) so the engine can do channel-wise
 //! arithmetic on them.
 
+use super::bsdf_modifier::{self, BsdfModifier};
 use super::error::{ArgumentList, SceneError};
 use super::parse::{PrimitiveType, RawPrimitive};
 use glam::DVec3;
+use std::path::Path;
 
 /// Index of a modifier in `Scene::modifiers`. A modifier always refers to modifiers with a
 /// smaller index, so walking a chain of modifiers always ends.
@@ -47,6 +49,8 @@ pub enum ModifierKind {
     Light(Light),
     Glow(Glow),
     Brightfunc(Brightfunc),
+    /// `BSDF` and `aBSDF` (`bsdf_modifier.rs`).
+    Bsdf(BsdfModifier),
 }
 
 impl ModifierKind {
@@ -61,6 +65,10 @@ impl ModifierKind {
             ModifierKind::Light(_) => "light",
             ModifierKind::Glow(_) => "glow",
             ModifierKind::Brightfunc(_) => "brightfunc",
+            ModifierKind::Bsdf(b) => match b.kind {
+                bsdf_modifier::BsdfType::Bsdf => "BSDF",
+                bsdf_modifier::BsdfType::ABsdf => "aBSDF",
+            },
         }
     }
 
@@ -162,10 +170,14 @@ pub struct Brightfunc {
 }
 
 /// Interprets a modifier primitive. `resolve` looks up modifier names referenced in string
-/// arguments (mirror's alternate material) as defined before this primitive.
+/// arguments (mirror's alternate material) as defined before this primitive; `top_file` is
+/// the top-level scene file being read, `working_directory` where RADIANCE would run (both
+/// for the files a modifier names).
 pub(crate) fn build(
     raw: &RawPrimitive<'_>,
     resolve: &dyn Fn(&str) -> Option<ModifierRef>,
+    top_file: &Path,
+    working_directory: Option<&Path>,
 ) -> Result<ModifierKind, SceneError> {
     let r = &raw.reals;
     let rgb = |i: usize| DVec3::new(r[i], r[i + 1], r[i + 2]);
@@ -276,6 +288,9 @@ pub(crate) fn build(
                 transform: raw.strings[2..].iter().map(|s| s.to_string()).collect(),
                 real_args: r.clone(),
             })
+        }
+        PrimitiveType::Bsdf | PrimitiveType::ABsdf => {
+            ModifierKind::Bsdf(bsdf_modifier::build(raw, top_file, working_directory)?)
         }
         PrimitiveType::Polygon
         | PrimitiveType::Sphere

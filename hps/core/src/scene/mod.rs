@@ -17,6 +17,7 @@
 //! # Ok::<(), skylux_hps::scene::SceneError>(())
 //! ```
 
+mod bsdf_modifier;
 mod command;
 mod error;
 mod expand;
@@ -30,6 +31,7 @@ mod sensors;
 mod shape;
 mod xform;
 
+pub use bsdf_modifier::{BsdfModifier, BsdfType};
 pub use error::{ArgumentList, SceneError, SourceLocation, SUPPORTED_TYPES};
 pub use expand::{LoadOptions, MAX_INCLUDE_DEPTH, MAX_PRIMITIVES};
 pub use material::{
@@ -254,7 +256,7 @@ impl Scene {
         replaced: &mut Vec<(String, Option<ModifierId>)>,
     ) -> Result<(), SceneError> {
         let text = utf8(&file, bytes)?;
-        let primitives = Expander::new(options).top_text(file, text)?;
+        let primitives = Expander::new(options).top_text(file.clone(), text)?;
         for primitive in &primitives {
             let raw = RawPrimitive::from_primitive(primitive)?;
             let modifier = self.modifier_named(raw.modifier).ok_or_else(|| {
@@ -275,7 +277,12 @@ impl Scene {
                 }
             })?;
             if raw.kind.is_modifier() {
-                let kind = material::build(&raw, &|name| self.modifier_named(name))?;
+                let kind = material::build(
+                    &raw,
+                    &|name| self.modifier_named(name),
+                    &file,
+                    options.working_directory.as_deref(),
+                )?;
                 if kind.is_material() {
                     self.check_no_material_below(&raw, modifier)?;
                 }

@@ -37,8 +37,6 @@ pub(crate) const OTHER_RADIANCE_TYPES: &[&str] = &[
     "plasdata",
     "metdata",
     "transdata",
-    "BSDF",
-    "aBSDF",
     "antimatter",
     "texfunc",
     "texdata",
@@ -71,6 +69,8 @@ pub(crate) enum PrimitiveType {
     Light,
     Glow,
     Brightfunc,
+    Bsdf,
+    ABsdf,
     Polygon,
     Sphere,
     Cylinder,
@@ -90,6 +90,8 @@ impl PrimitiveType {
             "light" => Self::Light,
             "glow" => Self::Glow,
             "brightfunc" => Self::Brightfunc,
+            "BSDF" => Self::Bsdf,
+            "aBSDF" => Self::ABsdf,
             "polygon" => Self::Polygon,
             "sphere" => Self::Sphere,
             "cylinder" => Self::Cylinder,
@@ -110,6 +112,8 @@ impl PrimitiveType {
             Self::Light => "light",
             Self::Glow => "glow",
             Self::Brightfunc => "brightfunc",
+            Self::Bsdf => "BSDF",
+            Self::ABsdf => "aBSDF",
             Self::Polygon => "polygon",
             Self::Sphere => "sphere",
             Self::Cylinder => "cylinder",
@@ -144,6 +148,9 @@ impl PrimitiveType {
                 "xcent", "ycent", "zcent", "xdir", "ydir", "zdir", "r0", "r1",
             ],
             Self::Brightfunc | Self::Polygon => &[],
+            Self::Bsdf | Self::ABsdf => &[
+                "rdf", "gdf", "bdf", "rdb", "gdb", "bdb", "rdt", "gdt", "bdt",
+            ],
         }
     }
 

@@ -234,7 +234,9 @@ pub(crate) fn build(raw: &RawPrimitive<'_>) -> Result<Shape, SceneError> {
         | PrimitiveType::Mirror
         | PrimitiveType::Light
         | PrimitiveType::Glow
-        | PrimitiveType::Brightfunc => {
+        | PrimitiveType::Brightfunc
+        | PrimitiveType::Bsdf
+        | PrimitiveType::ABsdf => {
             return Err(raw.invalid(
                 "type",
                 raw.kind.name(),

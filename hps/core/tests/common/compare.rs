@@ -87,7 +87,13 @@ pub fn compare_with_rtrace(
 
     let mut files: Vec<PathBuf> = room_files.iter().map(|f| scene_dir.join(f)).collect();
     files.push(sky_path);
-    let scene = scene::load_files(&files).unwrap();
+    // Loaded as oconv and rtrace run there: files the scene names by a path (BSDF XML) are
+    // found from `scene_dir`.
+    let options = scene::LoadOptions {
+        working_directory: Some(scene_dir.to_path_buf()),
+        ..Default::default()
+    };
+    let scene = scene::load_files_with(&files, &options).unwrap();
     let sensors = scene::parse_sensors(format!("{label}.pts"), sensors).unwrap();
     let world = World::new(&scene).unwrap();
     let settings = Settings {

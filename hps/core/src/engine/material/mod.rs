@@ -1,7 +1,7 @@
 //! How surfaces scatter light, as RADIANCE shades them, so that our estimates converge to
 //! what `rtrace` computes: one file per family ([`normal`]: `plastic`, `metal`, `trans`;
 //! [`glass`]; [`mirror`]; [`emitter`]: `light` and `glow` on surfaces), the optics they share
-//! in [`scattering`].
+//! in [`scattering`]; [`bsdf`]: `BSDF` from WINDOW / LBNL XML data.
 //!
 //! The integrator, the per-ray radiance, shadow rays and virtual sources ask a [`Material`]
 //! what happens at a hit ([`Material::interact`], [`Material::shading`],
@@ -13,6 +13,7 @@
 //! Surfaces are two-sided (RADIANCE's default `-bv+`): hitting the back of a surface shades
 //! it with the normal turned towards the ray (`flipsurface`).
 
+pub mod bsdf;
 pub mod emitter;
 pub mod glass;
 pub mod mirror;
@@ -20,6 +21,7 @@ pub mod normal;
 pub mod scattering;
 
 /// Where `validation::glazing` finds it; its home is [`crate::engine::sampling`].
+pub use bsdf::{BsdfMaterial, BsdfShading};
 pub use emitter::Emitter;
 pub use glass::GlassMaterial;
 pub use mirror::MirrorMaterial;
@@ -29,8 +31,10 @@ pub use scattering::{bright, DiffuseLobe, Scatter};
 use super::error::EngineError;
 use super::rng::Rng;
 use super::sky::SkyFunction;
-use crate::scene::{Modifier, ModifierKind, Surface};
+use crate::bsdf::Bsdf;
+use crate::scene::{BsdfModifier, BsdfType, Modifier, ModifierKind, Surface};
 use glam::DVec3;
+use std::sync::Arc;
 
 /// A surface's material, ready for shading.
 #[derive(Clone, Debug)]
@@ -39,6 +43,7 @@ pub enum Material {
     Glass(GlassMaterial),
     Mirror(MirrorMaterial),
     Emitter(Emitter),
+    Bsdf(BsdfMaterial),
     /// Modifier chain ends at `void` without a material: rays pass through.
     Invisible,
 }
@@ -85,6 +90,7 @@ impl SpecularStep<'_> {
 #[derive(Clone, Debug)]
 pub enum Shading {
     Normal(NormalShading),
+    Bsdf(BsdfShading),
 }
 
 impl Shading {
@@ -93,6 +99,7 @@ impl Shading {
     pub fn source_coefficient(&self, ldir: DVec3, omega_sr: f64) -> DVec3 {
         match self {
             Shading::Normal(s) => s.source_coefficient(ldir, omega_sr),
+            Shading::Bsdf(s) => s.source_coefficient(ldir, omega_sr),
         }
     }
 
@@ -101,6 +108,20 @@ impl Shading {
     pub fn diffuse_lobe(&self, allow_diffuse: bool) -> Option<DiffuseLobe> {
         match self {
             Shading::Normal(s) => s.diffuse_lobe(allow_diffuse),
+            // The sky reaches a BSDF vertex by its own sampling (as in RADIANCE, where the
+            // sky is not a source): no next-event strategy to weigh against.
+            Shading::Bsdf(_) => None,
+        }
+    }
+
+    /// Where light arriving from, or a path leaving towards, unit direction `dir` is traced
+    /// from for a hit at `p_m`: `p_m` itself, except across a proxy (a `BSDF` with thickness),
+    /// which hands transmitted light over beyond the detailed geometry it stands for
+    /// (m_bsdf.c offsets those rays by the thickness).
+    pub fn origin_towards(&self, p_m: DVec3, dir: DVec3) -> DVec3 {
+        match self {
+            Shading::Normal(_) => p_m,
+            Shading::Bsdf(s) => s.origin_towards(p_m, dir),
         }
     }
 
@@ -109,6 +130,7 @@ impl Shading {
     pub fn sample(&self, allow_diffuse: bool, rng: &mut Rng) -> Scatter {
         match self {
             Shading::Normal(s) => s.sample(allow_diffuse, rng),
+            Shading::Bsdf(s) => s.sample(allow_diffuse, rng),
         }
     }
 }
@@ -142,6 +164,11 @@ impl Material {
                 normal,
             }),
             Material::Normal(m) => Interaction::Shaded(Shading::Normal(m.shade(d, normal, flat))),
+            Material::Bsdf(m) if m.passes(d, normal, primary) => Interaction::PassThrough,
+            Material::Bsdf(m) => match m.shade(d, normal) {
+                Some(s) => Interaction::Shaded(Shading::Bsdf(s)),
+                None => Interaction::Absorbed,
+            },
         }
     }
 
@@ -151,13 +178,16 @@ impl Material {
     pub fn shading(&self, rdir: DVec3, normal: DVec3, flat: bool) -> Option<Shading> {
         match self {
             Material::Normal(m) => Some(Shading::Normal(m.shade(rdir, normal, flat))),
+            Material::Bsdf(m) if !m.passes(rdir, normal, false) => {
+                m.shade(rdir, normal).map(Shading::Bsdf)
+            }
             _ => None,
         }
     }
 
     /// Whether [`Material::shading`] gives a shading.
     pub fn is_shaded(&self) -> bool {
-        matches!(self, Material::Normal(_))
+        matches!(self, Material::Normal(_) | Material::Bsdf(_))
     }
 
     /// What a shadow ray along unit `dir` does at a surface of front normal `normal`:
@@ -169,7 +199,10 @@ impl Material {
             Material::Normal(m) => {
                 ShadowCrossing::Transmits(m.shade(dir, normal, flat).shadow_transmission())
             }
-            Material::Mirror(_) | Material::Emitter(_) => ShadowCrossing::Opaque,
+            Material::Bsdf(m) if m.shadow_passes() => ShadowCrossing::PassThrough,
+            Material::Mirror(_) | Material::Emitter(_) | Material::Bsdf(_) => {
+                ShadowCrossing::Opaque
+            }
         }
     }
 
@@ -245,7 +278,28 @@ impl Material {
                 patterns,
                 illuminates: Emitter::glow_illuminates(g.max_radius_m),
             }),
+            ModifierKind::Bsdf(b) => Material::Bsdf(bsdf_material(m, b)?),
             ModifierKind::Brightfunc(_) => unreachable!("patterns are not materials"),
         })
     }
+}
+
+/// A `BSDF` modifier's material with its XML data loaded; a file that cannot be read is an
+/// error naming the scene file and line, the material and the XML file, element and line.
+fn bsdf_material(m: &Modifier, b: &BsdfModifier) -> Result<BsdfMaterial, EngineError> {
+    if b.kind == BsdfType::ABsdf {
+        return Err(EngineError::Unsupported {
+            at: m.origin.clone(),
+            what: format!(
+                "aBSDF `{}`: its \"through\" component is not traced yet (use BSDF)",
+                m.name
+            ),
+        });
+    }
+    let data = Bsdf::load(&b.xml_path).map_err(|error| EngineError::BsdfFile {
+        at: m.origin.clone(),
+        material: m.name.clone(),
+        error: Box::new(error),
+    })?;
+    Ok(BsdfMaterial::new(b, Arc::new(data)))
 }
