@@ -25,6 +25,9 @@ pub enum Primitive {
     Sphere(Sphere),
     Cone(PreparedCone),
     Ring(Ring),
+    /// RADIANCE's `bubble`, `tube` and `cup`: the surface of its inner primitive with the
+    /// normal pointing in.
+    Inward(Box<Primitive>),
 }
 
 impl Primitive {
@@ -67,6 +70,7 @@ impl Primitive {
                     max_m: r.centre_m + e,
                 }
             }
+            Primitive::Inward(inner) => inner.bounds(),
         }
         // Flat boxes are fine for the slab test; a small pad guards against rounding.
         .padded(1e-9)
@@ -79,6 +83,10 @@ impl Primitive {
             Primitive::Sphere(s) => intersect_sphere(s, ray, t_min_m, t_max_m),
             Primitive::Cone(c) => c.intersect(ray, t_min_m, t_max_m),
             Primitive::Ring(r) => intersect_ring(r, ray, t_min_m, t_max_m),
+            Primitive::Inward(inner) => inner.intersect(ray, t_min_m, t_max_m).map(|h| ShapeHit {
+                normal: -h.normal,
+                ..h
+            }),
         }
     }
 }

@@ -2,7 +2,7 @@
 
 use super::bvh::Bvh;
 use super::error::EngineError;
-use super::material::{Emitter, Material, ShadowCrossing};
+use super::material::{Emitter, Material, ShadowCrossing, SourceCrossing};
 use super::portal::Portals;
 use super::ray::{Ray, FTINY};
 use super::sampling::basis;
@@ -48,6 +48,9 @@ pub struct World {
     /// Plane mirrors (primitive, normal, reflectance), for virtual sources: listed once, not
     /// found by a scan of every primitive at every vertex.
     mirrors: Vec<(u32, DVec3, DVec3)>,
+    /// Some material treats shadow rays towards light sources apart (`illum`, `dielectric`):
+    /// [`World::source_transmission`] then traces them crossing by crossing.
+    source_crossings: bool,
     /// The radiance-proportional distribution of escape directions, built on first use and
     /// dropped whenever the sources or the environment change.
     sky_distribution: std::sync::OnceLock<Option<SkyDistribution>>,
@@ -96,7 +99,7 @@ impl World {
             let index = match material_index.get(&key) {
                 Some(&i) => i,
                 None => {
-                    let prepared = Material::from_modifier(surface, material, patterns)?;
+                    let prepared = Material::from_scene(scene, surface, material, patterns)?;
                     materials.push(prepared);
                     let i = (materials.len() - 1) as u32;
                     material_index.insert(key, i);
@@ -113,6 +116,13 @@ impl World {
                 Shape::Cylinder(c) => Primitive::Cone(PreparedCone::from_cylinder(c)),
                 Shape::Cone(c) => Primitive::Cone(PreparedCone::from_cone(c)),
                 Shape::Ring(r) => Primitive::Ring(r.clone()),
+                Shape::Bubble(s) => Primitive::Inward(Box::new(Primitive::Sphere(s.clone()))),
+                Shape::Tube(c) => {
+                    Primitive::Inward(Box::new(Primitive::Cone(PreparedCone::from_cylinder(c))))
+                }
+                Shape::Cup(c) => {
+                    Primitive::Inward(Box::new(Primitive::Cone(PreparedCone::from_cone(c))))
+                }
                 Shape::Source(_) => unreachable!("handled above"),
             });
             material_of.push(index);
@@ -131,8 +141,10 @@ impl World {
             portal_candidates: Vec::new(),
             portals: Portals::default(),
             mirrors: Vec::new(),
+            source_crossings: false,
             sky_distribution: std::sync::OnceLock::new(),
         };
+        world.source_crossings = world.materials.iter().any(Material::has_source_crossing);
         world.mirrors = (0..world.primitives.len() as u32)
             .filter_map(|i| {
                 let reflectance = world.material(i).virtual_source_reflectance()?;
@@ -425,6 +437,48 @@ impl World {
         } else {
             t
         }
+    }
+
+    /// What reaches `origin` from a distant light source along unit `dir` (the sun's
+    /// next-event estimate): as [`World::shadow_transmission`], except that an `illum` is its
+    /// alternate material to such rays and a `dielectric` refracts them, as RADIANCE traces
+    /// shadow rays (source.c `passillum`, dielectric.c). A ray that leaves the scene turned
+    /// away from `dir` (a prism, a lens) misses the source: 0, where RADIANCE would still count
+    /// a deflection within the source's own disc.
+    pub fn source_transmission(&self, origin: DVec3, from: Option<u32>, dir: DVec3) -> DVec3 {
+        if !self.source_crossings {
+            return self.shadow_transmission(origin, from, dir);
+        }
+        let mut ray = Ray::new(origin, dir);
+        let mut from = from;
+        let mut t = DVec3::ONE;
+        for _ in 0..MAX_SHADOW_CROSSINGS {
+            let Some(hit) = self.intersect(&ray, from) else {
+                let straight = ray.direction.dot(dir) >= 1.0 - 1e-12;
+                return if straight { t } else { DVec3::ZERO };
+            };
+            let material = self.material(hit.primitive);
+            t *= material.arrival_factor(ray.direction, hit.normal, hit.t_m, false);
+            let flat = self.is_flat(hit.primitive);
+            let next = match material.source_crossing(ray.direction, hit.normal, flat) {
+                SourceCrossing::Straight(ShadowCrossing::PassThrough) => ray.direction,
+                SourceCrossing::Straight(ShadowCrossing::Transmits(factor)) => {
+                    t *= factor;
+                    ray.direction
+                }
+                SourceCrossing::Straight(ShadowCrossing::Opaque) => return DVec3::ZERO,
+                SourceCrossing::Refracts { direction, factor } => {
+                    t *= factor;
+                    direction
+                }
+            };
+            if t == DVec3::ZERO {
+                return t;
+            }
+            ray = Ray::new(ray.at(hit.t_m), next);
+            from = Some(hit.primitive);
+        }
+        DVec3::ZERO
     }
 
     /// [`World::shadow_transmission`] crossing by crossing, one closest-hit query each.

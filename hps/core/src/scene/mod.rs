@@ -17,6 +17,7 @@
 //! # Ok::<(), skylux_hps::scene::SceneError>(())
 //! ```
 
+mod alias;
 mod command;
 mod error;
 mod expand;
@@ -33,8 +34,9 @@ mod xform;
 pub use error::{ArgumentList, SceneError, SourceLocation, SUPPORTED_TYPES};
 pub use expand::{LoadOptions, MAX_INCLUDE_DEPTH, MAX_PRIMITIVES};
 pub use material::{
-    Brightfunc, Glass, Glow, Light, Metal, Mirror, ModifierId, ModifierKind, ModifierRef, Plastic,
-    Trans, GLASS_DEFAULT_REFRACTIVE_INDEX,
+    Antimatter, Brightfunc, Dielectric, Glass, Glow, Illum, Light, Medium, Metal, Mirror,
+    ModifierId, ModifierKind, ModifierRef, Plastic, Spotlight, Trans,
+    GLASS_DEFAULT_REFRACTIVE_INDEX, HARTMANN_MEAN_WAVELENGTH_NM,
 };
 pub use primitive::Primitive;
 pub use sensors::{load_sensors, parse_sensors, Sensor, SensorsError};
@@ -256,6 +258,11 @@ impl Scene {
         let text = utf8(&file, bytes)?;
         let primitives = Expander::new(options).top_text(file, text)?;
         for primitive in &primitives {
+            if primitive.type_name == "alias" {
+                let alias = alias::build(self, primitive)?;
+                self.define(alias, replaced);
+                continue;
+            }
             let raw = RawPrimitive::from_primitive(primitive)?;
             let modifier = self.modifier_named(raw.modifier).ok_or_else(|| {
                 let hint = if self.surfaces.iter().any(|s| s.name == raw.modifier) {
@@ -279,15 +286,13 @@ impl Scene {
                 if kind.is_material() {
                     self.check_no_material_below(&raw, modifier)?;
                 }
-                let id = ModifierId::new(self.modifiers.len());
-                self.modifiers.push(Modifier {
+                let definition = Modifier {
                     name: raw.identifier.to_string(),
                     modifier,
                     kind,
                     origin: raw.at.clone(),
-                });
-                let previous = self.current.insert(raw.identifier.to_string(), id);
-                replaced.push((raw.identifier.to_string(), previous));
+                };
+                self.define(definition, replaced);
             } else {
                 let shape = shape::build(&raw)?;
                 self.surfaces.push(Surface {
@@ -299,6 +304,16 @@ impl Scene {
             }
         }
         Ok(())
+    }
+
+    /// Appends a modifier and makes it the current definition of its name, remembering the
+    /// previous one so a failed file can be undone.
+    fn define(&mut self, modifier: Modifier, replaced: &mut Vec<(String, Option<ModifierId>)>) {
+        let id = ModifierId::new(self.modifiers.len());
+        let name = modifier.name.clone();
+        self.modifiers.push(modifier);
+        let previous = self.current.insert(name.clone(), id);
+        replaced.push((name, previous));
     }
 
     /// A material's modifier chain may hold only patterns: RADIANCE stops with "conflicting
