@@ -6,14 +6,29 @@
 //! `inherit` to keep the target's own modifier. Surfaces cannot be aliased.
 
 use super::error::SceneError;
+use super::material::{ModifierKind, ModifierRef};
 use super::primitive::Primitive;
-use super::{Modifier, ModifierRef, Scene};
 
 /// The reserved modifier word of an alias that keeps its target's modifier.
 pub const INHERIT: &str = "inherit";
 
-/// The modifier an `alias` primitive defines, read against the definitions in `scene`.
-pub(super) fn build(scene: &Scene, p: &Primitive) -> Result<Modifier, SceneError> {
+/// What an alias needs to know of the definitions before it (the scene, in `mod.rs`).
+pub(super) trait Definitions {
+    /// The modifier a primitive read now would get for `name` (`void` included).
+    fn resolve(&self, name: &str) -> Option<ModifierRef>;
+    /// The kind and own modifier of the current definition of `name` (None: undefined).
+    fn definition(&self, name: &str) -> Option<(ModifierKind, ModifierRef)>;
+    /// Whether a surface has this name (for the message: surfaces cannot be aliased).
+    fn is_surface(&self, name: &str) -> bool;
+    /// The name and type of the material that shades a primitive with `modifier`, if any.
+    fn material_of(&self, modifier: ModifierRef) -> Option<(String, &'static str)>;
+}
+
+/// The kind and modifier of the modifier an `alias` primitive defines.
+pub(super) fn build(
+    scene: &dyn Definitions,
+    p: &Primitive,
+) -> Result<(ModifierKind, ModifierRef), SceneError> {
     let describe = || format!("alias `{}`", p.identifier);
     let invalid = |field: &str, value: &str, expected: &str| SceneError::InvalidValue {
         at: p.origin.clone(),
@@ -36,10 +51,10 @@ pub(super) fn build(scene: &Scene, p: &Primitive) -> Result<Modifier, SceneError
             "the name of a modifier defined before",
         ));
     };
-    let target = match scene.modifier_named(target_name) {
-        Some(ModifierRef::Defined(id)) => scene.modifiers[id.index()].clone(),
-        _ => {
-            let hint = if scene.surfaces.iter().any(|s| &s.name == target_name) {
+    let (kind, target_modifier) = match scene.definition(target_name) {
+        Some(found) => found,
+        None => {
+            let hint = if scene.is_surface(target_name) {
                 format!(" (`{target_name}` is a surface, and surfaces cannot be aliased)")
             } else {
                 String::new()
@@ -54,10 +69,10 @@ pub(super) fn build(scene: &Scene, p: &Primitive) -> Result<Modifier, SceneError
         }
     };
     let modifier = if p.modifier == INHERIT {
-        target.modifier
+        target_modifier
     } else {
         scene
-            .modifier_named(&p.modifier)
+            .resolve(&p.modifier)
             .ok_or_else(|| SceneError::UnknownModifier {
                 at: p.origin.clone(),
                 primitive: describe(),
@@ -66,22 +81,17 @@ pub(super) fn build(scene: &Scene, p: &Primitive) -> Result<Modifier, SceneError
                 hint: String::new(),
             })?
     };
-    if target.kind.is_material() {
-        if let Some(other) = scene.material(modifier) {
+    if kind.is_material() {
+        if let Some((name, type_name)) = scene.material_of(modifier) {
             return Err(invalid(
                 "modifier",
-                &format!("`{}`, a {} material", other.name, other.kind.type_name()),
+                &format!("`{name}`, a {type_name} material"),
                 "`void`, `inherit` or a pattern (a material modified by another material is a \
                  conflicting material in RADIANCE)",
             ));
         }
     }
-    Ok(Modifier {
-        name: p.identifier.clone(),
-        modifier,
-        kind: target.kind,
-        origin: p.origin.clone(),
-    })
+    Ok((kind, modifier))
 }
 
 #[cfg(test)]

@@ -259,8 +259,14 @@ impl Scene {
         let primitives = Expander::new(options).top_text(file, text)?;
         for primitive in &primitives {
             if primitive.type_name == "alias" {
-                let alias = alias::build(self, primitive)?;
-                self.define(alias, replaced);
+                let (kind, modifier) = alias::build(self, primitive)?;
+                let definition = Modifier {
+                    name: primitive.identifier.clone(),
+                    modifier,
+                    kind,
+                    origin: primitive.origin.clone(),
+                };
+                self.define(definition, replaced);
                 continue;
             }
             let raw = RawPrimitive::from_primitive(primitive)?;
@@ -332,6 +338,27 @@ impl Scene {
                  conflicting material in RADIANCE)",
             )),
         }
+    }
+}
+
+impl alias::Definitions for Scene {
+    fn resolve(&self, name: &str) -> Option<ModifierRef> {
+        self.modifier_named(name)
+    }
+
+    fn definition(&self, name: &str) -> Option<(ModifierKind, ModifierRef)> {
+        let id = *self.current.get(name)?;
+        let m = self.modifiers.get(id.index())?;
+        Some((m.kind.clone(), m.modifier))
+    }
+
+    fn is_surface(&self, name: &str) -> bool {
+        self.surfaces.iter().any(|s| s.name == name)
+    }
+
+    fn material_of(&self, modifier: ModifierRef) -> Option<(String, &'static str)> {
+        self.material(modifier)
+            .map(|m| (m.name.clone(), m.kind.type_name()))
     }
 }
 
