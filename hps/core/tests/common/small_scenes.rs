@@ -32,18 +32,24 @@ pub const SUN_AND_SKY: &str = "void light solar 0 0 3 6e5 6e5 6e5\n\
     void glow ground_glow 0 0 4 2 2 2 0\n\
     ground_glow source ground 0 0 4 0 0 -1 180\n";
 
-/// Writes `scene` to a scratch folder and compares both programs on it under `sky` at
-/// `sensors` (`.pts` text): every sensor within 2 % or 3 combined standard errors.
-pub fn compare(label: &str, scene: &str, sky: &str, sensors: &str) {
-    let dir = tempfile::tempdir().unwrap();
-    std::fs::write(dir.path().join("scene.rad"), scene).unwrap();
-    let effort = Effort {
-        rtrace_args: RTRACE_ARGS,
+/// The effort of these comparisons with rtrace's `args`: every sensor within 2 % or 3
+/// combined standard errors.
+pub fn effort<'a>(args: &'a [&'a str]) -> Effort<'a> {
+    Effort {
+        rtrace_args: args,
         rtrace_samples: RTRACE_SAMPLES,
         our_samples: OUR_SAMPLES,
         our_bounces: 8,
         k_sigma: 3.0,
-    };
+    }
+}
+
+/// Writes `scene` to a scratch folder and compares both programs on it under `sky` at
+/// `sensors` (`.pts` text), with [`effort`].
+pub fn compare(label: &str, scene: &str, sky: &str, sensors: &str) {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("scene.rad"), scene).unwrap();
+    let effort = effort(RTRACE_ARGS);
     compare_with_rtrace(
         label,
         &[PathBuf::from("scene.rad")],
