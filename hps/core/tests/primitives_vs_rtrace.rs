@@ -5,7 +5,9 @@
 //! - a round room of inward surfaces: `tube` walls, a `cup` roof and a `bubble` dome, each a
 //!   `glow` that lights the room only if its normal points in;
 //! - a `dielectric` block and an `interface` block in a sunbeam, with sensors in their
-//!   refracted sun, in the open and under them.
+//!   refracted sun, in the open and under them;
+//! - a window cut by an `antimatter` box through a thick `!genbox` wall: the sun and sky come
+//!   in through the hole, and the hole's reveals are shaded as the wall.
 //!
 //! (Light sources, `spotlight` and `illum`: tests/sources_vs_rtrace.rs.) Acceptance: every
 //! sensor within 2 % of rtrace or 3 combined standard errors (rtrace's moderated towards the
@@ -45,4 +47,26 @@ fn dielectric_and_interface_blocks_in_a_sunbeam() {
     let sensors = "-1.13 0.70 0 0 0 1\n0.79 0.85 0 0 0 1\n0.5 -2 0 0 0 1\n\
         -0.5 0 0.01 0 0 1\n1.5 0 0.01 0 0 1\n-0.5 0 0.9 0 0 -1\n";
     compare("dielectric", scene, SUN_AND_SKY, sensors);
+}
+
+#[test]
+fn an_antimatter_box_cuts_a_window_through_a_thick_wall() {
+    // A 4 x 5 x 3 m room (y > 0) whose south wall is a 0.3 m thick box of `wall_mat`; a
+    // 2 x 1.4 m antimatter box through it, reaching into the room and out of the wall.
+    let scene = "void plastic wall_mat 0 0 5 .6 .6 .6 0 0\n\
+        void plastic white 0 0 5 .7 .7 .7 0 0\n\
+        void plastic dark 0 0 5 .2 .2 .2 0 0\n\
+        void antimatter hole_am 1 wall_mat 0 0\n\
+        dark polygon floor 0 0 12 0 0 0 0 5 0 4 5 0 4 0 0\n\
+        white polygon ceiling 0 0 12 0 0 3 4 0 3 4 5 3 0 5 3\n\
+        white polygon west 0 0 12 0 0 0 0 0 3 0 5 3 0 5 0\n\
+        white polygon east 0 0 12 4 0 0 4 5 0 4 5 3 4 0 3\n\
+        white polygon north 0 0 12 0 5 0 0 5 3 4 5 3 4 5 0\n\
+        !genbox wall_mat south 4 0.3 3 | xform -t 0 -0.3 0\n\
+        !genbox hole_am hole 2 0.5 1.4 | xform -t 1 -0.4 0.8\n";
+    // In the sun patch, deep in the room, on the wall beside the hole, and one looking at a
+    // reveal of the hole from the side.
+    let sensors = "1.5 1.2 0 0 0 1\n1 3 0.8 0 0 1\n3 4 0.8 0 0 1\n3.5 0.05 1.5 0 1 0\n\
+        0.5 0.6 1.5 1 -1 0\n";
+    compare("antimatter", scene, SUN_AND_SKY, sensors);
 }

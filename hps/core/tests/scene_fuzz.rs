@@ -239,7 +239,9 @@ const SCENE_MATERIALS: &str = "void dielectric crystal 0 0 5 .8 .8 .8 1.5 0\n\
     void glass pane 0 0 3 .9 .9 .9\n\
     void illum window_glass 1 pane 0 3 10 10 10\n\
     void glow lamp 0 0 4 5 5 5 0\n\
-    inherit alias copy crystal\n";
+    inherit alias copy crystal\n\
+    void antimatter hole 2 m crystal 0 0\n\
+    void antimatter erase 1 void 0 0\n";
 
 /// Words of inline command lines: programs, their options, numbers and shell syntax.
 fn command_word() -> impl Strategy<Value = String> {
@@ -328,7 +330,7 @@ proptest! {
 
     /// Whatever loads also prepares for tracing or is refused with a located error, and a few
     /// paths through it stay finite and end: the engine side of the new primitives (inward
-    /// shapes, dielectric, illum, spotlight) under random arguments.
+    /// shapes, dielectric, illum, spotlight, antimatter) under random arguments.
     #[test]
     fn random_primitives_trace_or_are_refused(
         primitives in prop::collection::vec(traceable_primitive(), 1..16),

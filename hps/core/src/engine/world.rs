@@ -1,5 +1,6 @@
 //! The traceable scene: surfaces with their materials under a BVH, and the distant sources.
 
+use super::antimatter::Antimatter;
 use super::bvh::Bvh;
 use super::error::EngineError;
 use super::material::{Emitter, Material, ShadowCrossing, SourceCrossing};
@@ -51,6 +52,8 @@ pub struct World {
     /// Some material treats shadow rays towards light sources apart (`illum`, `dielectric`):
     /// [`World::source_transmission`] then traces them crossing by crossing.
     source_crossings: bool,
+    /// Volumes subtracted by `antimatter`, and what each primitive's modifier is.
+    antimatter: Antimatter,
     /// The radiance-proportional distribution of escape directions, built on first use and
     /// dropped whenever the sources or the environment change.
     sky_distribution: std::sync::OnceLock<Option<SkyDistribution>>,
@@ -89,6 +92,7 @@ impl World {
         let mut distant = Vec::new();
         let mut names = Vec::new();
         let mut polygon_vertices = Vec::new();
+        let mut antimatter = Antimatter::default();
         for surface in scene.surfaces() {
             let (material, patterns) = resolve(scene, surface)?;
             if let Shape::Source(source) = &surface.shape {
@@ -109,6 +113,11 @@ impl World {
             if let Shape::Polygon(p) = &surface.shape {
                 polygon_vertices.push((primitives.len() as u32, p.vertices_m.clone()));
             }
+            let subtracted = material.and_then(|m| match &m.kind {
+                ModifierKind::Antimatter(a) => Some((surface.modifier, a.subtracted.as_slice())),
+                _ => None,
+            });
+            antimatter.push(surface.modifier, subtracted);
             names.push(surface.name.clone());
             primitives.push(match &surface.shape {
                 Shape::Polygon(p) => Primitive::Polygon(PreparedPolygon::new(p)),
@@ -142,6 +151,7 @@ impl World {
             portals: Portals::default(),
             mirrors: Vec::new(),
             source_crossings: false,
+            antimatter,
             sky_distribution: std::sync::OnceLock::new(),
         };
         world.source_crossings = world.materials.iter().any(Material::has_source_crossing);
@@ -341,8 +351,62 @@ impl World {
         self.closest_where(ray, from, |p| !self.material(p).is_clear())
     }
 
-    /// The closest hit on a primitive `accept` takes, not counting the flat surface `from`.
+    /// The closest hit on a primitive `accept` takes, not counting the flat surface `from`,
+    /// with antimatter applied: a surface inside a volume that subtracts it is passed, and a
+    /// volume's own surface is met only where a ray leaves it into an object of its first
+    /// modifier (m_clip.c), its normal turned around.
     fn closest_where(
+        &self,
+        ray: &Ray,
+        from: Option<u32>,
+        accept: impl Fn(u32) -> bool,
+    ) -> Option<Hit> {
+        if self.antimatter.is_empty() {
+            return self.closest_raw(ray, from, accept);
+        }
+        let am = &self.antimatter;
+        let (mut segment, mut from, mut travelled_m) = (*ray, from, 0.0);
+        for _ in 0..MAX_SHADOW_CROSSINGS {
+            let hit =
+                self.closest_raw(&segment, from, |p| am.volume_of(p).is_some() || accept(p))?;
+            let p = segment.at(hit.t_m);
+            let d = segment.direction;
+            let met = match am.volume_of(hit.primitive) {
+                Some(v) => {
+                    d.dot(hit.normal) > 0.0
+                        && accept(hit.primitive)
+                        && am.shaded_as(v).is_some_and(|m| {
+                            self.is_inside(p, d, hit.primitive, |q| am.has_modifier(q, m))
+                        })
+                }
+                None => !am
+                    .subtracting(hit.primitive)
+                    .any(|v| self.is_inside(p, d, hit.primitive, |q| am.volume_of(q) == Some(v))),
+            };
+            if met {
+                let turned = am.volume_of(hit.primitive).is_some();
+                return Some(Hit {
+                    t_m: travelled_m + hit.t_m,
+                    normal: if turned { -hit.normal } else { hit.normal },
+                    primitive: hit.primitive,
+                });
+            }
+            travelled_m += hit.t_m;
+            segment = Ray::new(p, d);
+            from = Some(hit.primitive);
+        }
+        None
+    }
+
+    /// Whether `p` (on primitive `from`) lies inside the closed surface made of the
+    /// primitives `member` takes: the nearest of them along unit `d` is met from inside.
+    fn is_inside(&self, p: DVec3, d: DVec3, from: u32, member: impl Fn(u32) -> bool) -> bool {
+        self.closest_raw(&Ray::new(p, d), Some(from), member)
+            .is_some_and(|h| d.dot(h.normal) > 0.0)
+    }
+
+    /// [`World::closest_where`] without antimatter.
+    fn closest_raw(
         &self,
         ray: &Ray,
         from: Option<u32>,
@@ -399,6 +463,10 @@ impl World {
     /// transmits may be crossed twice, which one intersection per primitive cannot see, so a
     /// ray that meets one is traced crossing by crossing instead.
     pub fn shadow_transmission(&self, origin: DVec3, from: Option<u32>, dir: DVec3) -> DVec3 {
+        if !self.antimatter.is_empty() {
+            // Which surfaces count depends on the volumes crossed: in order only.
+            return self.shadow_transmission_stepwise(origin, from, dir);
+        }
         let ray = Ray::new(origin, dir);
         let mut t = DVec3::ONE;
         let mut curved_crossing = false;

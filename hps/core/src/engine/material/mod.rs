@@ -278,6 +278,10 @@ impl Material {
         patterns: Vec<SkyFunction>,
     ) -> Result<Material, EngineError> {
         let mut material = Self::from_modifier(surface, modifier, patterns)?;
+        if let Some(ModifierKind::Antimatter(a)) = modifier.map(|m| &m.kind) {
+            let first = a.subtracted.first().copied().unwrap_or(ModifierRef::Void);
+            return Self::from_scene(scene, surface, scene.material(first), Vec::new());
+        }
         if let (Material::Illum(i), Some(m)) = (&mut material, modifier) {
             if let ModifierKind::Illum(illum) = &m.kind {
                 let alternate = match illum.alternate_material {
@@ -372,16 +376,8 @@ impl Material {
                 },
                 alternate: Box::new(Material::Invisible),
             }),
-            ModifierKind::Antimatter(_) => {
-                return Err(EngineError::Unsupported {
-                    at: m.origin.clone(),
-                    what: format!(
-                        "antimatter `{}` (a volume subtracted from others) is read but not \
-                         traced yet; surface `{}` uses it",
-                        m.name, surface.name
-                    ),
-                })
-            }
+            // Shaded as its first modifier's material, set by `from_scene`.
+            ModifierKind::Antimatter(_) => Material::Invisible,
             ModifierKind::Brightfunc(_) => unreachable!("patterns are not materials"),
         })
     }
