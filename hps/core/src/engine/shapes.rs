@@ -411,6 +411,25 @@ mod tests {
     }
 
     #[test]
+    fn inward_shapes_turn_the_normal_only() {
+        let bubble = Primitive::Inward(Box::new(Primitive::Sphere(Sphere {
+            centre_m: DVec3::ZERO,
+            radius_m: 2.0,
+        })));
+        let h = bubble
+            .intersect(&Ray::new(DVec3::ZERO, DVec3::X), 0.0, 1e9)
+            .unwrap();
+        assert!((h.t_m - 2.0).abs() < 1e-12 && (h.normal + DVec3::X).length() < 1e-12);
+        assert!(!bubble.is_flat());
+        // The same box (padded once more, by a nanometre).
+        let outward = Primitive::Sphere(Sphere {
+            centre_m: DVec3::ZERO,
+            radius_m: 2.0,
+        });
+        assert!((bubble.bounds().max_m - outward.bounds().max_m).length() < 1e-8);
+    }
+
+    #[test]
     fn ring_annulus() {
         let r = Ring {
             centre_m: DVec3::ZERO,

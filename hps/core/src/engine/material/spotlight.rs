@@ -35,3 +35,31 @@ impl SpotlightMaterial {
         self.emitter.seen(d, normal, primary)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn light_leaves_inside_the_cone_only_and_falls_off_from_the_focus() {
+        let spot = SpotlightMaterial {
+            emitter: Emitter {
+                radiance_w_sr_m2: DVec3::splat(10.0),
+                patterns: Vec::new(),
+                illuminates: true,
+            },
+            direction: -DVec3::Z,
+            cos_half_angle: 30f64.to_radians().cos(),
+            focal_length_m: 1.0,
+        };
+        let down = -DVec3::Z;
+        // A ray coming up from 20° off the axis meets light, from 40° none.
+        let at = |deg: f64| DVec3::new(deg.to_radians().sin(), 0.0, deg.to_radians().cos());
+        assert_eq!(spot.seen(at(20.0), down, false), Some(DVec3::splat(10.0)));
+        assert_eq!(spot.seen(at(40.0), down, false), None);
+        // Its back is black, as for any light.
+        assert_eq!(spot.seen(-at(0.0), down, false), None);
+        // d² / (d + f)²: at 1 m from a lamp focused 1 m behind it, a quarter.
+        assert!((spot.focus_factor(1.0) - 0.25).abs() < 1e-15);
+    }
+}
