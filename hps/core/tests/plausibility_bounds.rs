@@ -1,11 +1,11 @@
-//! The outdoor plausibility bound (`sky::plausibility`) against real skies: every minute of the
+//! The outdoor plausibility bound (`model::plausibility`) against real skies: every minute of the
 //! two measured station records of `shared/data/irradiance` (SURFRAD Alamosa, a clear winter
 //! day at 2317 m; NREL MIDC NWTC, an autumn day at 1855 m) must lie under it, or the daemon
 //! would flag real light; and the clear noon must reach most of it, or it would flag nothing.
 
 use chrono::{Datelike, TimeDelta};
 use skylux_hps::io::irradiance::{read_irradiance_file, ReadOptions, StampConvention};
-use skylux_hps::sky::plausibility::{clear_sky_ghi_w_m2, global_horizontal_bound_w_m2};
+use skylux_hps::model::plausibility::{clear_sky_ghi_w_m2, global_horizontal_bound_w_m2};
 use skylux_hps::sun::{solar_position, Atmosphere, Site};
 use std::path::PathBuf;
 

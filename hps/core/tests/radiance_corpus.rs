@@ -170,7 +170,7 @@ const CASES: &[Case] = &[
     Case {
         dir: "radiance-examples/obj/virtual",
         files: &["environ.rad", "furniture.rad"],
-        expect: Expect::Stops("environ.rad", 56, &["`alias`", TYPE]),
+        expect: Expect::Stops("draft_ang.rad", 26, &["`metal2`", TYPE]),
     },
     Case {
         dir: "radiance-examples/obj/virtual",
@@ -190,7 +190,7 @@ const CASES: &[Case] = &[
     Case {
         dir: "radiance-examples/obj/cabin",
         files: &["flood.rad"],
-        expect: Expect::Stops("flood.rad", 7, &["`spotlight`", TYPE]),
+        expect: Expect::Loads(1),
     },
     Case {
         dir: RENDERS,
@@ -216,7 +216,7 @@ const CASES: &[Case] = &[
     Case {
         dir: RENDERS,
         files: &["basic.mat", "patterns.mat"],
-        expect: Expect::Stops("patterns.mat", 16, &["`alias`", TYPE]),
+        expect: Expect::Stops("patterns.mat", 18, &["`colortext`", TYPE]),
     },
     Case {
         dir: RENDERS,
@@ -241,7 +241,7 @@ const CASES: &[Case] = &[
     Case {
         dir: RENDERS,
         files: &["basic.mat", "ball_in_cube.rad"],
-        expect: Expect::Stops("ball_in_cube.rad", 4, &["`dielectric`", TYPE]),
+        expect: Expect::Loads(7),
     },
     Case {
         dir: RENDERS,
@@ -251,7 +251,7 @@ const CASES: &[Case] = &[
     Case {
         dir: RENDERS,
         files: &["basic.mat", "antimatter_portal.rad"],
-        expect: Expect::Stops("antimatter_portal.rad", 5, &["`antimatter`", TYPE]),
+        expect: Expect::Loads(3),
     },
     Case {
         dir: "radiance-test-renders/resources/cornell_box",
@@ -275,31 +275,35 @@ fn outcome(dir: &Path, files: &[&str]) -> Result<usize, (Option<(PathBuf, usize)
 fn every_corpus_scene_loads_or_stops_where_expected() {
     let corpus = corpus();
     let mut table = Vec::new();
+    let mut failures = Vec::new();
     for case in CASES {
         let dir = corpus.join(case.dir);
         let what = format!("{} {:?}", case.dir, case.files);
         let got = outcome(&dir, case.files);
-        match (&case.expect, &got) {
-            (Expect::Loads(n), Ok(count)) => {
-                assert_eq!(count, n, "{what}");
-                table.push(format!("{what}: loads, {count} surfaces"));
+        let verdict = match (&case.expect, &got) {
+            (Expect::Loads(n), Ok(count)) if count == n => {
+                Ok(format!("{what}: loads, {count} surfaces"))
             }
-            (Expect::Stops(file, line, fragments), Err((Some((at, at_line)), message))) => {
-                assert_eq!(at.file_name().unwrap(), *file, "{what}: {message}");
-                assert_eq!(at_line, line, "{what}: {message}");
-                for f in *fragments {
-                    assert!(message.contains(f), "{what}: `{f}` not in {message}");
-                }
-                table.push(format!("{what}: stops: {message}"));
+            (Expect::Stops(file, line, fragments), Err((Some((at, at_line)), message)))
+                if at.file_name().is_some_and(|f| f == *file)
+                    && at_line == line
+                    && fragments.iter().all(|f| message.contains(f)) =>
+            {
+                Ok(format!("{what}: stops: {message}"))
             }
-            (Expect::Unreadable(file), Err((None, message))) => {
-                assert!(message.contains(file), "{what}: {message}");
-                table.push(format!("{what}: {message}"));
+            (Expect::Unreadable(file), Err((None, message))) if message.contains(file) => {
+                Ok(format!("{what}: {message}"))
             }
-            (_, got) => panic!("{what}: unexpected outcome {got:?}"),
+            (_, got) => Err(format!("{what}: unexpected outcome {got:?}")),
+        };
+        match verdict {
+            Ok(line) => table.push(line),
+            Err(failure) => failures.push(failure),
         }
     }
     println!("{}", table.join("\n"));
+    // Every case that changed at once, not only the first.
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
 /// Every loading case expands to what `xform -e` writes for its files.
@@ -335,7 +339,7 @@ fn loading_scenes_expand_as_xform_e() {
         );
         compared += 1;
     }
-    assert_eq!(compared, 7);
+    assert_eq!(compared, 10);
 }
 
 /// The scene: the tutorial room from `room.rad` (its `!xform` lines) is the geometry

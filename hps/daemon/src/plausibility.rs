@@ -1,9 +1,9 @@
-//! Every cycle's outputs against physical bounds (`skylux_hps::sky::plausibility`): a value no
+//! Every cycle's outputs against physical bounds (`skylux_hps::model::plausibility`): a value no
 //! sky can give is flagged in the record, counted in `/v1/metrics` and logged, never passed on
 //! silently to a building that acts on it.
 
 use crate::cycle::CycleRecord;
-use skylux_hps::sky::plausibility::{direct_normal_bound_lux, global_horizontal_bound_lux};
+use skylux_hps::model::plausibility::{direct_normal_bound_lux, global_horizontal_bound_lux};
 
 /// The flags a record can carry (stable names: records, the API and the metrics use them).
 pub const OUTDOOR_ABOVE_BOUND: &str = "outdoor_above_clear_sky_bound";

@@ -182,7 +182,7 @@ fn sensor_path(
         if cos > 0.0 {
             e += source.radiance(l)
                 * (source.solid_angle_sr * cos)
-                * world.shadow_transmission(position_m, None, l);
+                * world.source_transmission(position_m, None, l);
         }
     }
     // The sun via plane mirrors (virtual sources).
@@ -376,7 +376,7 @@ impl<'a> SkyNee<'a> {
                     if h.primitive == prim_y && (h.t_m - dist).abs() <= 1e-6 * dist.max(1.0) => {}
                 _ => continue,
             }
-            let t = world.shadow_transmission(shading.origin_towards(y, l), Some(prim_y), l);
+            let t = world.source_transmission(shading.origin_towards(y, l), Some(prim_y), l);
             if t == DVec3::ZERO {
                 continue;
             }
@@ -633,10 +633,9 @@ fn trace(
         path.from = Some(hit.primitive);
         let d = path.ray.direction;
         let flat = world.is_flat(hit.primitive);
-        let next = match world
-            .material(hit.primitive)
-            .interact(d, hit.normal, flat, false)
-        {
+        let material = world.material(hit.primitive);
+        path.throughput *= material.arrival_factor(d, hit.normal, hit.t_m, false);
+        let next = match material.interact(d, hit.normal, flat, false) {
             Interaction::PassThrough => path.cross(d),
             Interaction::Emits(l) => {
                 path.radiance += path.throughput * l;
@@ -767,7 +766,7 @@ impl Tracer<'_, '_> {
             }
             let t = self
                 .world
-                .shadow_transmission(shading.origin_towards(p, l), path.from, l);
+                .source_transmission(shading.origin_towards(p, l), path.from, l);
             if t == DVec3::ZERO {
                 continue;
             }

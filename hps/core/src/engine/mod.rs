@@ -20,6 +20,7 @@
 //! ```
 
 pub mod accel;
+pub mod antimatter;
 pub mod bvh;
 pub mod daylight_coefficients;
 mod error;

@@ -47,10 +47,9 @@ pub fn ray_radiance(world: &World, ray: Ray, settings: &Settings, rng: &mut Rng)
         let d = ray.direction;
         let p = ray.at(hit.t_m);
         let flat = world.is_flat(hit.primitive);
-        let next = match world
-            .material(hit.primitive)
-            .interact(d, hit.normal, flat, true)
-        {
+        let material = world.material(hit.primitive);
+        throughput *= material.arrival_factor(d, hit.normal, hit.t_m, true);
+        let next = match material.interact(d, hit.normal, flat, true) {
             Interaction::PassThrough => {
                 crossings += 1;
                 if crossings > MAX_CROSSINGS {

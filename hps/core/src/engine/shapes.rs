@@ -25,6 +25,9 @@ pub enum Primitive {
     Sphere(Sphere),
     Cone(PreparedCone),
     Ring(Ring),
+    /// RADIANCE's `bubble`, `tube` and `cup`: the surface of its inner primitive with the
+    /// normal pointing in.
+    Inward(Box<Primitive>),
 }
 
 impl Primitive {
@@ -67,6 +70,7 @@ impl Primitive {
                     max_m: r.centre_m + e,
                 }
             }
+            Primitive::Inward(inner) => inner.bounds(),
         }
         // Flat boxes are fine for the slab test; a small pad guards against rounding.
         .padded(1e-9)
@@ -79,6 +83,10 @@ impl Primitive {
             Primitive::Sphere(s) => intersect_sphere(s, ray, t_min_m, t_max_m),
             Primitive::Cone(c) => c.intersect(ray, t_min_m, t_max_m),
             Primitive::Ring(r) => intersect_ring(r, ray, t_min_m, t_max_m),
+            Primitive::Inward(inner) => inner.intersect(ray, t_min_m, t_max_m).map(|h| ShapeHit {
+                normal: -h.normal,
+                ..h
+            }),
         }
     }
 }
@@ -400,6 +408,25 @@ mod tests {
         assert!(cone
             .intersect(&Ray::new(DVec3::new(3.0, 0.0, -0.5), -DVec3::X), 0.0, 1e9)
             .is_none());
+    }
+
+    #[test]
+    fn inward_shapes_turn_the_normal_only() {
+        let bubble = Primitive::Inward(Box::new(Primitive::Sphere(Sphere {
+            centre_m: DVec3::ZERO,
+            radius_m: 2.0,
+        })));
+        let h = bubble
+            .intersect(&Ray::new(DVec3::ZERO, DVec3::X), 0.0, 1e9)
+            .unwrap();
+        assert!((h.t_m - 2.0).abs() < 1e-12 && (h.normal + DVec3::X).length() < 1e-12);
+        assert!(!bubble.is_flat());
+        // The same box (padded once more, by a nanometre).
+        let outward = Primitive::Sphere(Sphere {
+            centre_m: DVec3::ZERO,
+            radius_m: 2.0,
+        });
+        assert!((bubble.bounds().max_m - outward.bounds().max_m).length() < 1e-8);
     }
 
     #[test]

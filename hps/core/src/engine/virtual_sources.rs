@@ -111,7 +111,7 @@ pub fn mirrored_lights(
             else {
                 continue;
             };
-            let t_out = world.shadow_transmission(q, Some(mirror), l);
+            let t_out = world.source_transmission(q, Some(mirror), l);
             total += c * reflectance * source.radiance(l) * t_in * t_out;
         }
     }

@@ -1,8 +1,9 @@
 //! The traceable scene: surfaces with their materials under a BVH, and the distant sources.
 
+use super::antimatter::Antimatter;
 use super::bvh::Bvh;
 use super::error::EngineError;
-use super::material::{Emitter, Material, ShadowCrossing};
+use super::material::{Emitter, Material, ShadowCrossing, SourceCrossing};
 use super::portal::Portals;
 use super::ray::{Ray, FTINY};
 use super::sampling::basis;
@@ -48,6 +49,11 @@ pub struct World {
     /// Plane mirrors (primitive, normal, reflectance), for virtual sources: listed once, not
     /// found by a scan of every primitive at every vertex.
     mirrors: Vec<(u32, DVec3, DVec3)>,
+    /// Some material treats shadow rays towards light sources apart (`illum`, `dielectric`):
+    /// [`World::source_transmission`] then traces them crossing by crossing.
+    source_crossings: bool,
+    /// Volumes subtracted by `antimatter`, and what each primitive's modifier is.
+    antimatter: Antimatter,
     /// The radiance-proportional distribution of escape directions, built on first use and
     /// dropped whenever the sources or the environment change.
     sky_distribution: std::sync::OnceLock<Option<SkyDistribution>>,
@@ -86,6 +92,7 @@ impl World {
         let mut distant = Vec::new();
         let mut names = Vec::new();
         let mut polygon_vertices = Vec::new();
+        let mut antimatter = Antimatter::default();
         for surface in scene.surfaces() {
             let (material, patterns) = resolve(scene, surface)?;
             if let Shape::Source(source) = &surface.shape {
@@ -96,7 +103,7 @@ impl World {
             let index = match material_index.get(&key) {
                 Some(&i) => i,
                 None => {
-                    let prepared = Material::from_modifier(surface, material, patterns)?;
+                    let prepared = Material::from_scene(scene, surface, material, patterns)?;
                     materials.push(prepared);
                     let i = (materials.len() - 1) as u32;
                     material_index.insert(key, i);
@@ -106,6 +113,11 @@ impl World {
             if let Shape::Polygon(p) = &surface.shape {
                 polygon_vertices.push((primitives.len() as u32, p.vertices_m.clone()));
             }
+            let subtracted = material.and_then(|m| match &m.kind {
+                ModifierKind::Antimatter(a) => Some((surface.modifier, a.subtracted.as_slice())),
+                _ => None,
+            });
+            antimatter.push(surface.modifier, subtracted);
             names.push(surface.name.clone());
             primitives.push(match &surface.shape {
                 Shape::Polygon(p) => Primitive::Polygon(PreparedPolygon::new(p)),
@@ -113,6 +125,13 @@ impl World {
                 Shape::Cylinder(c) => Primitive::Cone(PreparedCone::from_cylinder(c)),
                 Shape::Cone(c) => Primitive::Cone(PreparedCone::from_cone(c)),
                 Shape::Ring(r) => Primitive::Ring(r.clone()),
+                Shape::Bubble(s) => Primitive::Inward(Box::new(Primitive::Sphere(s.clone()))),
+                Shape::Tube(c) => {
+                    Primitive::Inward(Box::new(Primitive::Cone(PreparedCone::from_cylinder(c))))
+                }
+                Shape::Cup(c) => {
+                    Primitive::Inward(Box::new(Primitive::Cone(PreparedCone::from_cone(c))))
+                }
                 Shape::Source(_) => unreachable!("handled above"),
             });
             material_of.push(index);
@@ -131,8 +150,11 @@ impl World {
             portal_candidates: Vec::new(),
             portals: Portals::default(),
             mirrors: Vec::new(),
+            source_crossings: false,
+            antimatter,
             sky_distribution: std::sync::OnceLock::new(),
         };
+        world.source_crossings = world.materials.iter().any(Material::has_source_crossing);
         world.mirrors = (0..world.primitives.len() as u32)
             .filter_map(|i| {
                 let reflectance = world.material(i).virtual_source_reflectance()?;
@@ -329,8 +351,62 @@ impl World {
         self.closest_where(ray, from, |p| !self.material(p).is_clear())
     }
 
-    /// The closest hit on a primitive `accept` takes, not counting the flat surface `from`.
+    /// The closest hit on a primitive `accept` takes, not counting the flat surface `from`,
+    /// with antimatter applied: a surface inside a volume that subtracts it is passed, and a
+    /// volume's own surface is met only where a ray leaves it into an object of its first
+    /// modifier (m_clip.c), its normal turned around.
     fn closest_where(
+        &self,
+        ray: &Ray,
+        from: Option<u32>,
+        accept: impl Fn(u32) -> bool,
+    ) -> Option<Hit> {
+        if self.antimatter.is_empty() {
+            return self.closest_raw(ray, from, accept);
+        }
+        let am = &self.antimatter;
+        let (mut segment, mut from, mut travelled_m) = (*ray, from, 0.0);
+        for _ in 0..MAX_SHADOW_CROSSINGS {
+            let hit =
+                self.closest_raw(&segment, from, |p| am.volume_of(p).is_some() || accept(p))?;
+            let p = segment.at(hit.t_m);
+            let d = segment.direction;
+            let met = match am.volume_of(hit.primitive) {
+                Some(v) => {
+                    d.dot(hit.normal) > 0.0
+                        && accept(hit.primitive)
+                        && am.shaded_as(v).is_some_and(|m| {
+                            self.is_inside(p, d, hit.primitive, |q| am.has_modifier(q, m))
+                        })
+                }
+                None => !am
+                    .subtracting(hit.primitive)
+                    .any(|v| self.is_inside(p, d, hit.primitive, |q| am.volume_of(q) == Some(v))),
+            };
+            if met {
+                let turned = am.volume_of(hit.primitive).is_some();
+                return Some(Hit {
+                    t_m: travelled_m + hit.t_m,
+                    normal: if turned { -hit.normal } else { hit.normal },
+                    primitive: hit.primitive,
+                });
+            }
+            travelled_m += hit.t_m;
+            segment = Ray::new(p, d);
+            from = Some(hit.primitive);
+        }
+        None
+    }
+
+    /// Whether `p` (on primitive `from`) lies inside the closed surface made of the
+    /// primitives `member` takes: the nearest of them along unit `d` is met from inside.
+    fn is_inside(&self, p: DVec3, d: DVec3, from: u32, member: impl Fn(u32) -> bool) -> bool {
+        self.closest_raw(&Ray::new(p, d), Some(from), member)
+            .is_some_and(|h| d.dot(h.normal) > 0.0)
+    }
+
+    /// [`World::closest_where`] without antimatter.
+    fn closest_raw(
         &self,
         ray: &Ray,
         from: Option<u32>,
@@ -387,6 +463,10 @@ impl World {
     /// transmits may be crossed twice, which one intersection per primitive cannot see, so a
     /// ray that meets one is traced crossing by crossing instead.
     pub fn shadow_transmission(&self, origin: DVec3, from: Option<u32>, dir: DVec3) -> DVec3 {
+        if !self.antimatter.is_empty() {
+            // Which surfaces count depends on the volumes crossed: in order only.
+            return self.shadow_transmission_stepwise(origin, from, dir);
+        }
         let ray = Ray::new(origin, dir);
         let mut t = DVec3::ONE;
         let mut curved_crossing = false;
@@ -425,6 +505,48 @@ impl World {
         } else {
             t
         }
+    }
+
+    /// What reaches `origin` from a distant light source along unit `dir` (the sun's
+    /// next-event estimate): as [`World::shadow_transmission`], except that an `illum` is its
+    /// alternate material to such rays and a `dielectric` refracts them, as RADIANCE traces
+    /// shadow rays (source.c `passillum`, dielectric.c). A ray that leaves the scene turned
+    /// away from `dir` (a prism, a lens) misses the source: 0, where RADIANCE would still count
+    /// a deflection within the source's own disc.
+    pub fn source_transmission(&self, origin: DVec3, from: Option<u32>, dir: DVec3) -> DVec3 {
+        if !self.source_crossings {
+            return self.shadow_transmission(origin, from, dir);
+        }
+        let mut ray = Ray::new(origin, dir);
+        let mut from = from;
+        let mut t = DVec3::ONE;
+        for _ in 0..MAX_SHADOW_CROSSINGS {
+            let Some(hit) = self.intersect(&ray, from) else {
+                let straight = ray.direction.dot(dir) >= 1.0 - 1e-12;
+                return if straight { t } else { DVec3::ZERO };
+            };
+            let material = self.material(hit.primitive);
+            t *= material.arrival_factor(ray.direction, hit.normal, hit.t_m, false);
+            let flat = self.is_flat(hit.primitive);
+            let next = match material.source_crossing(ray.direction, hit.normal, flat) {
+                SourceCrossing::Straight(ShadowCrossing::PassThrough) => ray.direction,
+                SourceCrossing::Straight(ShadowCrossing::Transmits(factor)) => {
+                    t *= factor;
+                    ray.direction
+                }
+                SourceCrossing::Straight(ShadowCrossing::Opaque) => return DVec3::ZERO,
+                SourceCrossing::Refracts { direction, factor } => {
+                    t *= factor;
+                    direction
+                }
+            };
+            if t == DVec3::ZERO {
+                return t;
+            }
+            ray = Ray::new(ray.at(hit.t_m), next);
+            from = Some(hit.primitive);
+        }
+        DVec3::ZERO
     }
 
     /// [`World::shadow_transmission`] crossing by crossing, one closest-hit query each.

@@ -5,6 +5,7 @@
 
 pub mod captures;
 pub mod error;
+pub mod plausibility;
 pub mod prediction;
 pub mod room;
 pub mod terms;

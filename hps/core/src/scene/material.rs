@@ -51,6 +51,10 @@ pub enum ModifierKind {
     Brightfunc(Brightfunc),
     /// `BSDF` and `aBSDF` (`bsdf_modifier.rs`).
     Bsdf(BsdfModifier),
+    Dielectric(Dielectric),
+    Spotlight(Spotlight),
+    Illum(Illum),
+    Antimatter(Antimatter),
 }
 
 impl ModifierKind {
@@ -69,6 +73,11 @@ impl ModifierKind {
                 bsdf_modifier::BsdfType::Bsdf => "BSDF",
                 bsdf_modifier::BsdfType::ABsdf => "aBSDF",
             },
+            ModifierKind::Dielectric(d) if d.is_interface => "interface",
+            ModifierKind::Dielectric(_) => "dielectric",
+            ModifierKind::Spotlight(_) => "spotlight",
+            ModifierKind::Illum(_) => "illum",
+            ModifierKind::Antimatter(_) => "antimatter",
         }
     }
 
@@ -169,6 +178,70 @@ pub struct Brightfunc {
     pub real_args: Vec<f64>,
 }
 
+/// Refractive index RADIANCE's `dielectric` adds per unit of Hartmann constant: the constant
+/// is divided by the mean wavelength, 500 nm (dielectric.c `MLAMBDA`).
+pub const HARTMANN_MEAN_WAVELENGTH_NM: f64 = 500.0;
+
+/// One side of a refracting boundary: a medium's index and transmission.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Medium {
+    /// Fraction of light left after one metre in the medium, per channel (the manual's
+    /// "transmission coefficient per unit length"; 1 or more: no absorption).
+    pub transmission_per_m_rgb: DVec3,
+    pub refractive_index: f64,
+}
+
+impl Medium {
+    /// Vacuum, what surrounds a `dielectric` (manual §2.1.2, "Interface").
+    pub const VACUUM: Medium = Medium {
+        transmission_per_m_rgb: DVec3::ONE,
+        refractive_index: 1.0,
+    };
+}
+
+/// `dielectric` or `interface`: a boundary that refracts and reflects by Fresnel's equations
+/// (manual §2.1.2, "Dielectric", "Interface"). The inside is behind the surface normal.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Dielectric {
+    pub inside: Medium,
+    /// Vacuum for a `dielectric`.
+    pub outside: Medium,
+    /// Written as `interface` (two media) rather than `dielectric`.
+    pub is_interface: bool,
+}
+
+/// `spotlight`: a `light` that emits only inside a cone (manual §2.1.2, "Spotlight").
+#[derive(Clone, Debug, PartialEq)]
+pub struct Spotlight {
+    /// Radiance per channel in W/(sr·m²) inside the cone.
+    pub radiance_w_sr_m2: DVec3,
+    /// Full cone angle in degrees.
+    pub cone_angle_deg: f64,
+    /// Unit output direction (the cone's axis).
+    pub direction: DVec3,
+    /// Length of the given direction vector: the focal length behind the source centre,
+    /// which RADIANCE uses only for distant spotlights.
+    pub focal_length_m: f64,
+}
+
+/// `illum`: a secondary source (manual §2.1.2, "Illum"): light for direct sampling, and its
+/// alternate material (or nothing) to every other ray.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Illum {
+    pub radiance_w_sr_m2: DVec3,
+    /// The material it looks like when not sampled as a source; None or `void`: invisible.
+    pub alternate_material: Option<ModifierRef>,
+}
+
+/// `antimatter`: a volume inside which the surfaces of the listed modifiers vanish (manual
+/// §2.1.2, "Antimatter").
+#[derive(Clone, Debug, PartialEq)]
+pub struct Antimatter {
+    /// The modifiers subtracted, at least one; the first also shades the antimatter's own
+    /// surface where a ray leaves it into the regular volume (`void`: invisible).
+    pub subtracted: Vec<ModifierRef>,
+}
+
 /// Interprets a modifier primitive. `resolve` looks up modifier names referenced in string
 /// arguments (mirror's alternate material) as defined before this primitive; `top_file` is
 /// the top-level scene file being read, `working_directory` where RADIANCE would run (both
@@ -237,24 +310,9 @@ pub(crate) fn build(
             })
         }
         PrimitiveType::Mirror => {
-            raw.check_count(
-                ArgumentList::String,
-                raw.strings.len() <= 1,
-                "0 or 1 (optional alternate material)",
-            )?;
-            raw.check_no_integers()?;
+            let alternate_material = optional_alternate(raw, resolve)?;
             raw.check_real_count()?;
             non_negative(raw, 0..3, "a reflectance >= 0")?;
-            let alternate_material = match raw.strings.first() {
-                None => None,
-                Some(name) => Some(resolve(name).ok_or_else(|| SceneError::UnknownModifier {
-                    at: raw.at.clone(),
-                    primitive: raw.describe(),
-                    field: "string argument 1 (alternate material)",
-                    modifier: name.to_string(),
-                    hint: String::new(),
-                })?),
-            };
             ModifierKind::Mirror(Mirror {
                 reflectance_rgb: rgb(0),
                 alternate_material,
@@ -292,12 +350,27 @@ pub(crate) fn build(
         PrimitiveType::Bsdf | PrimitiveType::ABsdf => {
             ModifierKind::Bsdf(bsdf_modifier::build(raw, top_file, working_directory)?)
         }
+        PrimitiveType::Dielectric | PrimitiveType::Interface => {
+            ModifierKind::Dielectric(dielectric(raw)?)
+        }
+        PrimitiveType::Spotlight => ModifierKind::Spotlight(spotlight(raw)?),
+        PrimitiveType::Illum => ModifierKind::Illum(Illum {
+            alternate_material: optional_alternate(raw, resolve)?,
+            radiance_w_sr_m2: {
+                raw.check_real_count()?;
+                rgb(0)
+            },
+        }),
+        PrimitiveType::Antimatter => ModifierKind::Antimatter(antimatter(raw, resolve)?),
         PrimitiveType::Polygon
         | PrimitiveType::Sphere
         | PrimitiveType::Cylinder
         | PrimitiveType::Ring
         | PrimitiveType::Cone
-        | PrimitiveType::Source => {
+        | PrimitiveType::Source
+        | PrimitiveType::Bubble
+        | PrimitiveType::Tube
+        | PrimitiveType::Cup => {
             return Err(raw.invalid(
                 "type",
                 raw.kind.name(),
@@ -305,6 +378,127 @@ pub(crate) fn build(
             ))
         }
     })
+}
+
+/// The optional alternate material of `mirror` and `illum` (one string, a modifier defined
+/// before), after checking there is no integer argument.
+fn optional_alternate(
+    raw: &RawPrimitive<'_>,
+    resolve: &dyn Fn(&str) -> Option<ModifierRef>,
+) -> Result<Option<ModifierRef>, SceneError> {
+    raw.check_count(
+        ArgumentList::String,
+        raw.strings.len() <= 1,
+        "0 or 1 (optional alternate material)",
+    )?;
+    raw.check_no_integers()?;
+    raw.strings
+        .first()
+        .map(|name| {
+            resolve(name).ok_or_else(|| SceneError::UnknownModifier {
+                at: raw.at.clone(),
+                primitive: raw.describe(),
+                field: "string argument 1 (alternate material)",
+                modifier: name.to_string(),
+                hint: String::new(),
+            })
+        })
+        .transpose()
+}
+
+/// `dielectric` (`rtn gtn btn n hc`, index n + hc/500 as dielectric.c computes it) or
+/// `interface` (`rtn1 gtn1 btn1 n1 rtn2 gtn2 btn2 n2`, inside then outside).
+fn dielectric(raw: &RawPrimitive<'_>) -> Result<Dielectric, SceneError> {
+    raw.check_no_strings_or_integers()?;
+    raw.check_real_count()?;
+    let r = &raw.reals;
+    let medium = |first: usize, index: f64| Medium {
+        transmission_per_m_rgb: DVec3::new(r[first], r[first + 1], r[first + 2]),
+        refractive_index: index,
+    };
+    let positive_index = |i: usize, n: f64| {
+        if n > 0.0 {
+            Ok(())
+        } else {
+            Err(raw.invalid_real(i, "a refractive index > 0"))
+        }
+    };
+    if raw.kind == PrimitiveType::Interface {
+        non_negative(raw, 0..3, "a transmission >= 0")?;
+        non_negative(raw, 4..7, "a transmission >= 0")?;
+        positive_index(3, r[3])?;
+        positive_index(7, r[7])?;
+        return Ok(Dielectric {
+            inside: medium(0, r[3]),
+            outside: medium(4, r[7]),
+            is_interface: true,
+        });
+    }
+    non_negative(raw, 0..3, "a transmission >= 0")?;
+    let index = r[3] + r[4] / HARTMANN_MEAN_WAVELENGTH_NM;
+    positive_index(3, index)?;
+    Ok(Dielectric {
+        inside: medium(0, index),
+        outside: Medium::VACUUM,
+        is_interface: false,
+    })
+}
+
+/// `spotlight`: `red green blue angle xdir ydir zdir`.
+fn spotlight(raw: &RawPrimitive<'_>) -> Result<Spotlight, SceneError> {
+    raw.check_no_strings_or_integers()?;
+    raw.check_real_count()?;
+    let r = &raw.reals;
+    if !(r[3] > 0.0 && r[3] <= 360.0) {
+        return Err(raw.invalid_real(3, "a full cone angle in degrees, > 0 and <= 360"));
+    }
+    let given = DVec3::new(r[4], r[5], r[6]);
+    let direction = super::shape::unit_vector(given).ok_or_else(|| {
+        raw.invalid(
+            "direction (real arguments 5-7, xdir ydir zdir)",
+            format!("({} {} {})", r[4], r[5], r[6]),
+            "a non-zero direction",
+        )
+    })?;
+    Ok(Spotlight {
+        radiance_w_sr_m2: DVec3::new(r[0], r[1], r[2]),
+        cone_angle_deg: r[3],
+        direction,
+        focal_length_m: given.length(),
+    })
+}
+
+/// `antimatter`: `N mod1 .. modN`, each a modifier defined before (or `void`).
+fn antimatter(
+    raw: &RawPrimitive<'_>,
+    resolve: &dyn Fn(&str) -> Option<ModifierRef>,
+) -> Result<Antimatter, SceneError> {
+    raw.check_count(
+        ArgumentList::String,
+        !raw.strings.is_empty(),
+        "at least 1 (the modifiers it subtracts)",
+    )?;
+    raw.check_no_integers()?;
+    raw.check_count(ArgumentList::Real, raw.reals.is_empty(), "0 for antimatter")?;
+    let subtracted = raw
+        .strings
+        .iter()
+        .enumerate()
+        .map(|(i, name)| {
+            resolve(name).ok_or_else(|| SceneError::UnknownModifier {
+                at: raw.at.clone(),
+                primitive: raw.describe(),
+                field: if i == 0 {
+                    "string argument 1 (first subtracted modifier)"
+                } else {
+                    "a string argument (subtracted modifier)"
+                },
+                modifier: name.to_string(),
+                hint: String::new(),
+            })
+        })
+        .collect::<Result<_, _>>()?;
+    Ok(Antimatter { subtracted })
 }
 
 /// Reflectances and transmissivities below zero have no physical meaning (RADIANCE accepts

@@ -17,6 +17,7 @@
 //! # Ok::<(), skylux_hps::scene::SceneError>(())
 //! ```
 
+mod alias;
 mod bsdf_modifier;
 mod command;
 mod error;
@@ -35,8 +36,9 @@ pub use bsdf_modifier::{BsdfModifier, BsdfType};
 pub use error::{ArgumentList, SceneError, SourceLocation, SUPPORTED_TYPES};
 pub use expand::{LoadOptions, MAX_INCLUDE_DEPTH, MAX_PRIMITIVES};
 pub use material::{
-    Brightfunc, Glass, Glow, Light, Metal, Mirror, ModifierId, ModifierKind, ModifierRef, Plastic,
-    Trans, GLASS_DEFAULT_REFRACTIVE_INDEX,
+    Antimatter, Brightfunc, Dielectric, Glass, Glow, Illum, Light, Medium, Metal, Mirror,
+    ModifierId, ModifierKind, ModifierRef, Plastic, Spotlight, Trans,
+    GLASS_DEFAULT_REFRACTIVE_INDEX, HARTMANN_MEAN_WAVELENGTH_NM,
 };
 pub use primitive::Primitive;
 pub use sensors::{load_sensors, parse_sensors, Sensor, SensorsError};
@@ -258,6 +260,17 @@ impl Scene {
         let text = utf8(&file, bytes)?;
         let primitives = Expander::new(options).top_text(file.clone(), text)?;
         for primitive in &primitives {
+            if primitive.type_name == "alias" {
+                let (kind, modifier) = alias::build(self, primitive)?;
+                let definition = Modifier {
+                    name: primitive.identifier.clone(),
+                    modifier,
+                    kind,
+                    origin: primitive.origin.clone(),
+                };
+                self.define(definition, replaced);
+                continue;
+            }
             let raw = RawPrimitive::from_primitive(primitive)?;
             let modifier = self.modifier_named(raw.modifier).ok_or_else(|| {
                 let hint = if self.surfaces.iter().any(|s| s.name == raw.modifier) {
@@ -286,15 +299,13 @@ impl Scene {
                 if kind.is_material() {
                     self.check_no_material_below(&raw, modifier)?;
                 }
-                let id = ModifierId::new(self.modifiers.len());
-                self.modifiers.push(Modifier {
+                let definition = Modifier {
                     name: raw.identifier.to_string(),
                     modifier,
                     kind,
                     origin: raw.at.clone(),
-                });
-                let previous = self.current.insert(raw.identifier.to_string(), id);
-                replaced.push((raw.identifier.to_string(), previous));
+                };
+                self.define(definition, replaced);
             } else {
                 let shape = shape::build(&raw)?;
                 self.surfaces.push(Surface {
@@ -306,6 +317,16 @@ impl Scene {
             }
         }
         Ok(())
+    }
+
+    /// Appends a modifier and makes it the current definition of its name, remembering the
+    /// previous one so a failed file can be undone.
+    fn define(&mut self, modifier: Modifier, replaced: &mut Vec<(String, Option<ModifierId>)>) {
+        let id = ModifierId::new(self.modifiers.len());
+        let name = modifier.name.clone();
+        self.modifiers.push(modifier);
+        let previous = self.current.insert(name.clone(), id);
+        replaced.push((name, previous));
     }
 
     /// A material's modifier chain may hold only patterns: RADIANCE stops with "conflicting
@@ -324,6 +345,27 @@ impl Scene {
                  conflicting material in RADIANCE)",
             )),
         }
+    }
+}
+
+impl alias::Definitions for Scene {
+    fn resolve(&self, name: &str) -> Option<ModifierRef> {
+        self.modifier_named(name)
+    }
+
+    fn definition(&self, name: &str) -> Option<(ModifierKind, ModifierRef)> {
+        let id = *self.current.get(name)?;
+        let m = self.modifiers.get(id.index())?;
+        Some((m.kind.clone(), m.modifier))
+    }
+
+    fn is_surface(&self, name: &str) -> bool {
+        self.surfaces.iter().any(|s| s.name == name)
+    }
+
+    fn material_of(&self, modifier: ModifierRef) -> Option<(String, &'static str)> {
+        self.material(modifier)
+            .map(|m| (m.name.clone(), m.kind.type_name()))
     }
 }
 

@@ -13,13 +13,8 @@ use super::primitive::Primitive;
 /// Every other primitive type RADIANCE 5 knows, so a message can say whether an unsupported
 /// type is a RADIANCE type outside the subset or a typo.
 pub(crate) const OTHER_RADIANCE_TYPES: &[&str] = &[
-    "bubble",
-    "cup",
-    "tube",
     "instance",
     "mesh",
-    "illum",
-    "spotlight",
     "prism1",
     "prism2",
     "mist",
@@ -28,8 +23,6 @@ pub(crate) const OTHER_RADIANCE_TYPES: &[&str] = &[
     "trans2",
     "ashik2",
     "WGMDfunc",
-    "dielectric",
-    "interface",
     "plasfunc",
     "metfunc",
     "transfunc",
@@ -37,7 +30,6 @@ pub(crate) const OTHER_RADIANCE_TYPES: &[&str] = &[
     "plasdata",
     "metdata",
     "transdata",
-    "antimatter",
     "texfunc",
     "texdata",
     "colorfunc",
@@ -71,12 +63,20 @@ pub(crate) enum PrimitiveType {
     Brightfunc,
     Bsdf,
     ABsdf,
+    Dielectric,
+    Interface,
+    Spotlight,
+    Illum,
+    Antimatter,
     Polygon,
     Sphere,
     Cylinder,
     Ring,
     Cone,
     Source,
+    Bubble,
+    Tube,
+    Cup,
 }
 
 impl PrimitiveType {
@@ -92,6 +92,14 @@ impl PrimitiveType {
             "brightfunc" => Self::Brightfunc,
             "BSDF" => Self::Bsdf,
             "aBSDF" => Self::ABsdf,
+            "dielectric" => Self::Dielectric,
+            "interface" => Self::Interface,
+            "spotlight" => Self::Spotlight,
+            "illum" => Self::Illum,
+            "antimatter" => Self::Antimatter,
+            "bubble" => Self::Bubble,
+            "tube" => Self::Tube,
+            "cup" => Self::Cup,
             "polygon" => Self::Polygon,
             "sphere" => Self::Sphere,
             "cylinder" => Self::Cylinder,
@@ -114,6 +122,14 @@ impl PrimitiveType {
             Self::Brightfunc => "brightfunc",
             Self::Bsdf => "BSDF",
             Self::ABsdf => "aBSDF",
+            Self::Dielectric => "dielectric",
+            Self::Interface => "interface",
+            Self::Spotlight => "spotlight",
+            Self::Illum => "illum",
+            Self::Antimatter => "antimatter",
+            Self::Bubble => "bubble",
+            Self::Tube => "tube",
+            Self::Cup => "cup",
             Self::Polygon => "polygon",
             Self::Sphere => "sphere",
             Self::Cylinder => "cylinder",
@@ -128,7 +144,15 @@ impl PrimitiveType {
     pub fn is_modifier(self) -> bool {
         !matches!(
             self,
-            Self::Polygon | Self::Sphere | Self::Cylinder | Self::Ring | Self::Cone | Self::Source
+            Self::Polygon
+                | Self::Sphere
+                | Self::Cylinder
+                | Self::Ring
+                | Self::Cone
+                | Self::Source
+                | Self::Bubble
+                | Self::Tube
+                | Self::Cup
         )
     }
 
@@ -138,16 +162,19 @@ impl PrimitiveType {
             Self::Plastic | Self::Metal => &["red", "green", "blue", "spec", "rough"],
             Self::Trans => &["red", "green", "blue", "spec", "rough", "trans", "tspec"],
             Self::Glass => &["rtn", "gtn", "btn", "n"],
-            Self::Mirror | Self::Light => &["red", "green", "blue"],
+            Self::Mirror | Self::Light | Self::Illum => &["red", "green", "blue"],
+            Self::Dielectric => &["rtn", "gtn", "btn", "n", "hc"],
+            Self::Interface => &["rtn1", "gtn1", "btn1", "n1", "rtn2", "gtn2", "btn2", "n2"],
+            Self::Spotlight => &["red", "green", "blue", "angle", "xdir", "ydir", "zdir"],
             Self::Glow => &["red", "green", "blue", "maxrad"],
             Self::Source => &["xdir", "ydir", "zdir", "angle"],
-            Self::Sphere => &["xcent", "ycent", "zcent", "radius"],
-            Self::Cylinder => &["x0", "y0", "z0", "x1", "y1", "z1", "rad"],
-            Self::Cone => &["x0", "y0", "z0", "x1", "y1", "z1", "r0", "r1"],
+            Self::Sphere | Self::Bubble => &["xcent", "ycent", "zcent", "radius"],
+            Self::Cylinder | Self::Tube => &["x0", "y0", "z0", "x1", "y1", "z1", "rad"],
+            Self::Cone | Self::Cup => &["x0", "y0", "z0", "x1", "y1", "z1", "r0", "r1"],
             Self::Ring => &[
                 "xcent", "ycent", "zcent", "xdir", "ydir", "zdir", "r0", "r1",
             ],
-            Self::Brightfunc | Self::Polygon => &[],
+            Self::Brightfunc | Self::Polygon | Self::Antimatter => &[],
             Self::Bsdf | Self::ABsdf => &[
                 "rdf", "gdf", "bdf", "rdb", "gdb", "bdb", "rdt", "gdt", "bdt",
             ],
@@ -573,7 +600,7 @@ mod tests {
 
     #[test]
     fn known_and_unknown_types_are_told_apart() {
-        let known = read_all("void cup c 0 0 8 0 0 0 0 0 1 1 2").unwrap_err();
+        let known = read_all("void prism1 c 0 0 0").unwrap_err();
         assert!(known.to_string().contains("outside the subset"), "{known}");
         let typo = read_all("void plastik c 0 0 5 1 1 1 0 0").unwrap_err();
         assert!(

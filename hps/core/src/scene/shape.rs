@@ -28,6 +28,12 @@ pub enum Shape {
     Cone(Cone),
     Ring(Ring),
     Source(DistantSource),
+    /// `bubble`: a sphere whose normal points in (manual §2.1.1, "Bubble").
+    Bubble(Sphere),
+    /// `tube`: a cylinder whose normal points in (manual §2.1.1, "Tube").
+    Tube(Cylinder),
+    /// `cup`: a cone whose normal points in (manual §2.1.1, "Cup").
+    Cup(Cone),
 }
 
 impl Shape {
@@ -40,6 +46,9 @@ impl Shape {
             Shape::Cone(_) => "cone",
             Shape::Ring(_) => "ring",
             Shape::Source(_) => "source",
+            Shape::Bubble(_) => "bubble",
+            Shape::Tube(_) => "tube",
+            Shape::Cup(_) => "cup",
         }
     }
 }
@@ -129,54 +138,12 @@ pub(crate) fn build(raw: &RawPrimitive<'_>) -> Result<Shape, SceneError> {
     let point = |i: usize| DVec3::new(r[i], r[i + 1], r[i + 2]);
     Ok(match raw.kind {
         PrimitiveType::Polygon => Shape::Polygon(polygon(raw)?),
-        PrimitiveType::Sphere => {
-            raw.check_real_count()?;
-            positive_radius(
-                raw,
-                3,
-                "; an inward-facing sphere is RADIANCE's `bubble`, which Skylux does not read",
-            )?;
-            Shape::Sphere(Sphere {
-                centre_m: point(0),
-                radius_m: r[3],
-            })
-        }
-        PrimitiveType::Cylinder => {
-            raw.check_real_count()?;
-            positive_radius(
-                raw,
-                6,
-                "; an inward-facing cylinder is RADIANCE's `tube`, which Skylux does not read",
-            )?;
-            axis_length(raw, point(0), point(3))?;
-            Shape::Cylinder(Cylinder {
-                start_m: point(0),
-                end_m: point(3),
-                radius_m: r[6],
-            })
-        }
-        PrimitiveType::Cone => {
-            raw.check_real_count()?;
-            for i in [6, 7] {
-                if r[i] < 0.0 {
-                    return Err(raw.invalid_real(i, "a radius >= 0; an inward-facing cone is RADIANCE's `cup`, which Skylux does not read"));
-                }
-            }
-            if r[6] < MIN_LENGTH_M && r[7] < MIN_LENGTH_M {
-                return Err(raw.invalid(
-                    "radii r0 r1",
-                    format!("{} {}", r[6], r[7]),
-                    format!("at least one radius >= {MIN_LENGTH_M} m"),
-                ));
-            }
-            axis_length(raw, point(0), point(3))?;
-            Shape::Cone(Cone {
-                start_m: point(0),
-                end_m: point(3),
-                start_radius_m: r[6],
-                end_radius_m: r[7],
-            })
-        }
+        PrimitiveType::Sphere => Shape::Sphere(sphere(raw)?),
+        PrimitiveType::Bubble => Shape::Bubble(sphere(raw)?),
+        PrimitiveType::Cylinder => Shape::Cylinder(cylinder(raw)?),
+        PrimitiveType::Tube => Shape::Tube(cylinder(raw)?),
+        PrimitiveType::Cone => Shape::Cone(cone(raw)?),
+        PrimitiveType::Cup => Shape::Cup(cone(raw)?),
         PrimitiveType::Ring => {
             raw.check_real_count()?;
             let normal = unit_vector(point(3)).ok_or_else(|| {
@@ -236,13 +203,81 @@ pub(crate) fn build(raw: &RawPrimitive<'_>) -> Result<Shape, SceneError> {
         | PrimitiveType::Glow
         | PrimitiveType::Brightfunc
         | PrimitiveType::Bsdf
-        | PrimitiveType::ABsdf => {
+        | PrimitiveType::ABsdf
+        | PrimitiveType::Dielectric
+        | PrimitiveType::Interface
+        | PrimitiveType::Spotlight
+        | PrimitiveType::Illum
+        | PrimitiveType::Antimatter => {
             return Err(raw.invalid(
                 "type",
                 raw.kind.name(),
                 "a surface (internal: modifier passed to the surface reader)",
             ))
         }
+    })
+}
+
+/// `sphere` or `bubble`: centre and radius. A negative radius is refused rather than
+/// silently turned inside out, as RADIANCE does (sphere.c): the inward form is `bubble`.
+fn sphere(raw: &RawPrimitive<'_>) -> Result<Sphere, SceneError> {
+    raw.check_real_count()?;
+    positive_radius(
+        raw,
+        3,
+        "; an inward-facing sphere is written `bubble` with a positive radius",
+    )?;
+    let r = &raw.reals;
+    Ok(Sphere {
+        centre_m: DVec3::new(r[0], r[1], r[2]),
+        radius_m: r[3],
+    })
+}
+
+/// `cylinder` or `tube`: axis end points and radius.
+fn cylinder(raw: &RawPrimitive<'_>) -> Result<Cylinder, SceneError> {
+    raw.check_real_count()?;
+    positive_radius(
+        raw,
+        6,
+        "; an inward-facing cylinder is written `tube` with a positive radius",
+    )?;
+    let r = &raw.reals;
+    let (start_m, end_m) = (DVec3::new(r[0], r[1], r[2]), DVec3::new(r[3], r[4], r[5]));
+    axis_length(raw, start_m, end_m)?;
+    Ok(Cylinder {
+        start_m,
+        end_m,
+        radius_m: r[6],
+    })
+}
+
+/// `cone` or `cup`: axis end points and the two radii, one of which may be zero.
+fn cone(raw: &RawPrimitive<'_>) -> Result<Cone, SceneError> {
+    raw.check_real_count()?;
+    let r = &raw.reals;
+    for i in [6, 7] {
+        if r[i] < 0.0 {
+            return Err(raw.invalid_real(
+                i,
+                "a radius >= 0; an inward-facing cone is written `cup` with positive radii",
+            ));
+        }
+    }
+    if r[6] < MIN_LENGTH_M && r[7] < MIN_LENGTH_M {
+        return Err(raw.invalid(
+            "radii r0 r1",
+            format!("{} {}", r[6], r[7]),
+            format!("at least one radius >= {MIN_LENGTH_M} m"),
+        ));
+    }
+    let (start_m, end_m) = (DVec3::new(r[0], r[1], r[2]), DVec3::new(r[3], r[4], r[5]));
+    axis_length(raw, start_m, end_m)?;
+    Ok(Cone {
+        start_m,
+        end_m,
+        start_radius_m: r[6],
+        end_radius_m: r[7],
     })
 }
 

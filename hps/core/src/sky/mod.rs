@@ -5,7 +5,6 @@ pub mod cie;
 mod lookup;
 mod patches;
 pub mod perez;
-pub mod plausibility;
 
 pub use cie::{
     hemisphere_integral, CieDistribution, CieError, CieParameters, CieSky, HemisphereGrid,

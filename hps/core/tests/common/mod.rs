@@ -1,3 +1,4 @@
 pub mod compare;
 pub mod primitives;
 pub mod radiance;
+pub mod small_scenes;

@@ -14,25 +14,31 @@
 //! it with the normal turned towards the ray (`flipsurface`).
 
 pub mod bsdf;
+pub mod dielectric;
 pub mod emitter;
 pub mod glass;
+pub mod illum;
 pub mod mirror;
 pub mod normal;
 pub mod scattering;
+pub mod spotlight;
 
 /// Where `validation::glazing` finds it; its home is [`crate::engine::sampling`].
 pub use bsdf::{BsdfMaterial, BsdfShading};
+pub use dielectric::DielectricMaterial;
 pub use emitter::Emitter;
 pub use glass::GlassMaterial;
+pub use illum::IllumMaterial;
 pub use mirror::MirrorMaterial;
 pub use normal::{NormalKind, NormalMaterial, NormalShading};
 pub use scattering::{bright, DiffuseLobe, Scatter};
+pub use spotlight::SpotlightMaterial;
 
 use super::error::EngineError;
 use super::rng::Rng;
 use super::sky::SkyFunction;
 use crate::bsdf::Bsdf;
-use crate::scene::{BsdfModifier, BsdfType, Modifier, ModifierKind, Surface};
+use crate::scene::{BsdfModifier, BsdfType, Modifier, ModifierKind, ModifierRef, Scene, Surface};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -44,6 +50,9 @@ pub enum Material {
     Mirror(MirrorMaterial),
     Emitter(Emitter),
     Bsdf(BsdfMaterial),
+    Dielectric(DielectricMaterial),
+    Spotlight(SpotlightMaterial),
+    Illum(IllumMaterial),
     /// Modifier chain ends at `void` without a material: rays pass through.
     Invisible,
 }
@@ -80,6 +89,7 @@ impl SpecularStep<'_> {
         match self.material {
             Material::Glass(g) => g.sample(self.direction, self.normal, rng),
             Material::Mirror(m) => m.sample(self.direction, self.normal),
+            Material::Dielectric(m) => m.sample(self.direction, self.normal, rng),
             _ => Scatter::Absorbed,
         }
     }
@@ -146,6 +156,15 @@ pub enum ShadowCrossing {
     Opaque,
 }
 
+/// What a shadow ray towards a light source does at a surface ([`Material::source_crossing`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SourceCrossing {
+    /// As any shadow ray does.
+    Straight(ShadowCrossing),
+    /// Turned into unit `direction`, keeping `factor` per RGB channel (a `dielectric`).
+    Refracts { direction: DVec3, factor: DVec3 },
+}
+
 impl Material {
     /// What a ray in unit direction `d` does on meeting this material on a surface of front
     /// normal `normal` (`flat` for polygons and rings). `primary`: the ray descends from no
@@ -157,12 +176,22 @@ impl Material {
                 Some(l) => Interaction::Emits(l),
                 None => Interaction::Absorbed,
             },
+            Material::Spotlight(s) => match s.seen(d, normal, primary) {
+                Some(l) => Interaction::Emits(l),
+                None => Interaction::Absorbed,
+            },
+            Material::Illum(i) if IllumMaterial::is_front(d, normal) && !primary => {
+                Interaction::Emits(i.emitter.radiance(d))
+            }
+            Material::Illum(i) => i.alternate.interact(d, normal, flat, primary),
             Material::Mirror(_) if MirrorMaterial::is_back(d, normal) => Interaction::Absorbed,
-            Material::Mirror(_) | Material::Glass(_) => Interaction::Specular(SpecularStep {
-                material: self,
-                direction: d,
-                normal,
-            }),
+            Material::Mirror(_) | Material::Glass(_) | Material::Dielectric(_) => {
+                Interaction::Specular(SpecularStep {
+                    material: self,
+                    direction: d,
+                    normal,
+                })
+            }
             Material::Normal(m) => Interaction::Shaded(Shading::Normal(m.shade(d, normal, flat))),
             Material::Bsdf(m) if m.passes(d, normal, primary) => Interaction::PassThrough,
             Material::Bsdf(m) => match m.shade(d, normal) {
@@ -181,13 +210,20 @@ impl Material {
             Material::Bsdf(m) if !m.passes(rdir, normal, false) => {
                 m.shade(rdir, normal).map(Shading::Bsdf)
             }
+            Material::Illum(i) if !IllumMaterial::is_front(rdir, normal) => {
+                i.alternate.shading(rdir, normal, flat)
+            }
             _ => None,
         }
     }
 
-    /// Whether [`Material::shading`] gives a shading.
+    /// Whether [`Material::shading`] gives a shading (for an `illum`, from its back).
     pub fn is_shaded(&self) -> bool {
-        matches!(self, Material::Normal(_) | Material::Bsdf(_))
+        match self {
+            Material::Normal(_) | Material::Bsdf(_) => true,
+            Material::Illum(i) => i.alternate.is_shaded(),
+            _ => false,
+        }
     }
 
     /// What a shadow ray along unit `dir` does at a surface of front normal `normal`:
@@ -200,9 +236,48 @@ impl Material {
                 ShadowCrossing::Transmits(m.shade(dir, normal, flat).shadow_transmission())
             }
             Material::Bsdf(m) if m.shadow_passes() => ShadowCrossing::PassThrough,
-            Material::Mirror(_) | Material::Emitter(_) | Material::Bsdf(_) => {
-                ShadowCrossing::Opaque
-            }
+            Material::Bsdf(_) => ShadowCrossing::Opaque,
+            // Light reaching a point through an illum's front or a dielectric is what the
+            // path's own continuation finds (an emitter hit, a refracted path), so no other
+            // estimate may count it.
+            Material::Illum(_) if IllumMaterial::is_front(dir, normal) => ShadowCrossing::Opaque,
+            Material::Illum(i) => i.alternate.shadow_crossing(dir, normal, flat),
+            Material::Mirror(_)
+            | Material::Emitter(_)
+            | Material::Spotlight(_)
+            | Material::Dielectric(_) => ShadowCrossing::Opaque,
+        }
+    }
+
+    /// What a shadow ray towards a light source (the sun) does at a surface: an `illum` is
+    /// its alternate material to it (source.c `passillum`), and a `dielectric` refracts it
+    /// (dielectric.c traces shadow rays through).
+    pub fn source_crossing(&self, dir: DVec3, normal: DVec3, flat: bool) -> SourceCrossing {
+        match self {
+            Material::Illum(i) => i.alternate.source_crossing(dir, normal, flat),
+            Material::Dielectric(m) => match m.shadow_refraction(dir, normal) {
+                Some((direction, factor)) => SourceCrossing::Refracts { direction, factor },
+                None => SourceCrossing::Straight(ShadowCrossing::Opaque),
+            },
+            _ => SourceCrossing::Straight(self.shadow_crossing(dir, normal, flat)),
+        }
+    }
+
+    /// Whether shadow rays towards light sources need [`Material::source_crossing`] rather
+    /// than [`Material::shadow_crossing`].
+    pub fn has_source_crossing(&self) -> bool {
+        matches!(self, Material::Illum(_) | Material::Dielectric(_))
+    }
+
+    /// The factor on the light a ray brings back from this surface after `distance_m` from
+    /// its origin: absorption in the medium a `dielectric` is met from, and a `spotlight`'s
+    /// fall-off from its focus for rays that are not `primary` (they stand for RADIANCE's
+    /// direct samples); 1 elsewhere.
+    pub fn arrival_factor(&self, d: DVec3, normal: DVec3, distance_m: f64, primary: bool) -> DVec3 {
+        match self {
+            Material::Dielectric(m) => m.arrival_attenuation(d, normal, distance_m),
+            Material::Spotlight(s) if !primary => DVec3::splat(s.focus_factor(distance_m)),
+            _ => DVec3::ONE,
         }
     }
 
@@ -227,6 +302,36 @@ impl Material {
         }
     }
 
+    /// [`Material::from_modifier`], with an `illum`'s alternate material looked up in `scene`.
+    pub fn from_scene(
+        scene: &Scene,
+        surface: &Surface,
+        modifier: Option<&Modifier>,
+        patterns: Vec<SkyFunction>,
+    ) -> Result<Material, EngineError> {
+        let mut material = Self::from_modifier(surface, modifier, patterns)?;
+        if let Some(ModifierKind::Antimatter(a)) = modifier.map(|m| &m.kind) {
+            let first = a.subtracted.first().copied().unwrap_or(ModifierRef::Void);
+            return Self::from_scene(scene, surface, scene.material(first), Vec::new());
+        }
+        if let (Material::Illum(i), Some(m)) = (&mut material, modifier) {
+            if let ModifierKind::Illum(illum) = &m.kind {
+                let alternate = match illum.alternate_material {
+                    Some(ModifierRef::Defined(id)) => scene.material(ModifierRef::Defined(id)),
+                    _ => None,
+                };
+                if alternate.is_some_and(|a| matches!(a.kind, ModifierKind::Illum(_))) {
+                    return Err(EngineError::Unsupported {
+                        at: m.origin.clone(),
+                        what: format!("illum `{}` has another illum as its material", m.name),
+                    });
+                }
+                *i.alternate = Self::from_scene(scene, surface, alternate, Vec::new())?;
+            }
+        }
+        Ok(material)
+    }
+
     /// The material of `surface` from the first material `modifier` on its chain (None:
     /// `void`, invisible) and the `brightfunc` `patterns` found on the chain.
     pub fn from_modifier(
@@ -237,7 +342,13 @@ impl Material {
         let Some(m) = modifier else {
             return Ok(Material::Invisible);
         };
-        let emitter = matches!(m.kind, ModifierKind::Light(_) | ModifierKind::Glow(_));
+        let emitter = matches!(
+            m.kind,
+            ModifierKind::Light(_)
+                | ModifierKind::Glow(_)
+                | ModifierKind::Spotlight(_)
+                | ModifierKind::Illum(_)
+        );
         if !patterns.is_empty() && !emitter {
             return Err(EngineError::Unsupported {
                 at: surface.origin.clone(),
@@ -279,6 +390,27 @@ impl Material {
                 illuminates: Emitter::glow_illuminates(g.max_radius_m),
             }),
             ModifierKind::Bsdf(b) => Material::Bsdf(bsdf_material(m, b)?),
+            ModifierKind::Dielectric(d) => Material::Dielectric(DielectricMaterial::from(d)),
+            ModifierKind::Spotlight(s) => Material::Spotlight(SpotlightMaterial {
+                emitter: Emitter {
+                    radiance_w_sr_m2: s.radiance_w_sr_m2,
+                    patterns,
+                    illuminates: true,
+                },
+                direction: s.direction,
+                cos_half_angle: (0.5 * s.cone_angle_deg.to_radians()).cos(),
+                focal_length_m: s.focal_length_m,
+            }),
+            ModifierKind::Illum(i) => Material::Illum(IllumMaterial {
+                emitter: Emitter {
+                    radiance_w_sr_m2: i.radiance_w_sr_m2,
+                    patterns,
+                    illuminates: true,
+                },
+                alternate: Box::new(Material::Invisible),
+            }),
+            // Shaded as its first modifier's material, set by `from_scene`.
+            ModifierKind::Antimatter(_) => Material::Invisible,
             ModifierKind::Brightfunc(_) => unreachable!("patterns are not materials"),
         })
     }

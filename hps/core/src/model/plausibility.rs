@@ -18,7 +18,7 @@
 //! measured station records of `shared/data/irradiance` (it must never flag a real sky) and
 //! checks it is not vacuous (the clear noon of Alamosa reaches most of it).
 
-use super::perez::{eccentricity_factor, SOLAR_CONSTANT_LUX, SOLAR_CONSTANT_W_M2};
+use crate::sky::perez::{eccentricity_factor, SOLAR_CONSTANT_LUX, SOLAR_CONSTANT_W_M2};
 use crate::sun::Atmosphere;
 
 /// Linke turbidity of the cleanest atmospheres (Ineichen & Perez 2002 report TL near 2 for
