@@ -23,6 +23,7 @@ pub mod accel;
 pub mod bvh;
 pub mod daylight_coefficients;
 mod error;
+pub mod function;
 pub mod illuminance;
 pub mod integrator;
 pub mod material;

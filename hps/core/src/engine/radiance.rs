@@ -14,6 +14,7 @@
 //!
 //! A mirror seen from its back is black, as in RADIANCE (mirror.c `m_mirror`: `r->rod < 0`).
 
+use super::function::HitPoint;
 use super::integrator::{trace_radiance, Settings, MAX_CROSSINGS};
 use super::material::{Interaction, Scatter};
 use super::ray::Ray;
@@ -47,10 +48,10 @@ pub fn ray_radiance(world: &World, ray: Ray, settings: &Settings, rng: &mut Rng)
         let d = ray.direction;
         let p = ray.at(hit.t_m);
         let flat = world.is_flat(hit.primitive);
-        let next = match world
+        let (material, normal) = world
             .material(hit.primitive)
-            .interact(d, hit.normal, flat, true)
-        {
+            .at_hit(&HitPoint::of(&hit, p, d, flat), rng);
+        let next = match material.interact(d, normal, flat, true) {
             Interaction::PassThrough => {
                 crossings += 1;
                 if crossings > MAX_CROSSINGS {

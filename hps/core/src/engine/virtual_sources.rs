@@ -15,6 +15,7 @@
 //! from the sun via a mirror reaches diffuse surfaces through the virtual source only. One
 //! reflection is followed (RADIANCE's default `-dr 2` also follows mirror-to-mirror).
 
+use super::function::HitPoint;
 use super::material::scattering::reflect;
 use super::material::ShadowCrossing;
 use super::ray::Ray;
@@ -50,7 +51,7 @@ fn transmission_to(
         let flat = world.is_flat(hit.primitive);
         match world
             .material(hit.primitive)
-            .shadow_crossing(dir, hit.normal, flat)
+            .shadow_crossing_at(&HitPoint::of(&hit, p, dir, flat))
         {
             ShadowCrossing::PassThrough => {}
             ShadowCrossing::Transmits(factor) => t *= factor,

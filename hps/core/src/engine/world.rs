@@ -2,6 +2,7 @@
 
 use super::bvh::Bvh;
 use super::error::EngineError;
+use super::function::{self, FunctionLoader, HitPoint};
 use super::material::{Emitter, Material, ShadowCrossing};
 use super::portal::Portals;
 use super::ray::{Ray, FTINY};
@@ -86,9 +87,10 @@ impl World {
         let mut distant = Vec::new();
         let mut names = Vec::new();
         let mut polygon_vertices = Vec::new();
+        let mut functions = FunctionLoader::default();
         for surface in scene.surfaces() {
-            let (material, patterns) = resolve(scene, surface)?;
             if let Shape::Source(source) = &surface.shape {
+                let (material, patterns) = resolve(scene, surface.modifier)?;
                 distant.extend(distant_emitter(surface, source, material, patterns)?);
                 continue;
             }
@@ -96,7 +98,7 @@ impl World {
             let index = match material_index.get(&key) {
                 Some(&i) => i,
                 None => {
-                    let prepared = Material::from_modifier(surface, material, patterns)?;
+                    let prepared = function::material_of(scene, key, surface, &mut functions)?;
                     materials.push(prepared);
                     let i = (materials.len() - 1) as u32;
                     material_index.insert(key, i);
@@ -398,10 +400,13 @@ impl World {
             else {
                 return true;
             };
-            let factor = match self
-                .material(p)
-                .shadow_crossing(dir, hit.normal, self.is_flat(p))
-            {
+            let at = Hit {
+                t_m: hit.t_m,
+                normal: hit.normal,
+                primitive: p,
+            };
+            let point = HitPoint::of(&at, ray.at(hit.t_m), dir, self.is_flat(p));
+            let factor = match self.material(p).shadow_crossing_at(&point) {
                 ShadowCrossing::PassThrough => return true,
                 ShadowCrossing::Transmits(factor) => factor,
                 ShadowCrossing::Opaque => DVec3::ZERO,
@@ -437,10 +442,8 @@ impl World {
                 return t;
             };
             let flat = self.is_flat(hit.primitive);
-            match self
-                .material(hit.primitive)
-                .shadow_crossing(dir, hit.normal, flat)
-            {
+            let point = HitPoint::of(&hit, ray.at(hit.t_m), dir, flat);
+            match self.material(hit.primitive).shadow_crossing_at(&point) {
                 ShadowCrossing::PassThrough => {}
                 ShadowCrossing::Transmits(factor) => t *= factor,
                 ShadowCrossing::Opaque => return DVec3::ZERO,
@@ -455,15 +458,16 @@ impl World {
     }
 }
 
-/// Walks a surface's modifier chain: its material (None for void) and every pattern on the
-/// chain, above and below the material (RADIANCE applies both: `rayshade` and `raytexture`).
-fn resolve<'a>(
-    scene: &'a Scene,
-    surface: &Surface,
-) -> Result<(Option<&'a Modifier>, Vec<SkyFunction>), EngineError> {
+/// Walks a surface's modifier chain from `start`: its material (None for void) and every
+/// sky pattern on the chain, above and below the material (RADIANCE applies both:
+/// `rayshade` and `raytexture`).
+pub(in crate::engine) fn resolve(
+    scene: &Scene,
+    start: ModifierRef,
+) -> Result<(Option<&Modifier>, Vec<SkyFunction>), EngineError> {
     let mut patterns = Vec::new();
     let mut material = None;
-    let mut next = surface.modifier;
+    let mut next = start;
     while let ModifierRef::Defined(id) = next {
         let Some(m) = scene.modifier(id) else { break };
         match &m.kind {

@@ -6,6 +6,7 @@
 //! arithmetic on them.
 
 use super::error::{ArgumentList, SceneError};
+use super::function::{BrtdFunc, FunctionArgs, Mixfunc};
 use super::parse::{PrimitiveType, RawPrimitive};
 use glam::DVec3;
 
@@ -47,6 +48,10 @@ pub enum ModifierKind {
     Light(Light),
     Glow(Glow),
     Brightfunc(Brightfunc),
+    Colorfunc(FunctionArgs),
+    Texfunc(FunctionArgs),
+    Mixfunc(Mixfunc),
+    BrtdFunc(BrtdFunc),
 }
 
 impl ModifierKind {
@@ -61,13 +66,20 @@ impl ModifierKind {
             ModifierKind::Light(_) => "light",
             ModifierKind::Glow(_) => "glow",
             ModifierKind::Brightfunc(_) => "brightfunc",
+            ModifierKind::Colorfunc(_) => "colorfunc",
+            ModifierKind::Texfunc(_) => "texfunc",
+            ModifierKind::Mixfunc(_) => "mixfunc",
+            ModifierKind::BrtdFunc(_) => "BRTDfunc",
         }
     }
 
-    /// Materials decide how a surface scatters or emits light; patterns (`brightfunc`) only
-    /// scale the material they modify.
+    /// Materials decide how a surface scatters or emits light; patterns (`brightfunc`,
+    /// `colorfunc`) scale and textures (`texfunc`) tilt the material they modify.
     pub fn is_material(&self) -> bool {
-        !matches!(self, ModifierKind::Brightfunc(_))
+        !matches!(
+            self,
+            ModifierKind::Brightfunc(_) | ModifierKind::Colorfunc(_) | ModifierKind::Texfunc(_)
+        )
     }
 }
 
@@ -159,6 +171,8 @@ pub struct Brightfunc {
     pub transform: Vec<String>,
     /// The real arguments `A1 .. An` made available to the function.
     pub real_args: Vec<f64>,
+    /// The same, as the engine compiles it on a surface that is not a sky.
+    pub function: FunctionArgs,
 }
 
 /// Interprets a modifier primitive. `resolve` looks up modifier names referenced in string
@@ -269,14 +283,19 @@ pub(crate) fn build(
                 raw.strings.len() >= 2,
                 "at least 2 (refname funcfile [transform])",
             )?;
-            raw.check_no_integers()?;
+            let function = super::function::function_args(raw, 1, "refname funcfile [transform]")?;
             ModifierKind::Brightfunc(Brightfunc {
+                function,
                 function_name: raw.strings[0].to_string(),
                 cal_file: raw.strings[1].to_string(),
                 transform: raw.strings[2..].iter().map(|s| s.to_string()).collect(),
                 real_args: r.clone(),
             })
         }
+        PrimitiveType::Colorfunc
+        | PrimitiveType::Texfunc
+        | PrimitiveType::Mixfunc
+        | PrimitiveType::BrtdFunc => super::function::build(raw, resolve)?,
         PrimitiveType::Polygon
         | PrimitiveType::Sphere
         | PrimitiveType::Cylinder

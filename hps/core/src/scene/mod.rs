@@ -21,6 +21,7 @@ mod command;
 mod error;
 mod expand;
 mod files;
+mod function;
 mod generators;
 mod lexer;
 mod material;
@@ -32,6 +33,7 @@ mod xform;
 
 pub use error::{ArgumentList, SceneError, SourceLocation, SUPPORTED_TYPES};
 pub use expand::{LoadOptions, MAX_INCLUDE_DEPTH, MAX_PRIMITIVES};
+pub use function::{BrtdFunc, FunctionArgs, FunctionTransform, Mixfunc};
 pub use material::{
     Brightfunc, Glass, Glow, Light, Metal, Mirror, ModifierId, ModifierKind, ModifierRef, Plastic,
     Trans, GLASS_DEFAULT_REFRACTIVE_INDEX,

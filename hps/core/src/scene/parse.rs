@@ -71,6 +71,10 @@ pub(crate) enum PrimitiveType {
     Light,
     Glow,
     Brightfunc,
+    Colorfunc,
+    Texfunc,
+    Mixfunc,
+    BrtdFunc,
     Polygon,
     Sphere,
     Cylinder,
@@ -90,6 +94,10 @@ impl PrimitiveType {
             "light" => Self::Light,
             "glow" => Self::Glow,
             "brightfunc" => Self::Brightfunc,
+            "colorfunc" => Self::Colorfunc,
+            "texfunc" => Self::Texfunc,
+            "mixfunc" => Self::Mixfunc,
+            "BRTDfunc" => Self::BrtdFunc,
             "polygon" => Self::Polygon,
             "sphere" => Self::Sphere,
             "cylinder" => Self::Cylinder,
@@ -110,6 +118,10 @@ impl PrimitiveType {
             Self::Light => "light",
             Self::Glow => "glow",
             Self::Brightfunc => "brightfunc",
+            Self::Colorfunc => "colorfunc",
+            Self::Texfunc => "texfunc",
+            Self::Mixfunc => "mixfunc",
+            Self::BrtdFunc => "BRTDfunc",
             Self::Polygon => "polygon",
             Self::Sphere => "sphere",
             Self::Cylinder => "cylinder",
@@ -143,7 +155,12 @@ impl PrimitiveType {
             Self::Ring => &[
                 "xcent", "ycent", "zcent", "xdir", "ydir", "zdir", "r0", "r1",
             ],
-            Self::Brightfunc | Self::Polygon => &[],
+            Self::Brightfunc
+            | Self::Colorfunc
+            | Self::Texfunc
+            | Self::Mixfunc
+            | Self::BrtdFunc
+            | Self::Polygon => &[],
         }
     }
 
@@ -156,7 +173,16 @@ impl PrimitiveType {
                 index / 3 + 1,
                 ["x", "y", "z"][index % 3]
             ),
-            Self::Brightfunc => format!("real argument {number} (A{number})"),
+            Self::Brightfunc | Self::Colorfunc | Self::Texfunc | Self::Mixfunc => {
+                format!("real argument {number} (A{number})")
+            }
+            Self::BrtdFunc => match index {
+                0..=8 => format!(
+                    "real argument {number} ({})",
+                    ["rdf", "gdf", "bdf", "rdb", "gdb", "bdb", "rdt", "gdt", "bdt"][index]
+                ),
+                _ => format!("real argument {number} (A{number})"),
+            },
             _ => match self.real_names().get(index) {
                 Some(name) => format!("real argument {number} ({name})"),
                 None => format!("real argument {number}"),

@@ -234,7 +234,11 @@ pub(crate) fn build(raw: &RawPrimitive<'_>) -> Result<Shape, SceneError> {
         | PrimitiveType::Mirror
         | PrimitiveType::Light
         | PrimitiveType::Glow
-        | PrimitiveType::Brightfunc => {
+        | PrimitiveType::Brightfunc
+        | PrimitiveType::Colorfunc
+        | PrimitiveType::Texfunc
+        | PrimitiveType::Mixfunc
+        | PrimitiveType::BrtdFunc => {
             return Err(raw.invalid(
                 "type",
                 raw.kind.name(),

@@ -13,6 +13,7 @@
 //! Surfaces are two-sided (RADIANCE's default `-bv+`): hitting the back of a surface shades
 //! it with the normal turned towards the ray (`flipsurface`).
 
+pub mod brtdfunc;
 pub mod emitter;
 pub mod glass;
 pub mod mirror;
@@ -20,6 +21,7 @@ pub mod normal;
 pub mod scattering;
 
 /// Where `validation::glazing` finds it; its home is [`crate::engine::sampling`].
+pub use brtdfunc::{BrtdMaterial, BrtdShading};
 pub use emitter::Emitter;
 pub use glass::GlassMaterial;
 pub use mirror::MirrorMaterial;
@@ -27,6 +29,7 @@ pub use normal::{NormalKind, NormalMaterial, NormalShading};
 pub use scattering::{bright, DiffuseLobe, Scatter};
 
 use super::error::EngineError;
+use super::function::VaryingMaterial;
 use super::rng::Rng;
 use super::sky::SkyFunction;
 use crate::scene::{Modifier, ModifierKind, Surface};
@@ -39,6 +42,11 @@ pub enum Material {
     Glass(GlassMaterial),
     Mirror(MirrorMaterial),
     Emitter(Emitter),
+    /// A material with function modifiers: resolved at each hit ([`Material::at_hit`])
+    /// into one of the others; asked directly, it behaves as an opaque black surface.
+    Varying(std::sync::Arc<VaryingMaterial>),
+    /// A `BRTDfunc` as evaluated at one hit (what [`Material::at_hit`] makes of it).
+    BrtdAtHit(Box<BrtdShading>),
     /// Modifier chain ends at `void` without a material: rays pass through.
     Invisible,
 }
@@ -85,6 +93,7 @@ impl SpecularStep<'_> {
 #[derive(Clone, Debug)]
 pub enum Shading {
     Normal(NormalShading),
+    Brtd(Box<BrtdShading>),
 }
 
 impl Shading {
@@ -93,6 +102,7 @@ impl Shading {
     pub fn source_coefficient(&self, ldir: DVec3, omega_sr: f64) -> DVec3 {
         match self {
             Shading::Normal(s) => s.source_coefficient(ldir, omega_sr),
+            Shading::Brtd(s) => s.source_coefficient(ldir, omega_sr),
         }
     }
 
@@ -101,6 +111,7 @@ impl Shading {
     pub fn diffuse_lobe(&self, allow_diffuse: bool) -> Option<DiffuseLobe> {
         match self {
             Shading::Normal(s) => s.diffuse_lobe(allow_diffuse),
+            Shading::Brtd(s) => s.diffuse_lobe(allow_diffuse),
         }
     }
 
@@ -109,6 +120,7 @@ impl Shading {
     pub fn sample(&self, allow_diffuse: bool, rng: &mut Rng) -> Scatter {
         match self {
             Shading::Normal(s) => s.sample(allow_diffuse, rng),
+            Shading::Brtd(s) => s.sample(allow_diffuse, rng),
         }
     }
 }
@@ -142,6 +154,8 @@ impl Material {
                 normal,
             }),
             Material::Normal(m) => Interaction::Shaded(Shading::Normal(m.shade(d, normal, flat))),
+            Material::BrtdAtHit(b) => Interaction::Shaded(Shading::Brtd(b.clone())),
+            Material::Varying(_) => Interaction::Absorbed,
         }
     }
 
@@ -151,13 +165,14 @@ impl Material {
     pub fn shading(&self, rdir: DVec3, normal: DVec3, flat: bool) -> Option<Shading> {
         match self {
             Material::Normal(m) => Some(Shading::Normal(m.shade(rdir, normal, flat))),
+            Material::BrtdAtHit(b) => Some(Shading::Brtd(b.clone())),
             _ => None,
         }
     }
 
     /// Whether [`Material::shading`] gives a shading.
     pub fn is_shaded(&self) -> bool {
-        matches!(self, Material::Normal(_))
+        matches!(self, Material::Normal(_) | Material::BrtdAtHit(_))
     }
 
     /// What a shadow ray along unit `dir` does at a surface of front normal `normal`:
@@ -169,7 +184,10 @@ impl Material {
             Material::Normal(m) => {
                 ShadowCrossing::Transmits(m.shade(dir, normal, flat).shadow_transmission())
             }
-            Material::Mirror(_) | Material::Emitter(_) => ShadowCrossing::Opaque,
+            Material::BrtdAtHit(b) => ShadowCrossing::Transmits(b.shadow_transmission()),
+            Material::Mirror(_) | Material::Emitter(_) | Material::Varying(_) => {
+                ShadowCrossing::Opaque
+            }
         }
     }
 
@@ -245,7 +263,20 @@ impl Material {
                 patterns,
                 illuminates: Emitter::glow_illuminates(g.max_radius_m),
             }),
-            ModifierKind::Brightfunc(_) => unreachable!("patterns are not materials"),
+            ModifierKind::Brightfunc(_)
+            | ModifierKind::Colorfunc(_)
+            | ModifierKind::Texfunc(_)
+            | ModifierKind::Mixfunc(_)
+            | ModifierKind::BrtdFunc(_) => {
+                return Err(EngineError::Unsupported {
+                    at: m.origin.clone(),
+                    what: format!(
+                        "internal: {} `{}` is built by engine::function",
+                        m.kind.type_name(),
+                        m.name
+                    ),
+                })
+            }
         })
     }
 }

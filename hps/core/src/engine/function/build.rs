@@ -1,0 +1,123 @@
+//! The material of a modifier chain that holds function modifiers: patterns and textures
+//! compiled as [`Modulation`]s over a plain material, a `BRTDfunc` or a `mixfunc`.
+
+use super::loader::FunctionLoader;
+use super::varying::{Modulation, VaryingBase, VaryingMaterial};
+use crate::engine::error::EngineError;
+use crate::engine::material::{BrtdMaterial, Material};
+use crate::engine::world::resolve;
+use crate::scene::{Modifier, ModifierKind, ModifierRef, Scene, Surface};
+use std::sync::Arc;
+
+/// BRTDfunc's expressions compiled as such (the specular colours); the next three name
+/// functions of the source direction (`m_brdf.c`: `getfunc(m, 9, 0x3f, 0)`).
+const BRTD_EXPRESSIONS: usize = 6;
+
+/// The material of the chain starting at `start` for `surface`.
+pub fn material_of(
+    scene: &Scene,
+    start: ModifierRef,
+    surface: &Surface,
+    loader: &mut FunctionLoader,
+) -> Result<Material, EngineError> {
+    let chain = chain(scene, start);
+    let material = chain.iter().copied().find(|m| m.kind.is_material());
+    let emitter =
+        material.is_some_and(|m| matches!(m.kind, ModifierKind::Light(_) | ModifierKind::Glow(_)));
+    let functions = chain.iter().any(|m| is_function(&m.kind, emitter));
+    if !functions {
+        let (material, patterns) = resolve(scene, start)?;
+        return Material::from_modifier(surface, material, patterns);
+    }
+    let Some(material) = material else {
+        return Ok(Material::Invisible); // void: patterns on nothing
+    };
+    let mut modulations = Vec::new();
+    for m in chain.iter().filter(|m| !m.kind.is_material()) {
+        modulations.push(modulation(m, loader)?);
+    }
+    let base = base(scene, material, surface, loader)?;
+    let refuse = |why: &str| {
+        Err(EngineError::Unsupported {
+            at: material.origin.clone(),
+            what: format!(
+                "{} `{}` under a pattern or texture: {why}",
+                material.kind.type_name(),
+                material.name
+            ),
+        })
+    };
+    match &base {
+        VaryingBase::Plain(Material::Normal(_)) | VaryingBase::Brtd(_) => {}
+        _ if modulations.is_empty() => {}
+        VaryingBase::Mix { .. } => return refuse("patterns above a mixfunc are not traced yet"),
+        VaryingBase::Plain(_) => {
+            return refuse("patterns are traced on plastic, metal, trans and BRTDfunc only")
+        }
+    }
+    Ok(Material::Varying(Arc::new(VaryingMaterial {
+        modulations,
+        base,
+    })))
+}
+
+/// The modifiers from `start` down to `void`.
+fn chain(scene: &Scene, start: ModifierRef) -> Vec<&Modifier> {
+    let mut out = Vec::new();
+    let mut next = start;
+    while let ModifierRef::Defined(id) = next {
+        let Some(m) = scene.modifier(id) else { break };
+        out.push(m);
+        next = m.modifier;
+    }
+    out
+}
+
+/// Whether `kind` makes the chain vary from hit to hit (a `brightfunc` on a `light` or
+/// `glow` is a sky function, traced by `engine::sky`).
+fn is_function(kind: &ModifierKind, emitter: bool) -> bool {
+    match kind {
+        ModifierKind::Brightfunc(_) => !emitter,
+        ModifierKind::Colorfunc(_)
+        | ModifierKind::Texfunc(_)
+        | ModifierKind::Mixfunc(_)
+        | ModifierKind::BrtdFunc(_) => true,
+        _ => false,
+    }
+}
+
+fn modulation(m: &Modifier, loader: &mut FunctionLoader) -> Result<Modulation, EngineError> {
+    Ok(match &m.kind {
+        ModifierKind::Brightfunc(b) => Modulation::Pattern(loader.compile(m, &b.function, 1)?),
+        ModifierKind::Colorfunc(f) => Modulation::Pattern(loader.compile(m, f, 3)?),
+        ModifierKind::Texfunc(f) => Modulation::Texture(loader.compile(m, f, 3)?),
+        other => {
+            return Err(EngineError::Unsupported {
+                at: m.origin.clone(),
+                what: format!("{} `{}` is not a pattern", other.type_name(), m.name),
+            })
+        }
+    })
+}
+
+/// The material under the modulations.
+fn base(
+    scene: &Scene,
+    m: &Modifier,
+    surface: &Surface,
+    loader: &mut FunctionLoader,
+) -> Result<VaryingBase, EngineError> {
+    Ok(match &m.kind {
+        ModifierKind::BrtdFunc(b) => VaryingBase::Brtd(Box::new(BrtdMaterial {
+            arguments: b.clone(),
+            function: loader.compile(m, &b.function, BRTD_EXPRESSIONS)?,
+        })),
+        ModifierKind::Mixfunc(mix) => VaryingBase::Mix {
+            coefficient: loader.compile(m, &mix.function, 1)?,
+            foreground: Box::new(material_of(scene, mix.foreground, surface, loader)?),
+            background: Box::new(material_of(scene, mix.background, surface, loader)?),
+        },
+        // Its patterns are the chain's modulations.
+        _ => VaryingBase::Plain(Material::from_modifier(surface, Some(m), Vec::new())?),
+    })
+}

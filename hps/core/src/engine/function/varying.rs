@@ -1,0 +1,261 @@
+//! Materials that change from hit to hit: a material under `brightfunc`/`colorfunc`
+//! patterns and `texfunc` textures, a `BRTDfunc`, a `mixfunc` of two modifiers. Each is
+//! resolved at a hit into a plain [`Material`] and a shading normal, which the integrator
+//! then uses as it uses any other; it never learns which kind it was.
+
+use super::loader::CompiledFunction;
+use super::ray::FunctionRay;
+use crate::engine::material::{BrtdMaterial, Material, ShadowCrossing};
+use crate::engine::rng::Rng;
+use crate::engine::world::Hit;
+use glam::DVec3;
+use std::borrow::Cow;
+use std::sync::Arc;
+
+/// Where a ray meets a surface.
+#[derive(Clone, Copy, Debug)]
+pub struct HitPoint {
+    pub point_m: DVec3,
+    /// Unit ray direction.
+    pub direction: DVec3,
+    /// The surface's own normal.
+    pub normal: DVec3,
+    pub distance_m: f64,
+    pub flat: bool,
+}
+
+impl HitPoint {
+    /// The hit `hit` of a ray along unit `direction`, at `point_m`.
+    pub fn of(hit: &Hit, point_m: DVec3, direction: DVec3, flat: bool) -> Self {
+        HitPoint {
+            point_m,
+            direction,
+            normal: hit.normal,
+            distance_m: hit.t_m,
+            flat,
+        }
+    }
+}
+
+/// A function modifier on a material's chain.
+#[derive(Clone, Debug)]
+pub enum Modulation {
+    /// `brightfunc` (one expression) or `colorfunc` (three): multiplies the colour.
+    Pattern(Arc<CompiledFunction>),
+    /// `texfunc`: adds a perturbation to the normal.
+    Texture(Arc<CompiledFunction>),
+}
+
+/// The material below the modulations.
+#[derive(Clone, Debug)]
+pub enum VaryingBase {
+    /// A plain material (`plastic`, `metal`, `trans`) whose colour patterns scale.
+    Plain(Material),
+    Brtd(Box<BrtdMaterial>),
+    /// `mixfunc`: the foreground where the coefficient is 1, the background where 0.
+    Mix {
+        coefficient: Arc<CompiledFunction>,
+        foreground: Box<Material>,
+        background: Box<Material>,
+    },
+}
+
+/// A material whose optics are functions of the hit.
+#[derive(Clone, Debug)]
+pub struct VaryingMaterial {
+    pub modulations: Vec<Modulation>,
+    pub base: VaryingBase,
+}
+
+/// Pattern colour and texture perturbation at a hit (`raytexture`'s `pcol` and `pert`).
+struct Modulated {
+    color_rgb: DVec3,
+    perturbation: DVec3,
+}
+
+impl VaryingMaterial {
+    /// The plain material and the shading normal at `hit`; `rng` picks one side of a
+    /// `mixfunc` with the probability of its coefficient (RADIANCE traces both and weights
+    /// them: the same mean).
+    pub fn resolve(&self, hit: &HitPoint, rng: &mut Rng) -> (Material, DVec3) {
+        let m = self.modulate(hit);
+        let normal = shading_normal(hit, m.perturbation);
+        let material = match &self.base {
+            VaryingBase::Plain(material) => coloured(material, m.color_rgb),
+            VaryingBase::Brtd(b) => Material::BrtdAtHit(Box::new(b.shade(
+                hit.direction,
+                hit.normal,
+                normal,
+                hit.point_m,
+                hit.distance_m,
+                m.color_rgb,
+            ))),
+            VaryingBase::Mix {
+                coefficient,
+                foreground,
+                background,
+            } => {
+                let c = coefficient.value(0, &function_ray(coefficient, hit));
+                let chosen = if rng.uniform() < c {
+                    foreground
+                } else {
+                    background
+                };
+                let (inner, inner_normal) = chosen.at_hit(hit, rng);
+                return (coloured(&inner, m.color_rgb), inner_normal);
+            }
+        };
+        (material, normal)
+    }
+
+    /// What a shadow ray does here: for a `mixfunc`, the coefficient's blend of what each
+    /// side transmits (a shadow ray has no random choice).
+    pub fn shadow_crossing(&self, hit: &HitPoint) -> ShadowCrossing {
+        let m = self.modulate(hit);
+        let normal = shading_normal(hit, m.perturbation);
+        match &self.base {
+            VaryingBase::Plain(material) => {
+                coloured(material, m.color_rgb).shadow_crossing(hit.direction, normal, hit.flat)
+            }
+            VaryingBase::Brtd(b) => ShadowCrossing::Transmits(
+                b.shade(
+                    hit.direction,
+                    hit.normal,
+                    normal,
+                    hit.point_m,
+                    hit.distance_m,
+                    m.color_rgb,
+                )
+                .shadow_transmission(),
+            ),
+            VaryingBase::Mix {
+                coefficient,
+                foreground,
+                background,
+            } => {
+                let c = coefficient
+                    .value(0, &function_ray(coefficient, hit))
+                    .clamp(0.0, 1.0);
+                let kept = |m: &Material| match m.shadow_crossing_at(hit) {
+                    ShadowCrossing::PassThrough => DVec3::ONE,
+                    ShadowCrossing::Transmits(t) => t,
+                    ShadowCrossing::Opaque => DVec3::ZERO,
+                };
+                ShadowCrossing::Transmits(
+                    (kept(foreground) * c + kept(background) * (1.0 - c)) * m.color_rgb,
+                )
+            }
+        }
+    }
+
+    /// The product of the patterns and the sum of the textures' perturbations (t_func.c:
+    /// each in the function's frame, taken back to the scene's by the forward transform and
+    /// divided by its scale).
+    fn modulate(&self, hit: &HitPoint) -> Modulated {
+        let mut m = Modulated {
+            color_rgb: DVec3::ONE,
+            perturbation: DVec3::ZERO,
+        };
+        for modulation in &self.modulations {
+            match modulation {
+                Modulation::Pattern(f) => {
+                    let ray = function_ray(f, hit);
+                    m.color_rgb *= if f.args.expressions.len() == 1 {
+                        DVec3::splat(f.value(0, &ray))
+                    } else {
+                        DVec3::from_array(f.values::<3>(0, &ray))
+                    };
+                }
+                Modulation::Texture(f) => {
+                    let local = DVec3::from_array(f.values::<3>(0, &function_ray(f, hit)));
+                    let t = &f.args.transform;
+                    let scene = DVec3::new(
+                        local.dot(DVec3::new(
+                            t.forward[0][0],
+                            t.forward[1][0],
+                            t.forward[2][0],
+                        )),
+                        local.dot(DVec3::new(
+                            t.forward[0][1],
+                            t.forward[1][1],
+                            t.forward[2][1],
+                        )),
+                        local.dot(DVec3::new(
+                            t.forward[0][2],
+                            t.forward[1][2],
+                            t.forward[2][2],
+                        )),
+                    );
+                    m.perturbation += scene / t.scale;
+                }
+            }
+        }
+        m
+    }
+}
+
+impl Material {
+    /// This material at `hit`, and the normal to shade it with (the surface's own, unless a
+    /// texture tilts it): borrowed as it is unless it varies from hit to hit.
+    pub fn at_hit(&self, hit: &HitPoint, rng: &mut Rng) -> (Cow<'_, Material>, DVec3) {
+        match self {
+            Material::Varying(v) => {
+                let (m, n) = v.resolve(hit, rng);
+                (Cow::Owned(m), n)
+            }
+            _ => (Cow::Borrowed(self), hit.normal),
+        }
+    }
+
+    /// Whether [`Material::at_hit`] may give a shaded material (see [`Material::is_shaded`]).
+    pub fn is_shaded_somewhere(&self) -> bool {
+        matches!(self, Material::Varying(_)) || self.is_shaded()
+    }
+
+    /// What a shadow ray does at `hit` ([`Material::shadow_crossing`] for any material).
+    pub fn shadow_crossing_at(&self, hit: &HitPoint) -> ShadowCrossing {
+        match self {
+            Material::Varying(v) => v.shadow_crossing(hit),
+            _ => self.shadow_crossing(hit.direction, hit.normal, hit.flat),
+        }
+    }
+}
+
+fn function_ray<'a>(f: &'a CompiledFunction, hit: &HitPoint) -> FunctionRay<'a> {
+    FunctionRay {
+        direction: hit.direction,
+        normal: hit.normal,
+        point_m: hit.point_m,
+        distance_m: hit.distance_m,
+        perturbed: None,
+        transform: &f.args.transform,
+        real_args: &f.args.real_args,
+    }
+}
+
+/// A plain material with its colour scaled by a pattern.
+fn coloured(material: &Material, color_rgb: DVec3) -> Material {
+    let mut m = material.clone();
+    if color_rgb != DVec3::ONE {
+        if let Material::Normal(n) = &mut m {
+            n.color_rgb *= color_rgb;
+        }
+    }
+    m
+}
+
+/// RADIANCE's `raynormal`: the normal plus the perturbation, normalised, and mirrored
+/// about the plane across the ray if that put it on the other side of the ray than the
+/// surface's own normal.
+fn shading_normal(hit: &HitPoint, perturbation: DVec3) -> DVec3 {
+    if perturbation == DVec3::ZERO {
+        return hit.normal;
+    }
+    let mut n = (hit.normal + perturbation).normalize_or(hit.normal);
+    let own = -hit.direction.dot(hit.normal);
+    let new = -hit.direction.dot(n);
+    if (new > 0.0) != (own > 0.0) {
+        n += 2.0 * new * hit.direction;
+    }
+    n
+}
