@@ -33,7 +33,6 @@
 //! measure ([`Settings::sun_portal_sampling`]).
 
 use super::error::EngineError;
-use super::function::HitPoint;
 use super::material::{DiffuseLobe, Interaction, Scatter, Shading};
 use super::portal::Portals;
 use super::ray::Ray;
@@ -365,7 +364,7 @@ impl<'a> SkyNee<'a> {
                 continue;
             }
             let flat_y = world.is_flat(prim_y);
-            let hit_y = HitPoint {
+            let hit_y = super::material::HitPoint {
                 point_m: y,
                 direction: w,
                 normal: n_y,
@@ -641,7 +640,7 @@ fn trace(
         let flat = world.is_flat(hit.primitive);
         let (material, normal) = world
             .material(hit.primitive)
-            .at_hit(&HitPoint::of(&hit, p, d, flat), rng);
+            .at_hit(&hit.as_seen(p, d, flat), rng);
         let next = match material.interact(d, normal, flat, false) {
             Interaction::PassThrough => path.cross(d),
             Interaction::Emits(l) => {

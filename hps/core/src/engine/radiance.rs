@@ -14,7 +14,6 @@
 //!
 //! A mirror seen from its back is black, as in RADIANCE (mirror.c `m_mirror`: `r->rod < 0`).
 
-use super::function::HitPoint;
 use super::integrator::{trace_radiance, Settings, MAX_CROSSINGS};
 use super::material::{Interaction, Scatter};
 use super::ray::Ray;
@@ -50,7 +49,7 @@ pub fn ray_radiance(world: &World, ray: Ray, settings: &Settings, rng: &mut Rng)
         let flat = world.is_flat(hit.primitive);
         let (material, normal) = world
             .material(hit.primitive)
-            .at_hit(&HitPoint::of(&hit, p, d, flat), rng);
+            .at_hit(&hit.as_seen(p, d, flat), rng);
         let next = match material.interact(d, normal, flat, true) {
             Interaction::PassThrough => {
                 crossings += 1;

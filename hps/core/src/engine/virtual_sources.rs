@@ -15,7 +15,6 @@
 //! from the sun via a mirror reaches diffuse surfaces through the virtual source only. One
 //! reflection is followed (RADIANCE's default `-dr 2` also follows mirror-to-mirror).
 
-use super::function::HitPoint;
 use super::material::scattering::reflect;
 use super::material::ShadowCrossing;
 use super::ray::Ray;
@@ -51,7 +50,7 @@ fn transmission_to(
         let flat = world.is_flat(hit.primitive);
         match world
             .material(hit.primitive)
-            .shadow_crossing_at(&HitPoint::of(&hit, p, dir, flat))
+            .shadow_crossing_at(&hit.as_seen(p, dir, flat))
         {
             ShadowCrossing::PassThrough => {}
             ShadowCrossing::Transmits(factor) => t *= factor,

@@ -2,8 +2,9 @@
 
 use super::bvh::Bvh;
 use super::error::EngineError;
-use super::function::{self, FunctionLoader, HitPoint};
-use super::material::{Emitter, Material, ShadowCrossing};
+use super::function::build::{self, resolve};
+use super::function::loader::FunctionLoader;
+use super::material::{Emitter, HitPoint, Material, ShadowCrossing};
 use super::portal::Portals;
 use super::ray::{Ray, FTINY};
 use super::sampling::basis;
@@ -11,7 +12,7 @@ use super::shapes::{PreparedCone, PreparedPolygon, Primitive, ShapeHit};
 use super::sky::{source_seen, DistantEmitter, DistantKind, SkyFunction};
 use super::sky_sampling::SkyDistribution;
 use super::slab::{BoxTest, SlabTest};
-use crate::scene::{DistantSource, Modifier, ModifierKind, ModifierRef, Scene, Shape, Surface};
+use crate::scene::{DistantSource, Modifier, ModifierKind, Scene, Shape, Surface};
 use glam::DVec3;
 
 /// Distance under which a ray leaving a curved surface ignores it (RADIANCE's `FTINY`, in
@@ -28,6 +29,19 @@ pub struct Hit {
     pub normal: DVec3,
     /// Index of the primitive in the world.
     pub primitive: u32,
+}
+
+impl Hit {
+    /// This hit of a ray along unit `direction`, at `point_m`, as a material resolves it.
+    pub fn as_seen(&self, point_m: DVec3, direction: DVec3, flat: bool) -> HitPoint {
+        HitPoint {
+            point_m,
+            direction,
+            normal: self.normal,
+            distance_m: self.t_m,
+            flat,
+        }
+    }
 }
 
 /// The scene as the integrator sees it.
@@ -98,7 +112,7 @@ impl World {
             let index = match material_index.get(&key) {
                 Some(&i) => i,
                 None => {
-                    let prepared = function::material_of(scene, key, surface, &mut functions)?;
+                    let prepared = build::material_of(scene, key, surface, &mut functions)?;
                     materials.push(prepared);
                     let i = (materials.len() - 1) as u32;
                     material_index.insert(key, i);
@@ -400,12 +414,13 @@ impl World {
             else {
                 return true;
             };
-            let at = Hit {
-                t_m: hit.t_m,
+            let point = HitPoint {
+                point_m: ray.at(hit.t_m),
+                direction: dir,
                 normal: hit.normal,
-                primitive: p,
+                distance_m: hit.t_m,
+                flat: self.is_flat(p),
             };
-            let point = HitPoint::of(&at, ray.at(hit.t_m), dir, self.is_flat(p));
             let factor = match self.material(p).shadow_crossing_at(&point) {
                 ShadowCrossing::PassThrough => return true,
                 ShadowCrossing::Transmits(factor) => factor,
@@ -442,7 +457,7 @@ impl World {
                 return t;
             };
             let flat = self.is_flat(hit.primitive);
-            let point = HitPoint::of(&hit, ray.at(hit.t_m), dir, flat);
+            let point = hit.as_seen(ray.at(hit.t_m), dir, flat);
             match self.material(hit.primitive).shadow_crossing_at(&point) {
                 ShadowCrossing::PassThrough => {}
                 ShadowCrossing::Transmits(factor) => t *= factor,
@@ -456,30 +471,6 @@ impl World {
         }
         DVec3::ZERO
     }
-}
-
-/// Walks a surface's modifier chain from `start`: its material (None for void) and every
-/// sky pattern on the chain, above and below the material (RADIANCE applies both:
-/// `rayshade` and `raytexture`).
-pub(in crate::engine) fn resolve(
-    scene: &Scene,
-    start: ModifierRef,
-) -> Result<(Option<&Modifier>, Vec<SkyFunction>), EngineError> {
-    let mut patterns = Vec::new();
-    let mut material = None;
-    let mut next = start;
-    while let ModifierRef::Defined(id) = next {
-        let Some(m) = scene.modifier(id) else { break };
-        match &m.kind {
-            ModifierKind::Brightfunc(b) => {
-                patterns.push(SkyFunction::from_brightfunc(b, &m.origin)?)
-            }
-            _ if material.is_none() => material = Some(m),
-            _ => {}
-        }
-        next = m.modifier;
-    }
-    Ok((material, patterns))
 }
 
 /// The distant emitter of a `source` surface `s` with its material `material` and the

@@ -9,7 +9,6 @@
 //! engine (`engine::function`); here they are only split and checked for count.
 
 use super::error::{ArgumentList, SceneError};
-use super::material::{ModifierKind, ModifierRef};
 use super::parse::RawPrimitive;
 use super::xform::parse_transform;
 use std::path::PathBuf;
@@ -57,17 +56,6 @@ const IDENTITY: [[f64; 4]; 4] = [
     [0.0, 0.0, 1.0, 0.0],
     [0.0, 0.0, 0.0, 1.0],
 ];
-
-/// `mixfunc`: blends two modifiers by a coefficient (manual §2.1.6).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Mixfunc {
-    /// Used where the coefficient is 1 (`void`: nothing).
-    pub foreground: ModifierRef,
-    /// Used where the coefficient is 0.
-    pub background: ModifierRef,
-    /// One expression: the coefficient.
-    pub function: FunctionArgs,
-}
 
 /// `BRTDfunc`: a thin surface with specular reflection and transmission given by
 /// expressions, Lambertian parts given by reals, and a directional-diffuse part seen from
@@ -136,79 +124,27 @@ fn transform(raw: &RawPrimitive<'_>, words: &[String]) -> Result<FunctionTransfo
     })
 }
 
-/// `colorfunc`, `texfunc`, `mixfunc` or `BRTDfunc`, read from `raw`.
-pub(crate) fn build(
-    raw: &RawPrimitive<'_>,
-    resolve: &dyn Fn(&str) -> Option<ModifierRef>,
-) -> Result<ModifierKind, SceneError> {
-    use super::parse::PrimitiveType as T;
-    Ok(match raw.kind {
-        T::Colorfunc => ModifierKind::Colorfunc(function_args(
-            raw,
-            3,
-            "rvarname gvarname bvarname funcfile [transform]",
-        )?),
-        T::Texfunc => ModifierKind::Texfunc(function_args(
-            raw,
-            3,
-            "xpert ypert zpert funcfile [transform]",
-        )?),
-        T::Mixfunc => {
-            let function =
-                function_args(raw, 3, "foreground background vname funcfile [transform]")?;
-            let modifier = |i: usize, field: &'static str| {
-                let name = &function.expressions[i];
-                if name == "void" {
-                    return Ok(ModifierRef::Void);
-                }
-                resolve(name).ok_or_else(|| SceneError::UnknownModifier {
-                    at: raw.at.clone(),
-                    primitive: raw.describe(),
-                    field,
-                    modifier: name.clone(),
-                    hint: String::new(),
-                })
-            };
-            let foreground = modifier(0, "string argument 1 (foreground)")?;
-            let background = modifier(1, "string argument 2 (background)")?;
-            ModifierKind::Mixfunc(Mixfunc {
-                foreground,
-                background,
-                function: FunctionArgs {
-                    expressions: vec![function.expressions[2].clone()],
-                    ..function
-                },
-            })
-        }
-        T::BrtdFunc => {
-            let function = function_args(
-                raw,
-                9,
-                "rrefl grefl brefl rtrns gtrns btrns rbrtd gbrtd bbrtd funcfile [transform]",
-            )?;
-            raw.check_count(
-                ArgumentList::Real,
-                raw.reals.len() >= 9,
-                "at least 9 (rdf gdf bdf rdb gdb bdb rdt gdt bdt [A10 ..])",
-            )?;
-            let r = &raw.reals;
-            if let Some(i) = r[..9].iter().position(|&x| x < 0.0) {
-                return Err(raw.invalid_real(i, "a reflectance or transmittance >= 0"));
-            }
-            let rgb = |i: usize| glam::DVec3::new(r[i], r[i + 1], r[i + 2]);
-            ModifierKind::BrtdFunc(BrtdFunc {
-                front_diffuse_rgb: rgb(0),
-                back_diffuse_rgb: rgb(3),
-                diffuse_transmittance_rgb: rgb(6),
-                function,
-            })
-        }
-        _ => {
-            return Err(raw.invalid(
-                "type",
-                raw.kind.name(),
-                "a function modifier (internal: other type passed to the function reader)",
-            ))
-        }
+/// `BRTDfunc`'s arguments.
+pub(crate) fn brtd(raw: &RawPrimitive<'_>) -> Result<BrtdFunc, SceneError> {
+    let function = function_args(
+        raw,
+        9,
+        "rrefl grefl brefl rtrns gtrns btrns rbrtd gbrtd bbrtd funcfile [transform]",
+    )?;
+    raw.check_count(
+        ArgumentList::Real,
+        raw.reals.len() >= 9,
+        "at least 9 (rdf gdf bdf rdb gdb bdb rdt gdt bdt [A10 ..])",
+    )?;
+    let r = &raw.reals;
+    if let Some(i) = r[..9].iter().position(|&x| x < 0.0) {
+        return Err(raw.invalid_real(i, "a reflectance or transmittance >= 0"));
+    }
+    let rgb = |i: usize| glam::DVec3::new(r[i], r[i + 1], r[i + 2]);
+    Ok(BrtdFunc {
+        front_diffuse_rgb: rgb(0),
+        back_diffuse_rgb: rgb(3),
+        diffuse_transmittance_rgb: rgb(6),
+        function,
     })
 }

@@ -6,7 +6,7 @@
 //! arithmetic on them.
 
 use super::error::{ArgumentList, SceneError};
-use super::function::{BrtdFunc, FunctionArgs, Mixfunc};
+use super::function::{brtd, function_args, BrtdFunc, FunctionArgs};
 use super::parse::{PrimitiveType, RawPrimitive};
 use glam::DVec3;
 
@@ -175,6 +175,17 @@ pub struct Brightfunc {
     pub function: FunctionArgs,
 }
 
+/// `mixfunc`: blends two modifiers by a coefficient (manual §2.1.6).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mixfunc {
+    /// Used where the coefficient is 1 (`void`: nothing).
+    pub foreground: ModifierRef,
+    /// Used where the coefficient is 0.
+    pub background: ModifierRef,
+    /// One expression: the coefficient.
+    pub function: FunctionArgs,
+}
+
 /// Interprets a modifier primitive. `resolve` looks up modifier names referenced in string
 /// arguments (mirror's alternate material) as defined before this primitive.
 pub(crate) fn build(
@@ -295,7 +306,7 @@ pub(crate) fn build(
         PrimitiveType::Colorfunc
         | PrimitiveType::Texfunc
         | PrimitiveType::Mixfunc
-        | PrimitiveType::BrtdFunc => super::function::build(raw, resolve)?,
+        | PrimitiveType::BrtdFunc => function_modifier(raw, resolve)?,
         PrimitiveType::Polygon
         | PrimitiveType::Sphere
         | PrimitiveType::Cylinder
@@ -306,6 +317,61 @@ pub(crate) fn build(
                 "type",
                 raw.kind.name(),
                 "a material or pattern (internal: surface passed to the material reader)",
+            ))
+        }
+    })
+}
+
+/// `colorfunc`, `texfunc`, `mixfunc` or `BRTDfunc`, read from `raw`.
+fn function_modifier(
+    raw: &RawPrimitive<'_>,
+    resolve: &dyn Fn(&str) -> Option<ModifierRef>,
+) -> Result<ModifierKind, SceneError> {
+    use super::parse::PrimitiveType as T;
+    Ok(match raw.kind {
+        T::Colorfunc => ModifierKind::Colorfunc(function_args(
+            raw,
+            3,
+            "rvarname gvarname bvarname funcfile [transform]",
+        )?),
+        T::Texfunc => ModifierKind::Texfunc(function_args(
+            raw,
+            3,
+            "xpert ypert zpert funcfile [transform]",
+        )?),
+        T::Mixfunc => {
+            let function =
+                function_args(raw, 3, "foreground background vname funcfile [transform]")?;
+            let modifier = |i: usize, field: &'static str| {
+                let name = &function.expressions[i];
+                if name == "void" {
+                    return Ok(ModifierRef::Void);
+                }
+                resolve(name).ok_or_else(|| SceneError::UnknownModifier {
+                    at: raw.at.clone(),
+                    primitive: raw.describe(),
+                    field,
+                    modifier: name.clone(),
+                    hint: String::new(),
+                })
+            };
+            let foreground = modifier(0, "string argument 1 (foreground)")?;
+            let background = modifier(1, "string argument 2 (background)")?;
+            ModifierKind::Mixfunc(Mixfunc {
+                foreground,
+                background,
+                function: FunctionArgs {
+                    expressions: vec![function.expressions[2].clone()],
+                    ..function
+                },
+            })
+        }
+        T::BrtdFunc => ModifierKind::BrtdFunc(brtd(raw)?),
+        _ => {
+            return Err(raw.invalid(
+                "type",
+                raw.kind.name(),
+                "a function modifier (internal: other type passed to the function reader)",
             ))
         }
     })

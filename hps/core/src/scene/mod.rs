@@ -33,10 +33,10 @@ mod xform;
 
 pub use error::{ArgumentList, SceneError, SourceLocation, SUPPORTED_TYPES};
 pub use expand::{LoadOptions, MAX_INCLUDE_DEPTH, MAX_PRIMITIVES};
-pub use function::{BrtdFunc, FunctionArgs, FunctionTransform, Mixfunc};
+pub use function::{BrtdFunc, FunctionArgs, FunctionTransform};
 pub use material::{
-    Brightfunc, Glass, Glow, Light, Metal, Mirror, ModifierId, ModifierKind, ModifierRef, Plastic,
-    Trans, GLASS_DEFAULT_REFRACTIVE_INDEX,
+    Brightfunc, Glass, Glow, Light, Metal, Mirror, Mixfunc, ModifierId, ModifierKind, ModifierRef,
+    Plastic, Trans, GLASS_DEFAULT_REFRACTIVE_INDEX,
 };
 pub use primitive::Primitive;
 pub use sensors::{load_sensors, parse_sensors, Sensor, SensorsError};

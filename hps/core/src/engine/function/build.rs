@@ -5,7 +5,7 @@ use super::loader::FunctionLoader;
 use super::varying::{Modulation, VaryingBase, VaryingMaterial};
 use crate::engine::error::EngineError;
 use crate::engine::material::{BrtdMaterial, Material};
-use crate::engine::world::resolve;
+use crate::engine::sky::SkyFunction;
 use crate::scene::{Modifier, ModifierKind, ModifierRef, Scene, Surface};
 use std::sync::Arc;
 
@@ -120,4 +120,28 @@ fn base(
         // Its patterns are the chain's modulations.
         _ => VaryingBase::Plain(Material::from_modifier(surface, Some(m), Vec::new())?),
     })
+}
+
+/// Walks a surface's modifier chain from `start`: its material (None for void) and every
+/// sky pattern on the chain, above and below the material (RADIANCE applies both:
+/// `rayshade` and `raytexture`).
+pub fn resolve(
+    scene: &Scene,
+    start: ModifierRef,
+) -> Result<(Option<&Modifier>, Vec<SkyFunction>), EngineError> {
+    let mut patterns = Vec::new();
+    let mut material = None;
+    let mut next = start;
+    while let ModifierRef::Defined(id) = next {
+        let Some(m) = scene.modifier(id) else { break };
+        match &m.kind {
+            ModifierKind::Brightfunc(b) => {
+                patterns.push(SkyFunction::from_brightfunc(b, &m.origin)?)
+            }
+            _ if material.is_none() => material = Some(m),
+            _ => {}
+        }
+        next = m.modifier;
+    }
+    Ok((material, patterns))
 }

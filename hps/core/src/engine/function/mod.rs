@@ -16,4 +16,4 @@ pub mod varying;
 pub use build::material_of;
 pub use loader::{CompiledFunction, FunctionLoader};
 pub use ray::{FunctionRay, Perturbed};
-pub use varying::{HitPoint, VaryingMaterial};
+pub use varying::VaryingMaterial;

@@ -120,7 +120,7 @@ mod tests {
             .collect();
         let scene = crate::scene::parse(
             "t.rad",
-            format!("void colorfunc c 4 r g b . {}\n0\n0\n", words.join(" ")).as_bytes(),
+            format!("void colorfunc c 10 r g b . {}\n0\n0\n", words.join(" ")).as_bytes(),
         )
         .unwrap();
         let crate::scene::ModifierKind::Colorfunc(f) = &scene.modifiers()[0].kind else {

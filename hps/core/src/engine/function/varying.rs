@@ -5,37 +5,10 @@
 
 use super::loader::CompiledFunction;
 use super::ray::FunctionRay;
-use crate::engine::material::{BrtdMaterial, Material, ShadowCrossing};
+use crate::engine::material::{BrtdMaterial, HitDependent, HitPoint, Material, ShadowCrossing};
 use crate::engine::rng::Rng;
-use crate::engine::world::Hit;
 use glam::DVec3;
-use std::borrow::Cow;
 use std::sync::Arc;
-
-/// Where a ray meets a surface.
-#[derive(Clone, Copy, Debug)]
-pub struct HitPoint {
-    pub point_m: DVec3,
-    /// Unit ray direction.
-    pub direction: DVec3,
-    /// The surface's own normal.
-    pub normal: DVec3,
-    pub distance_m: f64,
-    pub flat: bool,
-}
-
-impl HitPoint {
-    /// The hit `hit` of a ray along unit `direction`, at `point_m`.
-    pub fn of(hit: &Hit, point_m: DVec3, direction: DVec3, flat: bool) -> Self {
-        HitPoint {
-            point_m,
-            direction,
-            normal: hit.normal,
-            distance_m: hit.t_m,
-            flat,
-        }
-    }
-}
 
 /// A function modifier on a material's chain.
 #[derive(Clone, Debug)]
@@ -73,11 +46,11 @@ struct Modulated {
     perturbation: DVec3,
 }
 
-impl VaryingMaterial {
+impl HitDependent for VaryingMaterial {
     /// The plain material and the shading normal at `hit`; `rng` picks one side of a
     /// `mixfunc` with the probability of its coefficient (RADIANCE traces both and weights
     /// them: the same mean).
-    pub fn resolve(&self, hit: &HitPoint, rng: &mut Rng) -> (Material, DVec3) {
+    fn resolve(&self, hit: &HitPoint, rng: &mut Rng) -> (Material, DVec3) {
         let m = self.modulate(hit);
         let normal = shading_normal(hit, m.perturbation);
         let material = match &self.base {
@@ -110,7 +83,7 @@ impl VaryingMaterial {
 
     /// What a shadow ray does here: for a `mixfunc`, the coefficient's blend of what each
     /// side transmits (a shadow ray has no random choice).
-    pub fn shadow_crossing(&self, hit: &HitPoint) -> ShadowCrossing {
+    fn shadow_crossing(&self, hit: &HitPoint) -> ShadowCrossing {
         let m = self.modulate(hit);
         let normal = shading_normal(hit, m.perturbation);
         match &self.base {
@@ -147,7 +120,9 @@ impl VaryingMaterial {
             }
         }
     }
+}
 
+impl VaryingMaterial {
     /// The product of the patterns and the sum of the textures' perturbations (t_func.c:
     /// each in the function's frame, taken back to the scene's by the forward transform and
     /// divided by its scale).
@@ -191,33 +166,6 @@ impl VaryingMaterial {
             }
         }
         m
-    }
-}
-
-impl Material {
-    /// This material at `hit`, and the normal to shade it with (the surface's own, unless a
-    /// texture tilts it): borrowed as it is unless it varies from hit to hit.
-    pub fn at_hit(&self, hit: &HitPoint, rng: &mut Rng) -> (Cow<'_, Material>, DVec3) {
-        match self {
-            Material::Varying(v) => {
-                let (m, n) = v.resolve(hit, rng);
-                (Cow::Owned(m), n)
-            }
-            _ => (Cow::Borrowed(self), hit.normal),
-        }
-    }
-
-    /// Whether [`Material::at_hit`] may give a shaded material (see [`Material::is_shaded`]).
-    pub fn is_shaded_somewhere(&self) -> bool {
-        matches!(self, Material::Varying(_)) || self.is_shaded()
-    }
-
-    /// What a shadow ray does at `hit` ([`Material::shadow_crossing`] for any material).
-    pub fn shadow_crossing_at(&self, hit: &HitPoint) -> ShadowCrossing {
-        match self {
-            Material::Varying(v) => v.shadow_crossing(hit),
-            _ => self.shadow_crossing(hit.direction, hit.normal, hit.flat),
-        }
     }
 }
 

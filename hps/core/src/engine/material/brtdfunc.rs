@@ -5,7 +5,8 @@
 //! only (RADIANCE samples no indirect light through it).
 
 use super::scattering::{bright, choose_component, reflect, DiffuseLobe, Scatter};
-use crate::engine::function::{CompiledFunction, FunctionRay, Perturbed};
+use crate::engine::function::loader::CompiledFunction;
+use crate::engine::function::ray::{FunctionRay, Perturbed};
 use crate::engine::ray::FTINY;
 use crate::engine::rng::Rng;
 use crate::engine::sampling::cosine_direction;

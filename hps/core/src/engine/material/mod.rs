@@ -29,7 +29,6 @@ pub use normal::{NormalKind, NormalMaterial, NormalShading};
 pub use scattering::{bright, DiffuseLobe, Scatter};
 
 use super::error::EngineError;
-use super::function::VaryingMaterial;
 use super::rng::Rng;
 use super::sky::SkyFunction;
 use crate::scene::{Modifier, ModifierKind, Surface};
@@ -44,11 +43,33 @@ pub enum Material {
     Emitter(Emitter),
     /// A material with function modifiers: resolved at each hit ([`Material::at_hit`])
     /// into one of the others; asked directly, it behaves as an opaque black surface.
-    Varying(std::sync::Arc<VaryingMaterial>),
+    Varying(std::sync::Arc<dyn HitDependent>),
     /// A `BRTDfunc` as evaluated at one hit (what [`Material::at_hit`] makes of it).
     BrtdAtHit(Box<BrtdShading>),
     /// Modifier chain ends at `void` without a material: rays pass through.
     Invisible,
+}
+
+/// Where a ray meets a surface: what a material that varies from hit to hit is resolved
+/// with.
+#[derive(Clone, Copy, Debug)]
+pub struct HitPoint {
+    pub point_m: DVec3,
+    /// Unit ray direction.
+    pub direction: DVec3,
+    /// The surface's own normal.
+    pub normal: DVec3,
+    pub distance_m: f64,
+    pub flat: bool,
+}
+
+/// A material whose optics are functions of the hit (`engine::function`: patterns,
+/// textures, `BRTDfunc`, `mixfunc`).
+pub trait HitDependent: std::fmt::Debug + Send + Sync {
+    /// The plain material at `hit` and the normal to shade it with.
+    fn resolve(&self, hit: &HitPoint, rng: &mut Rng) -> (Material, DVec3);
+    /// What a shadow ray does at `hit`.
+    fn shadow_crossing(&self, hit: &HitPoint) -> ShadowCrossing;
 }
 
 /// What happens to a ray at a hit ([`Material::interact`]).
@@ -137,6 +158,31 @@ pub enum ShadowCrossing {
 }
 
 impl Material {
+    /// This material at `hit`, and the normal to shade it with (the surface's own unless a
+    /// texture tilts it): borrowed unless it varies from hit to hit.
+    pub fn at_hit(&self, hit: &HitPoint, rng: &mut Rng) -> (std::borrow::Cow<'_, Material>, DVec3) {
+        match self {
+            Material::Varying(v) => {
+                let (m, n) = v.resolve(hit, rng);
+                (std::borrow::Cow::Owned(m), n)
+            }
+            _ => (std::borrow::Cow::Borrowed(self), hit.normal),
+        }
+    }
+
+    /// What a shadow ray does at `hit` ([`Material::shadow_crossing`] for any material).
+    pub fn shadow_crossing_at(&self, hit: &HitPoint) -> ShadowCrossing {
+        match self {
+            Material::Varying(v) => v.shadow_crossing(hit),
+            _ => self.shadow_crossing(hit.direction, hit.normal, hit.flat),
+        }
+    }
+
+    /// Whether [`Material::at_hit`] may give a shaded material (see [`Material::is_shaded`]).
+    pub fn is_shaded_somewhere(&self) -> bool {
+        matches!(self, Material::Varying(_)) || self.is_shaded()
+    }
+
     /// What a ray in unit direction `d` does on meeting this material on a surface of front
     /// normal `normal` (`flat` for polygons and rings). `primary`: the ray descends from no
     /// ambient or specular ray (a camera ray), which sees a `glow` that does not illuminate.
