@@ -7,7 +7,7 @@ use std::sync::Arc;
 /// The primitive types Skylux reads, as listed in [`SceneError::UnsupportedType`] messages.
 pub const SUPPORTED_TYPES: &str =
     "plastic, metal, trans, glass, mirror, light, glow, BRTDfunc, mixfunc, brightfunc, \
-     colorfunc, texfunc (modifiers) and polygon, \
+     colorfunc, brightdata, colordata, texfunc (modifiers) and polygon, \
      sphere, cylinder, ring, cone, source (surfaces)";
 
 /// A file and a 1-based line in it: where a primitive starts, or where a bad token is.

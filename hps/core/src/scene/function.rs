@@ -148,3 +148,69 @@ pub(crate) fn brtd(raw: &RawPrimitive<'_>) -> Result<BrtdFunc, SceneError> {
         function,
     })
 }
+
+/// `brightdata` and `colordata`: patterns interpolated in data files (manual §2.1.4,
+/// `src/rt/p_data.c`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct DataPattern {
+    /// The functions applied to the interpolated values (1 for brightdata, r g b for
+    /// colordata).
+    pub functions: Vec<String>,
+    /// The data files (1 or 3), found through RAYPATH by the engine.
+    pub data_files: Vec<String>,
+    /// The coordinate expressions (one per dimension of the data), the function file and
+    /// the transform.
+    pub function: FunctionArgs,
+}
+
+/// Words that start a transform (`xf` options).
+const TRANSFORM_OPTIONS: [&str; 9] = ["-t", "-rx", "-ry", "-rz", "-s", "-mx", "-my", "-mz", "-i"];
+
+/// `func.. datafile.. funcfile x1 .. xn [transform]` with `channels` functions and files.
+pub(crate) fn data_pattern(
+    raw: &RawPrimitive<'_>,
+    channels: usize,
+) -> Result<DataPattern, SceneError> {
+    let names = 2 * channels;
+    let synopsis = if channels == 1 {
+        "func datafile funcfile x1 .. xn [transform]"
+    } else {
+        "rfunc gfunc bfunc rdatafile gdatafile bdatafile funcfile x1 .. xn [transform]"
+    };
+    raw.check_count(
+        ArgumentList::String,
+        raw.strings.len() > names + 1,
+        format!("at least {} ({synopsis})", names + 2),
+    )?;
+    raw.check_no_integers()?;
+    let after_file = &raw.strings[names + 1..];
+    let coordinates = after_file
+        .iter()
+        .position(|w| TRANSFORM_OPTIONS.contains(w))
+        .unwrap_or(after_file.len());
+    let words: Vec<String> = after_file[coordinates..]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+    let scene_dir = raw.at.file.parent().map(PathBuf::from).unwrap_or_default();
+    Ok(DataPattern {
+        functions: raw.strings[..channels]
+            .iter()
+            .map(|s| s.to_string())
+            .collect(),
+        data_files: raw.strings[channels..names]
+            .iter()
+            .map(|s| s.to_string())
+            .collect(),
+        function: FunctionArgs {
+            expressions: after_file[..coordinates]
+                .iter()
+                .map(|s| s.to_string())
+                .collect(),
+            cal_file: raw.strings[names].to_string(),
+            scene_dir,
+            transform: transform(raw, &words)?,
+            real_args: raw.reals.clone(),
+        },
+    })
+}

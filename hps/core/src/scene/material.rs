@@ -6,7 +6,7 @@
 //! arithmetic on them.
 
 use super::error::{ArgumentList, SceneError};
-use super::function::{brtd, function_args, BrtdFunc, FunctionArgs};
+use super::function::{brtd, data_pattern, function_args, BrtdFunc, DataPattern, FunctionArgs};
 use super::parse::{PrimitiveType, RawPrimitive};
 use glam::DVec3;
 
@@ -49,6 +49,8 @@ pub enum ModifierKind {
     Glow(Glow),
     Brightfunc(Brightfunc),
     Colorfunc(FunctionArgs),
+    Brightdata(DataPattern),
+    Colordata(DataPattern),
     Texfunc(FunctionArgs),
     Mixfunc(Mixfunc),
     BrtdFunc(BrtdFunc),
@@ -67,6 +69,8 @@ impl ModifierKind {
             ModifierKind::Glow(_) => "glow",
             ModifierKind::Brightfunc(_) => "brightfunc",
             ModifierKind::Colorfunc(_) => "colorfunc",
+            ModifierKind::Brightdata(_) => "brightdata",
+            ModifierKind::Colordata(_) => "colordata",
             ModifierKind::Texfunc(_) => "texfunc",
             ModifierKind::Mixfunc(_) => "mixfunc",
             ModifierKind::BrtdFunc(_) => "BRTDfunc",
@@ -78,7 +82,11 @@ impl ModifierKind {
     pub fn is_material(&self) -> bool {
         !matches!(
             self,
-            ModifierKind::Brightfunc(_) | ModifierKind::Colorfunc(_) | ModifierKind::Texfunc(_)
+            ModifierKind::Brightfunc(_)
+                | ModifierKind::Colorfunc(_)
+                | ModifierKind::Brightdata(_)
+                | ModifierKind::Colordata(_)
+                | ModifierKind::Texfunc(_)
         )
     }
 }
@@ -304,6 +312,8 @@ pub(crate) fn build(
             })
         }
         PrimitiveType::Colorfunc
+        | PrimitiveType::Brightdata
+        | PrimitiveType::Colordata
         | PrimitiveType::Texfunc
         | PrimitiveType::Mixfunc
         | PrimitiveType::BrtdFunc => function_modifier(raw, resolve)?,
@@ -367,6 +377,8 @@ fn function_modifier(
             })
         }
         T::BrtdFunc => ModifierKind::BrtdFunc(brtd(raw)?),
+        T::Brightdata => ModifierKind::Brightdata(data_pattern(raw, 1)?),
+        T::Colordata => ModifierKind::Colordata(data_pattern(raw, 3)?),
         _ => {
             return Err(raw.invalid(
                 "type",

@@ -33,7 +33,7 @@ mod xform;
 
 pub use error::{ArgumentList, SceneError, SourceLocation, SUPPORTED_TYPES};
 pub use expand::{LoadOptions, MAX_INCLUDE_DEPTH, MAX_PRIMITIVES};
-pub use function::{BrtdFunc, FunctionArgs, FunctionTransform};
+pub use function::{BrtdFunc, DataPattern, FunctionArgs, FunctionTransform};
 pub use material::{
     Brightfunc, Glass, Glow, Light, Metal, Mirror, Mixfunc, ModifierId, ModifierKind, ModifierRef,
     Plastic, Trans, GLASS_DEFAULT_REFRACTIVE_INDEX,

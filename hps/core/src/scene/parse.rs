@@ -72,6 +72,8 @@ pub(crate) enum PrimitiveType {
     Glow,
     Brightfunc,
     Colorfunc,
+    Brightdata,
+    Colordata,
     Texfunc,
     Mixfunc,
     BrtdFunc,
@@ -95,6 +97,8 @@ impl PrimitiveType {
             "glow" => Self::Glow,
             "brightfunc" => Self::Brightfunc,
             "colorfunc" => Self::Colorfunc,
+            "brightdata" => Self::Brightdata,
+            "colordata" => Self::Colordata,
             "texfunc" => Self::Texfunc,
             "mixfunc" => Self::Mixfunc,
             "BRTDfunc" => Self::BrtdFunc,
@@ -119,6 +123,8 @@ impl PrimitiveType {
             Self::Glow => "glow",
             Self::Brightfunc => "brightfunc",
             Self::Colorfunc => "colorfunc",
+            Self::Brightdata => "brightdata",
+            Self::Colordata => "colordata",
             Self::Texfunc => "texfunc",
             Self::Mixfunc => "mixfunc",
             Self::BrtdFunc => "BRTDfunc",
@@ -157,6 +163,8 @@ impl PrimitiveType {
             ],
             Self::Brightfunc
             | Self::Colorfunc
+            | Self::Brightdata
+            | Self::Colordata
             | Self::Texfunc
             | Self::Mixfunc
             | Self::BrtdFunc
@@ -173,7 +181,12 @@ impl PrimitiveType {
                 index / 3 + 1,
                 ["x", "y", "z"][index % 3]
             ),
-            Self::Brightfunc | Self::Colorfunc | Self::Texfunc | Self::Mixfunc => {
+            Self::Brightfunc
+            | Self::Colorfunc
+            | Self::Brightdata
+            | Self::Colordata
+            | Self::Texfunc
+            | Self::Mixfunc => {
                 format!("real argument {number} (A{number})")
             }
             Self::BrtdFunc => match index {

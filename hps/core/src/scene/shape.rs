@@ -236,6 +236,8 @@ pub(crate) fn build(raw: &RawPrimitive<'_>) -> Result<Shape, SceneError> {
         | PrimitiveType::Glow
         | PrimitiveType::Brightfunc
         | PrimitiveType::Colorfunc
+        | PrimitiveType::Brightdata
+        | PrimitiveType::Colordata
         | PrimitiveType::Texfunc
         | PrimitiveType::Mixfunc
         | PrimitiveType::BrtdFunc => {

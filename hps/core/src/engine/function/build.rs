@@ -6,7 +6,7 @@ use super::varying::{Modulation, VaryingBase, VaryingMaterial};
 use crate::engine::error::EngineError;
 use crate::engine::material::{BrtdMaterial, Material};
 use crate::engine::sky::SkyFunction;
-use crate::scene::{Modifier, ModifierKind, ModifierRef, Scene, Surface};
+use crate::scene::{DataPattern, Modifier, ModifierKind, ModifierRef, Scene, Surface};
 use std::sync::Arc;
 
 /// BRTDfunc's expressions compiled as such (the specular colours); the next three name
@@ -79,6 +79,8 @@ fn is_function(kind: &ModifierKind, emitter: bool) -> bool {
     match kind {
         ModifierKind::Brightfunc(_) => !emitter,
         ModifierKind::Colorfunc(_)
+        | ModifierKind::Brightdata(_)
+        | ModifierKind::Colordata(_)
         | ModifierKind::Texfunc(_)
         | ModifierKind::Mixfunc(_)
         | ModifierKind::BrtdFunc(_) => true,
@@ -91,12 +93,54 @@ fn modulation(m: &Modifier, loader: &mut FunctionLoader) -> Result<Modulation, E
         ModifierKind::Brightfunc(b) => Modulation::Pattern(loader.compile(m, &b.function, 1)?),
         ModifierKind::Colorfunc(f) => Modulation::Pattern(loader.compile(m, f, 3)?),
         ModifierKind::Texfunc(f) => Modulation::Texture(loader.compile(m, f, 3)?),
+        ModifierKind::Brightdata(d) | ModifierKind::Colordata(d) => data_modulation(m, d, loader)?,
         other => {
             return Err(EngineError::Unsupported {
                 at: m.origin.clone(),
                 what: format!("{} `{}` is not a pattern", other.type_name(), m.name),
             })
         }
+    })
+}
+
+/// A data pattern: its coordinates compiled, its arrays read, their dimensions checked
+/// against the coordinates, its functions checked to exist.
+fn data_modulation(
+    m: &Modifier,
+    d: &DataPattern,
+    loader: &mut FunctionLoader,
+) -> Result<Modulation, EngineError> {
+    let coordinates = loader.compile(m, &d.function, d.function.expressions.len())?;
+    let fail = |what: String| EngineError::Unsupported {
+        at: m.origin.clone(),
+        what: format!("{} `{}`: {what}", m.kind.type_name(), m.name),
+    };
+    let mut arrays = Vec::new();
+    for name in &d.data_files {
+        let array = loader.data(m, name, &d.function.scene_dir)?;
+        if array.dimension_count() != d.function.expressions.len() {
+            return Err(fail(format!(
+                "data file {name} has {} dimension(s) but {} coordinate expression(s) are given",
+                array.dimension_count(),
+                d.function.expressions.len()
+            )));
+        }
+        arrays.push(array);
+    }
+    if let Some(name) = d
+        .functions
+        .iter()
+        .find(|f| coordinates.parameter_count(f).is_none())
+    {
+        return Err(fail(format!(
+            "function `{name}` is not defined in {} nor in the library",
+            d.function.cal_file
+        )));
+    }
+    Ok(Modulation::Data {
+        coordinates,
+        functions: d.functions.clone(),
+        arrays,
     })
 }
 

@@ -3,6 +3,7 @@
 //! one (as `func.c` `initfunc` loads it first), and the modifier's expressions compiled into
 //! the program, so nothing is parsed per ray.
 
+use super::data::DataArray;
 use crate::cal::{CalContext, CalError, CalProgram, Evaluator};
 use crate::engine::error::EngineError;
 use crate::scene::{FunctionArgs, Modifier, SourceLocation};
@@ -24,6 +25,8 @@ const EXPRESSION_PREFIX: &str = "skylux.expression.";
 pub struct FunctionLoader {
     /// Compiled `rayinit.cal` + file, by the file's resolved path (None: no file).
     programs: HashMap<Option<PathBuf>, Arc<CalProgram>>,
+    /// Data files read, by resolved path.
+    data: HashMap<PathBuf, Arc<DataArray>>,
 }
 
 /// A modifier's expressions, compiled with its function file.
@@ -82,6 +85,36 @@ impl FunctionLoader {
         };
         function.check_names().map_err(|e| fail(e.to_string()))?;
         Ok(Arc::new(function))
+    }
+
+    /// The data file `name` of `modifier`, found as function files are, read once.
+    pub fn data(
+        &mut self,
+        modifier: &Modifier,
+        name: &str,
+        scene_dir: &Path,
+    ) -> Result<Arc<DataArray>, EngineError> {
+        let fail = |what: String| EngineError::Unsupported {
+            at: modifier.origin.clone(),
+            what: format!("{} `{}`: {what}", modifier.kind.type_name(), modifier.name),
+        };
+        let path = find(name, scene_dir).ok_or_else(|| {
+            fail(format!(
+                "data file {name} not found on RAYPATH ({}) nor beside the scene file",
+                raypath().join(":")
+            ))
+        })?;
+        if let Some(d) = self.data.get(&path) {
+            return Ok(d.clone());
+        }
+        let text = std::fs::read_to_string(&path)
+            .map_err(|e| fail(format!("data file {}: {e}", path.display())))?;
+        let array = Arc::new(
+            DataArray::parse(&path.display().to_string(), &text)
+                .map_err(|e| fail(e.to_string()))?,
+        );
+        self.data.insert(path, array.clone());
+        Ok(array)
     }
 
     /// `rayinit.cal` (if RAYPATH has it) and the modifier's file, compiled once per file.
@@ -155,6 +188,22 @@ impl CompiledFunction {
             let v = evaluator.variable(&self.expressions[first + k], ray);
             self.checked(v, &evaluator)
         })
+    }
+
+    /// Every expression's value, in order, with one evaluator.
+    pub fn all_values(&self, ray: &dyn CalContext) -> Vec<f64> {
+        let mut evaluator = Evaluator::new(&self.program);
+        (0..self.expressions.len())
+            .map(|i| {
+                let v = evaluator.variable(&self.expressions[i], ray);
+                self.checked(v, &evaluator)
+            })
+            .collect()
+    }
+
+    /// How many arguments the function `name` takes (None: no such function).
+    pub fn parameter_count(&self, name: &str) -> Option<usize> {
+        self.program.parameter_count(name)
     }
 
     /// Calls the function `name` of the file at `arguments`; `0` is the constant 0.

@@ -9,6 +9,7 @@
 //! on a domain error: `p_func.c`).
 
 pub mod build;
+pub mod data;
 pub mod loader;
 pub mod ray;
 pub mod varying;

@@ -3,6 +3,7 @@
 //! resolved at a hit into a plain [`Material`] and a shading normal, which the integrator
 //! then uses as it uses any other; it never learns which kind it was.
 
+use super::data::DataArray;
 use super::loader::CompiledFunction;
 use super::ray::FunctionRay;
 use crate::engine::material::{BrtdMaterial, HitDependent, HitPoint, Material, ShadowCrossing};
@@ -17,6 +18,12 @@ pub enum Modulation {
     Pattern(Arc<CompiledFunction>),
     /// `texfunc`: adds a perturbation to the normal.
     Texture(Arc<CompiledFunction>),
+    /// `brightdata` (one function and array) or `colordata` (three).
+    Data {
+        coordinates: Arc<CompiledFunction>,
+        functions: Vec<String>,
+        arrays: Vec<Arc<DataArray>>,
+    },
 }
 
 /// The material below the modulations.
@@ -163,9 +170,40 @@ impl VaryingMaterial {
                     );
                     m.perturbation += scene / t.scale;
                 }
+                Modulation::Data {
+                    coordinates,
+                    functions,
+                    arrays,
+                } => m.color_rgb *= data_colour(coordinates, functions, arrays, hit),
             }
         }
         m
+    }
+}
+
+/// p_data.c: the arrays interpolated at the coordinates, then each channel's function of
+/// its value (or of the three values, if it takes three arguments).
+fn data_colour(
+    coordinates: &CompiledFunction,
+    functions: &[String],
+    arrays: &[Arc<DataArray>],
+    hit: &HitPoint,
+) -> DVec3 {
+    let ray = function_ray(coordinates, hit);
+    let point = coordinates.all_values(&ray);
+    let values: Vec<f64> = arrays.iter().map(|a| a.value(&point)).collect();
+    let channel = |k: usize| {
+        let name = &functions[k];
+        if coordinates.parameter_count(name).unwrap_or(1) >= 3 && values.len() == 3 {
+            coordinates.call(name, &values, &ray)
+        } else {
+            coordinates.call(name, &values[k.min(values.len() - 1)..][..1], &ray)
+        }
+    };
+    if functions.len() == 1 {
+        DVec3::splat(channel(0))
+    } else {
+        DVec3::new(channel(0), channel(1), channel(2))
     }
 }
 

@@ -311,6 +311,8 @@ impl Material {
             }),
             ModifierKind::Brightfunc(_)
             | ModifierKind::Colorfunc(_)
+            | ModifierKind::Brightdata(_)
+            | ModifierKind::Colordata(_)
             | ModifierKind::Texfunc(_)
             | ModifierKind::Mixfunc(_)
             | ModifierKind::BrtdFunc(_) => {
