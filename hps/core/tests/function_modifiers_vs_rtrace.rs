@@ -4,6 +4,8 @@
 //! ceiling that is a `mixfunc` of two plastics, a north wall bumped by a `texfunc` (under a
 //! transform) and patterned by a 2-D `brightdata`, a west wall coloured by a 1-D
 //! `colordata` extrapolated past its data, a floor coloured by a `colorfunc` (translated)
+//! over a `texfunc` that tilts it towards the sun (which a small ripple alone would not show
+//! at the sensors)
 //! and an east wall shaded by a `brightfunc`, under a sunny `gensky` sky: our illuminance at every sensor must be within
 //! 2 % or k combined standard errors of a converged rtrace (pure path tracing, independent
 //! `-u+` estimates), via `compare_with_rtrace`.
@@ -53,6 +55,9 @@ wall_bright = 0.8 + 0.2 * cos(4 * Pz);
 bump_x = 0.12 * sin(6 * Px);
 bump_y = 0;
 bump_z = 0.12 * cos(5 * Pz);
+tilt_x = 0.1;
+tilt_y = -0.1 + 0.05 * sin(3 * Px);
+tilt_z = 0;
 ceiling_mix = 0.5 + 0.5 * sin(1.5 * Px) * cos(1.2 * Py);
 clip(v) = if(v - 1.1, 1.1, v);
 same(v) = v;
@@ -83,7 +88,9 @@ fn room() -> String {
 void plastic wall_white 0 0 5 0.7 0.7 0.7 0 0
 void plastic wall_grey 0 0 5 0.35 0.35 0.35 0 0
 void glass pane 0 0 3 0.96 0.96 0.96
-void colorfunc floor_colour 8 floor_r floor_g floor_b room.cal -t 1 0 0
+void texfunc tilt 4 tilt_x tilt_y tilt_z room.cal
+0 0
+tilt colorfunc floor_colour 8 floor_r floor_g floor_b room.cal -t 1 0 0
 0 0
 floor_colour plastic floor 0 0 5 0.5 0.45 0.4 0 0
 void texfunc bumps 6 bump_x bump_y bump_z room.cal -s 0.5
