@@ -6,7 +6,9 @@
 use super::data::DataArray;
 use super::loader::CompiledFunction;
 use super::ray::FunctionRay;
-use crate::engine::material::{BrtdMaterial, HitDependent, HitPoint, Material, ShadowCrossing};
+use crate::engine::material::{
+    BrtdMaterial, HitDependent, HitPoint, Material, Shading, ShadowCrossing,
+};
 use crate::engine::rng::Rng;
 use glam::DVec3;
 use std::sync::Arc;
@@ -61,15 +63,24 @@ impl HitDependent for VaryingMaterial {
         let m = self.modulate(hit);
         let normal = shading_normal(hit, m.perturbation);
         let material = match &self.base {
-            VaryingBase::Plain(material) => coloured(material, m.color_rgb),
-            VaryingBase::Brtd(b) => Material::BrtdAtHit(Box::new(b.shade(
+            VaryingBase::Plain(material) => match coloured(material, m.color_rgb) {
+                // Tilted for direct light and reflection, not for the ambient hemisphere.
+                Material::Normal(n) if normal != hit.normal => {
+                    Material::Shaded(Box::new(Shading::Normal(
+                        n.shade(hit.direction, normal, hit.flat)
+                            .with_ambient_normal(hit.normal),
+                    )))
+                }
+                plain => plain,
+            },
+            VaryingBase::Brtd(b) => Material::Shaded(Box::new(Shading::Brtd(Box::new(b.shade(
                 hit.direction,
                 hit.normal,
                 normal,
                 hit.point_m,
                 hit.distance_m,
                 m.color_rgb,
-            ))),
+            ))))),
             VaryingBase::Mix {
                 coefficient,
                 foreground,

@@ -35,6 +35,9 @@ pub struct BrtdShading {
     rdir: DVec3,
     /// Perturbed normal turned towards the ray.
     pnorm: DVec3,
+    /// The surface's own normal turned towards the ray: the diffuse hemisphere is sampled
+    /// around it (RADIANCE's `samp_hemi` with -aa 0 ignores textures).
+    ambient_normal: DVec3,
     specular_reflection_rgb: DVec3,
     specular_transmission_rgb: DVec3,
     diffuse_reflection_rgb: DVec3,
@@ -94,6 +97,7 @@ impl BrtdMaterial {
             ray,
             rdir,
             pnorm,
+            ambient_normal: if front { normal } else { -normal },
             specular_reflection_rgb: DVec3::new(rr, rg, rb).max(DVec3::ZERO),
             specular_transmission_rgb: DVec3::new(tr, tg, tb).max(DVec3::ZERO),
             diffuse_reflection_rgb: diffuse * pattern_rgb,
@@ -135,7 +139,7 @@ impl BrtdShading {
     /// The Lambertian parts as [`BrtdShading::sample`] samples them (see
     /// `NormalShading::diffuse_lobe`).
     pub fn diffuse_lobe(&self, allow_diffuse: bool) -> Option<DiffuseLobe> {
-        DiffuseLobe::of_components(self.pnorm, &self.components(allow_diffuse))
+        DiffuseLobe::of_components(self.ambient_normal, &self.components(allow_diffuse))
     }
 
     /// A shadow ray goes on straight with the specular transmission (m_brdf traces the
@@ -196,11 +200,11 @@ impl BrtdShading {
                 weight,
             },
             2 => Scatter::Diffuse {
-                direction: cosine_direction(self.pnorm, rng),
+                direction: cosine_direction(self.ambient_normal, rng),
                 weight,
             },
             _ => Scatter::Diffuse {
-                direction: cosine_direction(-self.pnorm, rng),
+                direction: cosine_direction(-self.ambient_normal, rng),
                 weight,
             },
         }

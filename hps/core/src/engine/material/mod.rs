@@ -44,8 +44,9 @@ pub enum Material {
     /// A material with function modifiers: resolved at each hit ([`Material::at_hit`])
     /// into one of the others; asked directly, it behaves as an opaque black surface.
     Varying(std::sync::Arc<dyn HitDependent>),
-    /// A `BRTDfunc` as evaluated at one hit (what [`Material::at_hit`] makes of it).
-    BrtdAtHit(Box<BrtdShading>),
+    /// A material as shaded at one hit (what [`Material::at_hit`] makes of a `BRTDfunc` or a
+    /// textured material).
+    Shaded(Box<Shading>),
     /// Modifier chain ends at `void` without a material: rays pass through.
     Invisible,
 }
@@ -136,6 +137,14 @@ impl Shading {
         }
     }
 
+    /// What a shadow ray keeps crossing this surface (straight).
+    pub fn shadow_transmission(&self) -> DVec3 {
+        match self {
+            Shading::Normal(s) => s.shadow_transmission(),
+            Shading::Brtd(s) => s.shadow_transmission(),
+        }
+    }
+
     /// Samples the continuation; diffuse components only if `allow_diffuse` (ambient bounces
     /// left).
     pub fn sample(&self, allow_diffuse: bool, rng: &mut Rng) -> Scatter {
@@ -200,7 +209,7 @@ impl Material {
                 normal,
             }),
             Material::Normal(m) => Interaction::Shaded(Shading::Normal(m.shade(d, normal, flat))),
-            Material::BrtdAtHit(b) => Interaction::Shaded(Shading::Brtd(b.clone())),
+            Material::Shaded(s) => Interaction::Shaded((**s).clone()),
             Material::Varying(_) => Interaction::Absorbed,
         }
     }
@@ -211,14 +220,14 @@ impl Material {
     pub fn shading(&self, rdir: DVec3, normal: DVec3, flat: bool) -> Option<Shading> {
         match self {
             Material::Normal(m) => Some(Shading::Normal(m.shade(rdir, normal, flat))),
-            Material::BrtdAtHit(b) => Some(Shading::Brtd(b.clone())),
+            Material::Shaded(s) => Some((**s).clone()),
             _ => None,
         }
     }
 
     /// Whether [`Material::shading`] gives a shading.
     pub fn is_shaded(&self) -> bool {
-        matches!(self, Material::Normal(_) | Material::BrtdAtHit(_))
+        matches!(self, Material::Normal(_) | Material::Shaded(_))
     }
 
     /// What a shadow ray along unit `dir` does at a surface of front normal `normal`:
@@ -230,7 +239,7 @@ impl Material {
             Material::Normal(m) => {
                 ShadowCrossing::Transmits(m.shade(dir, normal, flat).shadow_transmission())
             }
-            Material::BrtdAtHit(b) => ShadowCrossing::Transmits(b.shadow_transmission()),
+            Material::Shaded(s) => ShadowCrossing::Transmits(s.shadow_transmission()),
             Material::Mirror(_) | Material::Emitter(_) | Material::Varying(_) => {
                 ShadowCrossing::Opaque
             }

@@ -85,6 +85,9 @@ pub struct NormalShading {
     rdir: DVec3,
     /// Surface normal turned to face the ray.
     pnorm: DVec3,
+    /// The normal the diffuse (ambient) hemisphere is sampled around: `pnorm`, unless a
+    /// texture perturbed it, when RADIANCE's `samp_hemi` (-aa 0) keeps the surface's own.
+    ambient_normal: DVec3,
     /// cos of incidence, clamped at .001 as normal.c does for `dirnorm`.
     pdot: f64,
     alpha2: f64,
@@ -146,6 +149,7 @@ impl NormalMaterial {
             scolor,
             rdir,
             pnorm,
+            ambient_normal: pnorm,
             pdot: rod.max(0.001),
             alpha2,
             pure,
@@ -160,6 +164,17 @@ impl NormalMaterial {
 }
 
 impl NormalShading {
+    /// The same shading with its diffuse parts sampled around the surface's own `normal`
+    /// (turned to the side of `pnorm`): what a texture leaves to the ambient calculation.
+    pub fn with_ambient_normal(mut self, normal: DVec3) -> Self {
+        self.ambient_normal = if normal.dot(self.pnorm) < 0.0 {
+            -normal
+        } else {
+            normal
+        };
+        self
+    }
+
     /// The Lambertian parts of this shading as [`NormalShading::sample`] samples them: the
     /// BRDF (front, the side of the ray) and BTDF (back) values ρ/π per RGB channel and the
     /// probability that `sample` picks each, so next-event estimation at this vertex can be
@@ -169,7 +184,7 @@ impl NormalShading {
         if !allow_diffuse {
             return None;
         }
-        DiffuseLobe::of_components(self.pnorm, &self.components(true))
+        DiffuseLobe::of_components(self.ambient_normal, &self.components(true))
     }
 
     /// m_normal's four components, in [`choose_component`]'s order: specular reflection,
@@ -279,8 +294,8 @@ impl NormalShading {
                     self.gaussian_transmission(rng)
                 }
             }
-            2 => Some(cosine_direction(self.pnorm, rng)),
-            _ => Some(cosine_direction(-self.pnorm, rng)),
+            2 => Some(cosine_direction(self.ambient_normal, rng)),
+            _ => Some(cosine_direction(-self.ambient_normal, rng)),
         };
         match (direction, pick) {
             (None, _) => Scatter::Absorbed,
