@@ -328,13 +328,17 @@ fn unsupported_input_is_a_clear_error() {
     );
     let scene = scene::parse(
         "p.rad",
-        b"void brightfunc f 2 skybr skybright.cal 0 3 2 1 1\nf plastic m 0 0 5 .5 .5 .5 0 0\n\
+        b"void brightfunc f 2 skybr no_such_file.cal 0 3 2 1 1\nf plastic m 0 0 5 .5 .5 .5 0 0\n\
           m polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n",
     )
     .unwrap();
+    // A pattern on any material is traced; its missing function file is named with the
+    // pattern's file and line.
     let err = World::new(&scene).unwrap_err().to_string();
     assert!(
-        err.starts_with("p.rad:3:") && err.contains("pattern"),
+        err.starts_with("p.rad:1:")
+            && err.contains("no_such_file.cal")
+            && err.contains("not found"),
         "{err}"
     );
     let settings = Settings {

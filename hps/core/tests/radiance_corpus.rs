@@ -221,7 +221,7 @@ const CASES: &[Case] = &[
     Case {
         dir: RENDERS,
         files: &["basic.mat", "diorama_walls.rad", "gymbal.rad"],
-        expect: Expect::Stops("gymbal.rad", 4, &["`BRTDfunc`", TYPE]),
+        expect: Expect::Stops("gymbal.rad", 24, &["`tube`", TYPE]),
     },
     Case {
         dir: RENDERS,

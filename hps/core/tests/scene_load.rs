@@ -570,16 +570,20 @@ box_mat polygon part.2
     assert!(text.starts_with("generated.rad:21:"), "{text}");
     assert!(text.contains("!xform -rz 90 -t 1 0 0 part.rad"), "{text}");
 
-    // Smoothed obj2rad output carries `texfunc` normals: outside the subset, named.
+    // Smoothed obj2rad output carries `texfunc` normals: read (issue 19), with its
+    // expressions and function file for the engine to compile.
     let smoothed = format!(
         "void texfunc part.n\n4 dx dy dz tmesh.cal\n0\n0\n{}",
         obj.replace("box_mat polygon part.1", "part.n polygon part.1")
     );
-    let err = load_generated(&smoothed).unwrap_err().to_string();
-    assert!(
-        err.starts_with("generated.rad:1:") && err.contains("`texfunc`"),
-        "{err}"
-    );
+    let scene = load_generated(&smoothed).unwrap();
+    match &scene.modifiers()[1].kind {
+        scene::ModifierKind::Texfunc(f) => {
+            assert_eq!(f.expressions, ["dx", "dy", "dz"]);
+            assert_eq!(f.cal_file, "tmesh.cal");
+        }
+        other => panic!("a texfunc, not {other:?}"),
+    }
 }
 
 /// Parses `text` as `case.rad` and returns the error message, which must start with the file

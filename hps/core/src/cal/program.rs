@@ -102,6 +102,16 @@ impl CalProgram {
             .is_some_and(|id| self.symbols[id.0 as usize].definition.is_some())
     }
 
+    /// How many arguments the function `name` takes: its definition's parameters, or 1 for
+    /// a library function; None if `name` is no function (RADIANCE's `fundefined`).
+    pub fn parameter_count(&self, name: &str) -> Option<usize> {
+        let symbol = &self.symbols[self.symbol(name)?.0 as usize];
+        match &symbol.definition {
+            Some(d) => d.parameter_count,
+            None => symbol.library.map(|_| 1),
+        }
+    }
+
     /// Whether `name` is currently a variable defined with `:`.
     pub(super) fn is_constant_variable(&self, name: &str) -> bool {
         self.symbol(name)

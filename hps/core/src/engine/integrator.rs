@@ -340,7 +340,7 @@ impl<'a> SkyNee<'a> {
             let ray = Ray::new(p - s * 1e-7, -s);
             let found = world.first_opaque(&ray, None).and_then(|hit| {
                 let m = world.material(hit.primitive);
-                m.is_shaded()
+                m.is_shaded_somewhere()
                     .then(|| (ray.at(hit.t_m), hit.normal, hit.primitive, m))
             });
             // The sun-cone sample is drawn whatever happens, so the stream stays aligned.
@@ -363,7 +363,16 @@ impl<'a> SkyNee<'a> {
             if (cos_y).partial_cmp(&1e-9) != Some(std::cmp::Ordering::Greater) {
                 continue;
             }
-            let Some(shading) = m.shading(w, n_y, world.is_flat(prim_y)) else {
+            let flat_y = world.is_flat(prim_y);
+            let hit_y = super::material::HitPoint {
+                point_m: y,
+                direction: w,
+                normal: n_y,
+                distance_m: dist,
+                flat: flat_y,
+            };
+            let (m_y, shading_normal) = m.at_hit(&hit_y, rng);
+            let Some(shading) = m_y.shading(w, shading_normal, flat_y) else {
                 continue;
             };
             let c = shading.source_coefficient(l, source.solid_angle_sr);
@@ -633,9 +642,11 @@ fn trace(
         path.from = Some(hit.primitive);
         let d = path.ray.direction;
         let flat = world.is_flat(hit.primitive);
-        let material = world.material(hit.primitive);
+        let (material, normal) = world
+            .material(hit.primitive)
+            .at_hit(&hit.as_seen(p, d, flat), rng);
         path.throughput *= material.arrival_factor(d, hit.normal, hit.t_m, false);
-        let next = match material.interact(d, hit.normal, flat, false) {
+        let next = match material.interact(d, normal, flat, false) {
             Interaction::PassThrough => path.cross(d),
             Interaction::Emits(l) => {
                 path.radiance += path.throughput * l;

@@ -24,6 +24,7 @@ pub mod antimatter;
 pub mod bvh;
 pub mod daylight_coefficients;
 mod error;
+pub mod function;
 pub mod illuminance;
 pub mod integrator;
 pub mod material;

@@ -47,9 +47,11 @@ pub fn ray_radiance(world: &World, ray: Ray, settings: &Settings, rng: &mut Rng)
         let d = ray.direction;
         let p = ray.at(hit.t_m);
         let flat = world.is_flat(hit.primitive);
-        let material = world.material(hit.primitive);
+        let (material, normal) = world
+            .material(hit.primitive)
+            .at_hit(&hit.as_seen(p, d, flat), rng);
         throughput *= material.arrival_factor(d, hit.normal, hit.t_m, true);
-        let next = match material.interact(d, hit.normal, flat, true) {
+        let next = match material.interact(d, normal, flat, true) {
             Interaction::PassThrough => {
                 crossings += 1;
                 if crossings > MAX_CROSSINGS {

@@ -50,7 +50,7 @@ fn transmission_to(
         let flat = world.is_flat(hit.primitive);
         match world
             .material(hit.primitive)
-            .shadow_crossing(dir, hit.normal, flat)
+            .shadow_crossing_at(&hit.as_seen(p, dir, flat))
         {
             ShadowCrossing::PassThrough => {}
             ShadowCrossing::Transmits(factor) => t *= factor,

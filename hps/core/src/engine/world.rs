@@ -3,7 +3,9 @@
 use super::antimatter::Antimatter;
 use super::bvh::Bvh;
 use super::error::EngineError;
-use super::material::{Emitter, Material, ShadowCrossing, SourceCrossing};
+use super::function::build::{self, resolve};
+use super::function::loader::FunctionLoader;
+use super::material::{Emitter, HitPoint, Material, ShadowCrossing, SourceCrossing};
 use super::portal::Portals;
 use super::ray::{Ray, FTINY};
 use super::sampling::basis;
@@ -11,7 +13,7 @@ use super::shapes::{PreparedCone, PreparedPolygon, Primitive, ShapeHit};
 use super::sky::{source_seen, DistantEmitter, DistantKind, SkyFunction};
 use super::sky_sampling::SkyDistribution;
 use super::slab::{BoxTest, SlabTest};
-use crate::scene::{DistantSource, Modifier, ModifierKind, ModifierRef, Scene, Shape, Surface};
+use crate::scene::{DistantSource, Modifier, ModifierKind, Scene, Shape, Surface};
 use glam::DVec3;
 
 /// Distance under which a ray leaving a curved surface ignores it (RADIANCE's `FTINY`, in
@@ -28,6 +30,19 @@ pub struct Hit {
     pub normal: DVec3,
     /// Index of the primitive in the world.
     pub primitive: u32,
+}
+
+impl Hit {
+    /// This hit of a ray along unit `direction`, at `point_m`, as a material resolves it.
+    pub fn as_seen(&self, point_m: DVec3, direction: DVec3, flat: bool) -> HitPoint {
+        HitPoint {
+            point_m,
+            direction,
+            normal: self.normal,
+            distance_m: self.t_m,
+            flat,
+        }
+    }
 }
 
 /// The scene as the integrator sees it.
@@ -93,9 +108,10 @@ impl World {
         let mut names = Vec::new();
         let mut polygon_vertices = Vec::new();
         let mut antimatter = Antimatter::default();
+        let mut functions = FunctionLoader::default();
         for surface in scene.surfaces() {
-            let (material, patterns) = resolve(scene, surface)?;
             if let Shape::Source(source) = &surface.shape {
+                let (material, patterns) = resolve(scene, surface.modifier)?;
                 distant.extend(distant_emitter(surface, source, material, patterns)?);
                 continue;
             }
@@ -103,7 +119,7 @@ impl World {
             let index = match material_index.get(&key) {
                 Some(&i) => i,
                 None => {
-                    let prepared = Material::from_scene(scene, surface, material, patterns)?;
+                    let prepared = build::material_of(scene, key, surface, &mut functions)?;
                     materials.push(prepared);
                     let i = (materials.len() - 1) as u32;
                     material_index.insert(key, i);
@@ -113,6 +129,7 @@ impl World {
             if let Shape::Polygon(p) = &surface.shape {
                 polygon_vertices.push((primitives.len() as u32, p.vertices_m.clone()));
             }
+            let (material, _) = resolve(scene, surface.modifier)?;
             let subtracted = material.and_then(|m| match &m.kind {
                 ModifierKind::Antimatter(a) => Some((surface.modifier, a.subtracted.as_slice())),
                 _ => None,
@@ -478,10 +495,14 @@ impl World {
             else {
                 return true;
             };
-            let factor = match self
-                .material(p)
-                .shadow_crossing(dir, hit.normal, self.is_flat(p))
-            {
+            let point = HitPoint {
+                point_m: ray.at(hit.t_m),
+                direction: dir,
+                normal: hit.normal,
+                distance_m: hit.t_m,
+                flat: self.is_flat(p),
+            };
+            let factor = match self.material(p).shadow_crossing_at(&point) {
                 ShadowCrossing::PassThrough => return true,
                 ShadowCrossing::Transmits(factor) => factor,
                 ShadowCrossing::Opaque => DVec3::ZERO,
@@ -559,10 +580,8 @@ impl World {
                 return t;
             };
             let flat = self.is_flat(hit.primitive);
-            match self
-                .material(hit.primitive)
-                .shadow_crossing(dir, hit.normal, flat)
-            {
+            let point = hit.as_seen(ray.at(hit.t_m), dir, flat);
+            match self.material(hit.primitive).shadow_crossing_at(&point) {
                 ShadowCrossing::PassThrough => {}
                 ShadowCrossing::Transmits(factor) => t *= factor,
                 ShadowCrossing::Opaque => return DVec3::ZERO,
@@ -575,29 +594,6 @@ impl World {
         }
         DVec3::ZERO
     }
-}
-
-/// Walks a surface's modifier chain: its material (None for void) and every pattern on the
-/// chain, above and below the material (RADIANCE applies both: `rayshade` and `raytexture`).
-fn resolve<'a>(
-    scene: &'a Scene,
-    surface: &Surface,
-) -> Result<(Option<&'a Modifier>, Vec<SkyFunction>), EngineError> {
-    let mut patterns = Vec::new();
-    let mut material = None;
-    let mut next = surface.modifier;
-    while let ModifierRef::Defined(id) = next {
-        let Some(m) = scene.modifier(id) else { break };
-        match &m.kind {
-            ModifierKind::Brightfunc(b) => {
-                patterns.push(SkyFunction::from_brightfunc(b, &m.origin)?)
-            }
-            _ if material.is_none() => material = Some(m),
-            _ => {}
-        }
-        next = m.modifier;
-    }
-    Ok((material, patterns))
 }
 
 /// The distant emitter of a `source` surface `s` with its material `material` and the

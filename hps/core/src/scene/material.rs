@@ -7,6 +7,7 @@
 
 use super::bsdf_modifier::{self, BsdfModifier};
 use super::error::{ArgumentList, SceneError};
+use super::function::{brtd, data_pattern, function_args, BrtdFunc, DataPattern, FunctionArgs};
 use super::parse::{PrimitiveType, RawPrimitive};
 use glam::DVec3;
 use std::path::Path;
@@ -55,6 +56,12 @@ pub enum ModifierKind {
     Spotlight(Spotlight),
     Illum(Illum),
     Antimatter(Antimatter),
+    Colorfunc(FunctionArgs),
+    Brightdata(DataPattern),
+    Colordata(DataPattern),
+    Texfunc(FunctionArgs),
+    Mixfunc(Mixfunc),
+    BrtdFunc(BrtdFunc),
 }
 
 impl ModifierKind {
@@ -78,13 +85,26 @@ impl ModifierKind {
             ModifierKind::Spotlight(_) => "spotlight",
             ModifierKind::Illum(_) => "illum",
             ModifierKind::Antimatter(_) => "antimatter",
+            ModifierKind::Colorfunc(_) => "colorfunc",
+            ModifierKind::Brightdata(_) => "brightdata",
+            ModifierKind::Colordata(_) => "colordata",
+            ModifierKind::Texfunc(_) => "texfunc",
+            ModifierKind::Mixfunc(_) => "mixfunc",
+            ModifierKind::BrtdFunc(_) => "BRTDfunc",
         }
     }
 
-    /// Materials decide how a surface scatters or emits light; patterns (`brightfunc`) only
-    /// scale the material they modify.
+    /// Materials decide how a surface scatters or emits light; patterns (`brightfunc`,
+    /// `colorfunc`) scale and textures (`texfunc`) tilt the material they modify.
     pub fn is_material(&self) -> bool {
-        !matches!(self, ModifierKind::Brightfunc(_))
+        !matches!(
+            self,
+            ModifierKind::Brightfunc(_)
+                | ModifierKind::Colorfunc(_)
+                | ModifierKind::Brightdata(_)
+                | ModifierKind::Colordata(_)
+                | ModifierKind::Texfunc(_)
+        )
     }
 }
 
@@ -176,6 +196,19 @@ pub struct Brightfunc {
     pub transform: Vec<String>,
     /// The real arguments `A1 .. An` made available to the function.
     pub real_args: Vec<f64>,
+    /// The same, as the engine compiles it on a surface that is not a sky.
+    pub function: FunctionArgs,
+}
+
+/// `mixfunc`: blends two modifiers by a coefficient (manual §2.1.6).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mixfunc {
+    /// Used where the coefficient is 1 (`void`: nothing).
+    pub foreground: ModifierRef,
+    /// Used where the coefficient is 0.
+    pub background: ModifierRef,
+    /// One expression: the coefficient.
+    pub function: FunctionArgs,
 }
 
 /// Refractive index RADIANCE's `dielectric` adds per unit of Hartmann constant: the constant
@@ -339,8 +372,9 @@ pub(crate) fn build(
                 raw.strings.len() >= 2,
                 "at least 2 (refname funcfile [transform])",
             )?;
-            raw.check_no_integers()?;
+            let function = super::function::function_args(raw, 1, "refname funcfile [transform]")?;
             ModifierKind::Brightfunc(Brightfunc {
+                function,
                 function_name: raw.strings[0].to_string(),
                 cal_file: raw.strings[1].to_string(),
                 transform: raw.strings[2..].iter().map(|s| s.to_string()).collect(),
@@ -362,6 +396,12 @@ pub(crate) fn build(
             },
         }),
         PrimitiveType::Antimatter => ModifierKind::Antimatter(antimatter(raw, resolve)?),
+        PrimitiveType::Colorfunc
+        | PrimitiveType::Brightdata
+        | PrimitiveType::Colordata
+        | PrimitiveType::Texfunc
+        | PrimitiveType::Mixfunc
+        | PrimitiveType::BrtdFunc => function_modifier(raw, resolve)?,
         PrimitiveType::Polygon
         | PrimitiveType::Sphere
         | PrimitiveType::Cylinder
@@ -499,6 +539,63 @@ fn antimatter(
         })
         .collect::<Result<_, _>>()?;
     Ok(Antimatter { subtracted })
+}
+
+/// `colorfunc`, `texfunc`, `mixfunc` or `BRTDfunc`, read from `raw`.
+fn function_modifier(
+    raw: &RawPrimitive<'_>,
+    resolve: &dyn Fn(&str) -> Option<ModifierRef>,
+) -> Result<ModifierKind, SceneError> {
+    use super::parse::PrimitiveType as T;
+    Ok(match raw.kind {
+        T::Colorfunc => ModifierKind::Colorfunc(function_args(
+            raw,
+            3,
+            "rvarname gvarname bvarname funcfile [transform]",
+        )?),
+        T::Texfunc => ModifierKind::Texfunc(function_args(
+            raw,
+            3,
+            "xpert ypert zpert funcfile [transform]",
+        )?),
+        T::Mixfunc => {
+            let function =
+                function_args(raw, 3, "foreground background vname funcfile [transform]")?;
+            let modifier = |i: usize, field: &'static str| {
+                let name = &function.expressions[i];
+                if name == "void" {
+                    return Ok(ModifierRef::Void);
+                }
+                resolve(name).ok_or_else(|| SceneError::UnknownModifier {
+                    at: raw.at.clone(),
+                    primitive: raw.describe(),
+                    field,
+                    modifier: name.clone(),
+                    hint: String::new(),
+                })
+            };
+            let foreground = modifier(0, "string argument 1 (foreground)")?;
+            let background = modifier(1, "string argument 2 (background)")?;
+            ModifierKind::Mixfunc(Mixfunc {
+                foreground,
+                background,
+                function: FunctionArgs {
+                    expressions: vec![function.expressions[2].clone()],
+                    ..function
+                },
+            })
+        }
+        T::BrtdFunc => ModifierKind::BrtdFunc(brtd(raw)?),
+        T::Brightdata => ModifierKind::Brightdata(data_pattern(raw, 1)?),
+        T::Colordata => ModifierKind::Colordata(data_pattern(raw, 3)?),
+        _ => {
+            return Err(raw.invalid(
+                "type",
+                raw.kind.name(),
+                "a function modifier (internal: other type passed to the function reader)",
+            ))
+        }
+    })
 }
 
 /// Reflectances and transmissivities below zero have no physical meaning (RADIANCE accepts

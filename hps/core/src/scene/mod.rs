@@ -23,6 +23,7 @@ mod command;
 mod error;
 mod expand;
 mod files;
+mod function;
 mod generators;
 mod lexer;
 mod material;
@@ -35,8 +36,9 @@ mod xform;
 pub use bsdf_modifier::{BsdfModifier, BsdfType};
 pub use error::{ArgumentList, SceneError, SourceLocation, SUPPORTED_TYPES};
 pub use expand::{LoadOptions, MAX_INCLUDE_DEPTH, MAX_PRIMITIVES};
+pub use function::{BrtdFunc, DataPattern, FunctionArgs, FunctionTransform};
 pub use material::{
-    Antimatter, Brightfunc, Dielectric, Glass, Glow, Illum, Light, Medium, Metal, Mirror,
+    Antimatter, Brightfunc, Dielectric, Glass, Glow, Illum, Light, Medium, Metal, Mirror, Mixfunc,
     ModifierId, ModifierKind, ModifierRef, Plastic, Spotlight, Trans,
     GLASS_DEFAULT_REFRACTIVE_INDEX, HARTMANN_MEAN_WAVELENGTH_NM,
 };

@@ -68,6 +68,12 @@ pub(crate) enum PrimitiveType {
     Spotlight,
     Illum,
     Antimatter,
+    Colorfunc,
+    Brightdata,
+    Colordata,
+    Texfunc,
+    Mixfunc,
+    BrtdFunc,
     Polygon,
     Sphere,
     Cylinder,
@@ -100,6 +106,12 @@ impl PrimitiveType {
             "bubble" => Self::Bubble,
             "tube" => Self::Tube,
             "cup" => Self::Cup,
+            "colorfunc" => Self::Colorfunc,
+            "brightdata" => Self::Brightdata,
+            "colordata" => Self::Colordata,
+            "texfunc" => Self::Texfunc,
+            "mixfunc" => Self::Mixfunc,
+            "BRTDfunc" => Self::BrtdFunc,
             "polygon" => Self::Polygon,
             "sphere" => Self::Sphere,
             "cylinder" => Self::Cylinder,
@@ -130,6 +142,12 @@ impl PrimitiveType {
             Self::Bubble => "bubble",
             Self::Tube => "tube",
             Self::Cup => "cup",
+            Self::Colorfunc => "colorfunc",
+            Self::Brightdata => "brightdata",
+            Self::Colordata => "colordata",
+            Self::Texfunc => "texfunc",
+            Self::Mixfunc => "mixfunc",
+            Self::BrtdFunc => "BRTDfunc",
             Self::Polygon => "polygon",
             Self::Sphere => "sphere",
             Self::Cylinder => "cylinder",
@@ -174,7 +192,15 @@ impl PrimitiveType {
             Self::Ring => &[
                 "xcent", "ycent", "zcent", "xdir", "ydir", "zdir", "r0", "r1",
             ],
-            Self::Brightfunc | Self::Polygon | Self::Antimatter => &[],
+            Self::Brightfunc
+            | Self::Colorfunc
+            | Self::Brightdata
+            | Self::Colordata
+            | Self::Texfunc
+            | Self::Mixfunc
+            | Self::BrtdFunc
+            | Self::Polygon
+            | Self::Antimatter => &[],
             Self::Bsdf | Self::ABsdf => &[
                 "rdf", "gdf", "bdf", "rdb", "gdb", "bdb", "rdt", "gdt", "bdt",
             ],
@@ -190,7 +216,21 @@ impl PrimitiveType {
                 index / 3 + 1,
                 ["x", "y", "z"][index % 3]
             ),
-            Self::Brightfunc => format!("real argument {number} (A{number})"),
+            Self::Brightfunc
+            | Self::Colorfunc
+            | Self::Brightdata
+            | Self::Colordata
+            | Self::Texfunc
+            | Self::Mixfunc => {
+                format!("real argument {number} (A{number})")
+            }
+            Self::BrtdFunc => match index {
+                0..=8 => format!(
+                    "real argument {number} ({})",
+                    ["rdf", "gdf", "bdf", "rdb", "gdb", "bdb", "rdt", "gdt", "bdt"][index]
+                ),
+                _ => format!("real argument {number} (A{number})"),
+            },
             _ => match self.real_names().get(index) {
                 Some(name) => format!("real argument {number} ({name})"),
                 None => format!("real argument {number}"),

@@ -208,7 +208,13 @@ pub(crate) fn build(raw: &RawPrimitive<'_>) -> Result<Shape, SceneError> {
         | PrimitiveType::Interface
         | PrimitiveType::Spotlight
         | PrimitiveType::Illum
-        | PrimitiveType::Antimatter => {
+        | PrimitiveType::Antimatter
+        | PrimitiveType::Colorfunc
+        | PrimitiveType::Brightdata
+        | PrimitiveType::Colordata
+        | PrimitiveType::Texfunc
+        | PrimitiveType::Mixfunc
+        | PrimitiveType::BrtdFunc => {
             return Err(raw.invalid(
                 "type",
                 raw.kind.name(),

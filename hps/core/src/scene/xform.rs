@@ -87,6 +87,30 @@ impl Matrix4 {
         std::array::from_fn(|j| p[0] * m[0][j] + p[1] * m[1][j] + p[2] * m[2][j] + m[3][j])
     }
 
+    /// The rows, for callers outside the scene reader.
+    pub fn rows(&self) -> [[f64; 4]; 4] {
+        self.0
+    }
+
+    /// The inverse of a transform made of rotations, mirrors, a uniform scale `scale` and
+    /// translations (all `xf()` makes): its 3x3 part M satisfies M Mᵀ = s² I, so
+    /// M⁻¹ = Mᵀ / s², and the translation row t becomes −t M⁻¹.
+    pub fn inverse_similarity(&self, scale: f64) -> [[f64; 4]; 4] {
+        let m = &self.0;
+        let s2 = scale * scale;
+        let mut inv = [[0.0; 4]; 4];
+        for (i, row) in inv.iter_mut().take(3).enumerate() {
+            for (j, value) in row.iter_mut().take(3).enumerate() {
+                *value = m[j][i] / s2;
+            }
+        }
+        let translation: [f64; 3] =
+            std::array::from_fn(|j| -(0..3).map(|k| m[3][k] * inv[k][j]).sum::<f64>());
+        inv[3][..3].copy_from_slice(&translation);
+        inv[3][3] = 1.0;
+        inv
+    }
+
     /// A direction, scaled with the transform but not translated (`multv3`).
     pub fn vector(&self, v: [f64; 3]) -> [f64; 3] {
         let m = &self.0;

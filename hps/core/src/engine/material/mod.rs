@@ -13,6 +13,7 @@
 //! Surfaces are two-sided (RADIANCE's default `-bv+`): hitting the back of a surface shades
 //! it with the normal turned towards the ray (`flipsurface`).
 
+pub mod brtdfunc;
 pub mod bsdf;
 pub mod dielectric;
 pub mod emitter;
@@ -23,6 +24,7 @@ pub mod normal;
 pub mod scattering;
 pub mod spotlight;
 
+pub use brtdfunc::{BrtdMaterial, BrtdShading};
 /// Where `validation::glazing` finds it; its home is [`crate::engine::sampling`].
 pub use bsdf::{BsdfMaterial, BsdfShading};
 pub use dielectric::DielectricMaterial;
@@ -53,8 +55,36 @@ pub enum Material {
     Dielectric(DielectricMaterial),
     Spotlight(SpotlightMaterial),
     Illum(IllumMaterial),
+    /// A material with function modifiers: resolved at each hit ([`Material::at_hit`])
+    /// into one of the others; asked directly, it behaves as an opaque black surface.
+    Varying(std::sync::Arc<dyn HitDependent>),
+    /// A material as shaded at one hit (what [`Material::at_hit`] makes of a `BRTDfunc` or a
+    /// textured material).
+    Shaded(Box<Shading>),
     /// Modifier chain ends at `void` without a material: rays pass through.
     Invisible,
+}
+
+/// Where a ray meets a surface: what a material that varies from hit to hit is resolved
+/// with.
+#[derive(Clone, Copy, Debug)]
+pub struct HitPoint {
+    pub point_m: DVec3,
+    /// Unit ray direction.
+    pub direction: DVec3,
+    /// The surface's own normal.
+    pub normal: DVec3,
+    pub distance_m: f64,
+    pub flat: bool,
+}
+
+/// A material whose optics are functions of the hit (`engine::function`: patterns,
+/// textures, `BRTDfunc`, `mixfunc`).
+pub trait HitDependent: std::fmt::Debug + Send + Sync {
+    /// The plain material at `hit` and the normal to shade it with.
+    fn resolve(&self, hit: &HitPoint, rng: &mut Rng) -> (Material, DVec3);
+    /// What a shadow ray does at `hit`.
+    fn shadow_crossing(&self, hit: &HitPoint) -> ShadowCrossing;
 }
 
 /// What happens to a ray at a hit ([`Material::interact`]).
@@ -101,6 +131,7 @@ impl SpecularStep<'_> {
 pub enum Shading {
     Normal(NormalShading),
     Bsdf(BsdfShading),
+    Brtd(Box<BrtdShading>),
 }
 
 impl Shading {
@@ -110,6 +141,7 @@ impl Shading {
         match self {
             Shading::Normal(s) => s.source_coefficient(ldir, omega_sr),
             Shading::Bsdf(s) => s.source_coefficient(ldir, omega_sr),
+            Shading::Brtd(s) => s.source_coefficient(ldir, omega_sr),
         }
     }
 
@@ -121,6 +153,7 @@ impl Shading {
             // The sky reaches a BSDF vertex by its own sampling (as in RADIANCE, where the
             // sky is not a source): no next-event strategy to weigh against.
             Shading::Bsdf(_) => None,
+            Shading::Brtd(s) => s.diffuse_lobe(allow_diffuse),
         }
     }
 
@@ -132,6 +165,17 @@ impl Shading {
         match self {
             Shading::Normal(_) => p_m,
             Shading::Bsdf(s) => s.origin_towards(p_m, dir),
+            Shading::Brtd(_) => p_m,
+        }
+    }
+
+    /// What a shadow ray keeps crossing this surface (straight); a BSDF's shading is not
+    /// asked (its material answers for shadow rays) and blocks.
+    pub fn shadow_transmission(&self) -> DVec3 {
+        match self {
+            Shading::Normal(s) => s.shadow_transmission(),
+            Shading::Brtd(s) => s.shadow_transmission(),
+            Shading::Bsdf(_) => DVec3::ZERO,
         }
     }
 
@@ -141,6 +185,7 @@ impl Shading {
         match self {
             Shading::Normal(s) => s.sample(allow_diffuse, rng),
             Shading::Bsdf(s) => s.sample(allow_diffuse, rng),
+            Shading::Brtd(s) => s.sample(allow_diffuse, rng),
         }
     }
 }
@@ -166,6 +211,31 @@ pub enum SourceCrossing {
 }
 
 impl Material {
+    /// This material at `hit`, and the normal to shade it with (the surface's own unless a
+    /// texture tilts it): borrowed unless it varies from hit to hit.
+    pub fn at_hit(&self, hit: &HitPoint, rng: &mut Rng) -> (std::borrow::Cow<'_, Material>, DVec3) {
+        match self {
+            Material::Varying(v) => {
+                let (m, n) = v.resolve(hit, rng);
+                (std::borrow::Cow::Owned(m), n)
+            }
+            _ => (std::borrow::Cow::Borrowed(self), hit.normal),
+        }
+    }
+
+    /// What a shadow ray does at `hit` ([`Material::shadow_crossing`] for any material).
+    pub fn shadow_crossing_at(&self, hit: &HitPoint) -> ShadowCrossing {
+        match self {
+            Material::Varying(v) => v.shadow_crossing(hit),
+            _ => self.shadow_crossing(hit.direction, hit.normal, hit.flat),
+        }
+    }
+
+    /// Whether [`Material::at_hit`] may give a shaded material (see [`Material::is_shaded`]).
+    pub fn is_shaded_somewhere(&self) -> bool {
+        matches!(self, Material::Varying(_)) || self.is_shaded()
+    }
+
     /// What a ray in unit direction `d` does on meeting this material on a surface of front
     /// normal `normal` (`flat` for polygons and rings). `primary`: the ray descends from no
     /// ambient or specular ray (a camera ray), which sees a `glow` that does not illuminate.
@@ -198,6 +268,8 @@ impl Material {
                 Some(s) => Interaction::Shaded(Shading::Bsdf(s)),
                 None => Interaction::Absorbed,
             },
+            Material::Shaded(s) => Interaction::Shaded((**s).clone()),
+            Material::Varying(_) => Interaction::Absorbed,
         }
     }
 
@@ -213,6 +285,7 @@ impl Material {
             Material::Illum(i) if !IllumMaterial::is_front(rdir, normal) => {
                 i.alternate.shading(rdir, normal, flat)
             }
+            Material::Shaded(s) => Some((**s).clone()),
             _ => None,
         }
     }
@@ -220,7 +293,7 @@ impl Material {
     /// Whether [`Material::shading`] gives a shading (for an `illum`, from its back).
     pub fn is_shaded(&self) -> bool {
         match self {
-            Material::Normal(_) | Material::Bsdf(_) => true,
+            Material::Normal(_) | Material::Bsdf(_) | Material::Shaded(_) => true,
             Material::Illum(i) => i.alternate.is_shaded(),
             _ => false,
         }
@@ -237,6 +310,7 @@ impl Material {
             }
             Material::Bsdf(m) if m.shadow_passes() => ShadowCrossing::PassThrough,
             Material::Bsdf(_) => ShadowCrossing::Opaque,
+            Material::Shaded(s) => ShadowCrossing::Transmits(s.shadow_transmission()),
             // Light reaching a point through an illum's front or a dielectric is what the
             // path's own continuation finds (an emitter hit, a refracted path), so no other
             // estimate may count it.
@@ -245,7 +319,8 @@ impl Material {
             Material::Mirror(_)
             | Material::Emitter(_)
             | Material::Spotlight(_)
-            | Material::Dielectric(_) => ShadowCrossing::Opaque,
+            | Material::Dielectric(_)
+            | Material::Varying(_) => ShadowCrossing::Opaque,
         }
     }
 
@@ -411,7 +486,22 @@ impl Material {
             }),
             // Shaded as its first modifier's material, set by `from_scene`.
             ModifierKind::Antimatter(_) => Material::Invisible,
-            ModifierKind::Brightfunc(_) => unreachable!("patterns are not materials"),
+            ModifierKind::Brightfunc(_)
+            | ModifierKind::Colorfunc(_)
+            | ModifierKind::Brightdata(_)
+            | ModifierKind::Colordata(_)
+            | ModifierKind::Texfunc(_)
+            | ModifierKind::Mixfunc(_)
+            | ModifierKind::BrtdFunc(_) => {
+                return Err(EngineError::Unsupported {
+                    at: m.origin.clone(),
+                    what: format!(
+                        "internal: {} `{}` is built by engine::function",
+                        m.kind.type_name(),
+                        m.name
+                    ),
+                })
+            }
         })
     }
 }

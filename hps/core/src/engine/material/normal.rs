@@ -3,7 +3,7 @@
 //! with RADIANCE's Fresnel estimate for smooth surfaces, and for `trans` diffuse and specular
 //! transmission.
 
-use super::scattering::{bright, fresne, DiffuseLobe, Scatter};
+use super::scattering::{choose_component, fresne, DiffuseLobe, Scatter};
 use crate::engine::ray::FTINY;
 use crate::engine::rng::Rng;
 use crate::engine::sampling::{basis, cosine_direction};
@@ -85,6 +85,9 @@ pub struct NormalShading {
     rdir: DVec3,
     /// Surface normal turned to face the ray.
     pnorm: DVec3,
+    /// The normal the diffuse (ambient) hemisphere is sampled around: `pnorm`, unless a
+    /// texture perturbed it, when RADIANCE's `samp_hemi` (-aa 0) keeps the surface's own.
+    ambient_normal: DVec3,
     /// cos of incidence, clamped at .001 as normal.c does for `dirnorm`.
     pdot: f64,
     alpha2: f64,
@@ -146,6 +149,7 @@ impl NormalMaterial {
             scolor,
             rdir,
             pnorm,
+            ambient_normal: pnorm,
             pdot: rod.max(0.001),
             alpha2,
             pure,
@@ -160,6 +164,17 @@ impl NormalMaterial {
 }
 
 impl NormalShading {
+    /// The same shading with its diffuse parts sampled around the surface's own `normal`
+    /// (turned to the side of `pnorm`): what a texture leaves to the ambient calculation.
+    pub fn with_ambient_normal(mut self, normal: DVec3) -> Self {
+        self.ambient_normal = if normal.dot(self.pnorm) < 0.0 {
+            -normal
+        } else {
+            normal
+        };
+        self
+    }
+
     /// The Lambertian parts of this shading as [`NormalShading::sample`] samples them: the
     /// BRDF (front, the side of the ray) and BTDF (back) values ρ/π per RGB channel and the
     /// probability that `sample` picks each, so next-event estimation at this vertex can be
@@ -169,38 +184,27 @@ impl NormalShading {
         if !allow_diffuse {
             return None;
         }
-        let spec_r = if self.rspec > FTINY {
-            bright(self.scolor).max(0.0)
-        } else {
-            0.0
+        DiffuseLobe::of_components(self.ambient_normal, &self.components(true))
+    }
+
+    /// m_normal's four components, in [`choose_component`]'s order: specular reflection,
+    /// specular transmission, diffuse reflection, diffuse transmission (the last two only
+    /// with `allow_diffuse`), each zero below `FTINY`.
+    fn components(&self, allow_diffuse: bool) -> [DVec3; 4] {
+        let above = |x: f64, c: DVec3| if x > FTINY { c } else { DVec3::ZERO };
+        let diffuse = |x: f64| {
+            if allow_diffuse {
+                above(x, self.mcolor * x)
+            } else {
+                DVec3::ZERO
+            }
         };
-        let spec_t = if self.tspec > FTINY {
-            bright(self.mcolor * self.tspec).max(0.0)
-        } else {
-            0.0
-        };
-        let diff_r = if self.rdiff > FTINY {
-            self.mcolor * self.rdiff
-        } else {
-            DVec3::ZERO
-        };
-        let diff_t = if self.tdiff > FTINY {
-            self.mcolor * self.tdiff
-        } else {
-            DVec3::ZERO
-        };
-        let (br, bt) = (bright(diff_r).max(0.0), bright(diff_t).max(0.0));
-        let total = spec_r + spec_t + br + bt;
-        if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) || br + bt <= 0.0 {
-            return None;
-        }
-        Some(DiffuseLobe {
-            normal: self.pnorm,
-            front_rgb: if br > 0.0 { diff_r / PI } else { DVec3::ZERO },
-            back_rgb: if bt > 0.0 { diff_t / PI } else { DVec3::ZERO },
-            front_probability: br / total,
-            back_probability: bt / total,
-        })
+        [
+            above(self.rspec, self.scolor),
+            above(self.tspec, self.mcolor * self.tspec),
+            diffuse(self.rdiff),
+            diffuse(self.tdiff),
+        ]
     }
 
     /// What a shadow ray keeps going through this surface: only smooth `trans` lets source
@@ -270,51 +274,9 @@ impl NormalShading {
     /// estimate is unbiased. Diffuse components take part only if `allow_diffuse` (ambient
     /// bounces left); past `-ab` RADIANCE gives them the ambient value, here 0 as `-av 0`.
     pub fn sample(&self, allow_diffuse: bool, rng: &mut Rng) -> Scatter {
-        let spec_r = if self.rspec > FTINY {
-            self.scolor
-        } else {
-            DVec3::ZERO
-        };
-        let spec_t = if self.tspec > FTINY {
-            self.mcolor * self.tspec
-        } else {
-            DVec3::ZERO
-        };
-        let (diff_r, diff_t) = if allow_diffuse {
-            (
-                if self.rdiff > FTINY {
-                    self.mcolor * self.rdiff
-                } else {
-                    DVec3::ZERO
-                },
-                if self.tdiff > FTINY {
-                    self.mcolor * self.tdiff
-                } else {
-                    DVec3::ZERO
-                },
-            )
-        } else {
-            (DVec3::ZERO, DVec3::ZERO)
-        };
-        let weights = [spec_r, spec_t, diff_r, diff_t];
-        let b = weights.map(|w| bright(w).max(0.0));
-        let total: f64 = b.iter().sum();
-        if total <= 0.0 || total.is_nan() {
+        let Some((pick, weight)) = choose_component(&self.components(allow_diffuse), rng) else {
             return Scatter::Absorbed;
-        }
-        let mut x = rng.uniform() * total;
-        let mut pick = 3;
-        for (i, bi) in b.iter().enumerate() {
-            if x < *bi {
-                pick = i;
-                break;
-            }
-            x -= bi;
-        }
-        while b[pick] == 0.0 {
-            pick -= 1; // rounding put x past the last non-zero component
-        }
-        let weight = weights[pick] * (total / b[pick]);
+        };
         let direction = match pick {
             0 => {
                 if self.pure {
@@ -332,8 +294,8 @@ impl NormalShading {
                     self.gaussian_transmission(rng)
                 }
             }
-            2 => Some(cosine_direction(self.pnorm, rng)),
-            _ => Some(cosine_direction(-self.pnorm, rng)),
+            2 => Some(cosine_direction(self.ambient_normal, rng)),
+            _ => Some(cosine_direction(-self.ambient_normal, rng)),
         };
         match (direction, pick) {
             (None, _) => Scatter::Absorbed,

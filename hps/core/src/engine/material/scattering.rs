@@ -111,6 +111,63 @@ impl DiffuseLobe {
     }
 }
 
+impl DiffuseLobe {
+    /// The Lambertian parts of a surface that samples its four `components` (specular
+    /// reflection, specular transmission, diffuse reflection, diffuse transmission, zero where
+    /// absent) with [`choose_component`]: ρ/π on each side of `normal` and the probability
+    /// of each diffuse pick. None when neither diffuse component would be picked.
+    pub fn of_components(normal: DVec3, components: &[DVec3; 4]) -> Option<DiffuseLobe> {
+        let b = components.map(|c| bright(c).max(0.0));
+        let total: f64 = b.iter().sum();
+        let (br, bt) = (b[2], b[3]);
+        if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) || br + bt <= 0.0 {
+            return None;
+        }
+        Some(DiffuseLobe {
+            normal,
+            front_rgb: if br > 0.0 {
+                components[2] / PI
+            } else {
+                DVec3::ZERO
+            },
+            back_rgb: if bt > 0.0 {
+                components[3] / PI
+            } else {
+                DVec3::ZERO
+            },
+            front_probability: br / total,
+            back_probability: bt / total,
+        })
+    }
+}
+
+/// Picks one of `components` (coefficients per RGB channel) with probability proportional to
+/// its brightness, from one uniform number: its index and its weight, the coefficient over
+/// the probability, so the estimate stays unbiased. None if all are black.
+pub fn choose_component(
+    components: &[DVec3; 4],
+    rng: &mut crate::engine::rng::Rng,
+) -> Option<(usize, DVec3)> {
+    let b = components.map(|w| bright(w).max(0.0));
+    let total: f64 = b.iter().sum();
+    if total <= 0.0 || total.is_nan() {
+        return None;
+    }
+    let mut x = rng.uniform() * total;
+    let mut pick = 3;
+    for (i, bi) in b.iter().enumerate() {
+        if x < *bi {
+            pick = i;
+            break;
+        }
+        x -= bi;
+    }
+    while b[pick] == 0.0 {
+        pick -= 1; // rounding put x past the last non-zero component
+    }
+    Some((pick, components[pick] * (total / b[pick])))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

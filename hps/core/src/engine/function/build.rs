@@ -1,0 +1,191 @@
+//! The material of a modifier chain that holds function modifiers: patterns and textures
+//! compiled as [`Modulation`]s over a plain material, a `BRTDfunc` or a `mixfunc`.
+
+use super::loader::FunctionLoader;
+use super::varying::{Modulation, VaryingBase, VaryingMaterial};
+use crate::engine::error::EngineError;
+use crate::engine::material::{BrtdMaterial, Material};
+use crate::engine::sky::SkyFunction;
+use crate::scene::{DataPattern, Modifier, ModifierKind, ModifierRef, Scene, Surface};
+use std::sync::Arc;
+
+/// BRTDfunc's expressions compiled as such (the specular colours); the next three name
+/// functions of the source direction (`m_brdf.c`: `getfunc(m, 9, 0x3f, 0)`).
+const BRTD_EXPRESSIONS: usize = 6;
+
+/// The material of the chain starting at `start` for `surface`.
+pub fn material_of(
+    scene: &Scene,
+    start: ModifierRef,
+    surface: &Surface,
+    loader: &mut FunctionLoader,
+) -> Result<Material, EngineError> {
+    let chain = chain(scene, start);
+    let material = chain.iter().copied().find(|m| m.kind.is_material());
+    let emitter =
+        material.is_some_and(|m| matches!(m.kind, ModifierKind::Light(_) | ModifierKind::Glow(_)));
+    let functions = chain.iter().any(|m| is_function(&m.kind, emitter));
+    if !functions {
+        let (material, patterns) = resolve(scene, start)?;
+        return Material::from_scene(scene, surface, material, patterns);
+    }
+    let Some(material) = material else {
+        return Ok(Material::Invisible); // void: patterns on nothing
+    };
+    let mut modulations = Vec::new();
+    for m in chain.iter().filter(|m| !m.kind.is_material()) {
+        modulations.push(modulation(m, loader)?);
+    }
+    let base = base(scene, material, surface, loader)?;
+    let refuse = |why: &str| {
+        Err(EngineError::Unsupported {
+            at: material.origin.clone(),
+            what: format!(
+                "{} `{}` under a pattern or texture: {why}",
+                material.kind.type_name(),
+                material.name
+            ),
+        })
+    };
+    match &base {
+        VaryingBase::Plain(Material::Normal(_)) | VaryingBase::Brtd(_) => {}
+        _ if modulations.is_empty() => {}
+        VaryingBase::Mix { .. } => return refuse("patterns above a mixfunc are not traced yet"),
+        VaryingBase::Plain(_) => {
+            return refuse("patterns are traced on plastic, metal, trans and BRTDfunc only")
+        }
+    }
+    Ok(Material::Varying(Arc::new(VaryingMaterial {
+        modulations,
+        base,
+    })))
+}
+
+/// The modifiers from `start` down to `void`.
+fn chain(scene: &Scene, start: ModifierRef) -> Vec<&Modifier> {
+    let mut out = Vec::new();
+    let mut next = start;
+    while let ModifierRef::Defined(id) = next {
+        let Some(m) = scene.modifier(id) else { break };
+        out.push(m);
+        next = m.modifier;
+    }
+    out
+}
+
+/// Whether `kind` makes the chain vary from hit to hit (a `brightfunc` on a `light` or
+/// `glow` is a sky function, traced by `engine::sky`).
+fn is_function(kind: &ModifierKind, emitter: bool) -> bool {
+    match kind {
+        ModifierKind::Brightfunc(_) => !emitter,
+        ModifierKind::Colorfunc(_)
+        | ModifierKind::Brightdata(_)
+        | ModifierKind::Colordata(_)
+        | ModifierKind::Texfunc(_)
+        | ModifierKind::Mixfunc(_)
+        | ModifierKind::BrtdFunc(_) => true,
+        _ => false,
+    }
+}
+
+fn modulation(m: &Modifier, loader: &mut FunctionLoader) -> Result<Modulation, EngineError> {
+    Ok(match &m.kind {
+        ModifierKind::Brightfunc(b) => Modulation::Pattern(loader.compile(m, &b.function, 1)?),
+        ModifierKind::Colorfunc(f) => Modulation::Pattern(loader.compile(m, f, 3)?),
+        ModifierKind::Texfunc(f) => Modulation::Texture(loader.compile(m, f, 3)?),
+        ModifierKind::Brightdata(d) | ModifierKind::Colordata(d) => data_modulation(m, d, loader)?,
+        other => {
+            return Err(EngineError::Unsupported {
+                at: m.origin.clone(),
+                what: format!("{} `{}` is not a pattern", other.type_name(), m.name),
+            })
+        }
+    })
+}
+
+/// A data pattern: its coordinates compiled, its arrays read, their dimensions checked
+/// against the coordinates, its functions checked to exist.
+fn data_modulation(
+    m: &Modifier,
+    d: &DataPattern,
+    loader: &mut FunctionLoader,
+) -> Result<Modulation, EngineError> {
+    let coordinates = loader.compile(m, &d.function, d.function.expressions.len())?;
+    let fail = |what: String| EngineError::Unsupported {
+        at: m.origin.clone(),
+        what: format!("{} `{}`: {what}", m.kind.type_name(), m.name),
+    };
+    let mut arrays = Vec::new();
+    for name in &d.data_files {
+        let array = loader.data(m, name, &d.function.scene_dir)?;
+        if array.dimension_count() != d.function.expressions.len() {
+            return Err(fail(format!(
+                "data file {name} has {} dimension(s) but {} coordinate expression(s) are given",
+                array.dimension_count(),
+                d.function.expressions.len()
+            )));
+        }
+        arrays.push(array);
+    }
+    if let Some(name) = d
+        .functions
+        .iter()
+        .find(|f| coordinates.parameter_count(f).is_none())
+    {
+        return Err(fail(format!(
+            "function `{name}` is not defined in {} nor in the library",
+            d.function.cal_file
+        )));
+    }
+    Ok(Modulation::Data {
+        coordinates,
+        functions: d.functions.clone(),
+        arrays,
+    })
+}
+
+/// The material under the modulations.
+fn base(
+    scene: &Scene,
+    m: &Modifier,
+    surface: &Surface,
+    loader: &mut FunctionLoader,
+) -> Result<VaryingBase, EngineError> {
+    Ok(match &m.kind {
+        ModifierKind::BrtdFunc(b) => VaryingBase::Brtd(Box::new(BrtdMaterial {
+            arguments: b.clone(),
+            function: loader.compile(m, &b.function, BRTD_EXPRESSIONS)?,
+        })),
+        ModifierKind::Mixfunc(mix) => VaryingBase::Mix {
+            coefficient: loader.compile(m, &mix.function, 1)?,
+            foreground: Box::new(material_of(scene, mix.foreground, surface, loader)?),
+            background: Box::new(material_of(scene, mix.background, surface, loader)?),
+        },
+        // Its patterns are the chain's modulations.
+        _ => VaryingBase::Plain(Material::from_modifier(surface, Some(m), Vec::new())?),
+    })
+}
+
+/// Walks a surface's modifier chain from `start`: its material (None for void) and every
+/// sky pattern on the chain, above and below the material (RADIANCE applies both:
+/// `rayshade` and `raytexture`).
+pub fn resolve(
+    scene: &Scene,
+    start: ModifierRef,
+) -> Result<(Option<&Modifier>, Vec<SkyFunction>), EngineError> {
+    let mut patterns = Vec::new();
+    let mut material = None;
+    let mut next = start;
+    while let ModifierRef::Defined(id) = next {
+        let Some(m) = scene.modifier(id) else { break };
+        match &m.kind {
+            ModifierKind::Brightfunc(b) => {
+                patterns.push(SkyFunction::from_brightfunc(b, &m.origin)?)
+            }
+            _ if material.is_none() => material = Some(m),
+            _ => {}
+        }
+        next = m.modifier;
+    }
+    Ok((material, patterns))
+}
