@@ -14,12 +14,7 @@ use skylux_bitstream::formal;
 use skylux_bitstream::xcheck;
 use std::path::PathBuf;
 
-/// Capacity of the 5CSEMA5 (hardware-facts.md §2: 32,070 ALMs, 397 M10K, 87 DSP blocks).
-const DEVICE_ALMS: u64 = 32_070;
-const DEVICE_M10K: u64 = 397;
-const DEVICE_DSP: u64 = 87;
-/// The whole core's ALM budget, in percent of the device.
-const CORE_BUDGET_PERCENT: u64 = 60;
+use skylux_bitstream::xcheck::DEVICE_ALMS;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -67,15 +62,7 @@ fn check() -> Result<(), String> {
         xcheck::structural_check(block.name, &v).map_err(fail)?;
         let r = xcheck::synthesize(block.name, &v).map_err(fail)?;
         let alms = r.alm_estimate();
-        if alms > DEVICE_ALMS || r.m10k > DEVICE_M10K || r.dsp > DEVICE_DSP {
-            return Err(format!("{} does not fit the 5CSEMA5: {r:?}", block.name));
-        }
-        // The whole core must leave room for timing closure and later blocks (issue 10).
-        if block.name == "skylux_core" && alms * 100 > CORE_BUDGET_PERCENT * DEVICE_ALMS {
-            return Err(format!(
-                "skylux_core uses {alms} ALMs, over its budget of {CORE_BUDGET_PERCENT} % of {DEVICE_ALMS}"
-            ));
-        }
+        r.check_fit(block.name)?;
         println!(
             "| {} | {} | {} | {} | {} | {} | {} | {:.1} % |",
             block.name,

@@ -35,6 +35,9 @@ fn every_block_lints_and_has_no_latches_or_loops() {
             "{}: synthesis produced no registers",
             block.name
         );
+        // What `skylux-bitstream check` also asserts: the device and the core's budget.
+        r.check_fit(block.name)
+            .unwrap_or_else(|e| panic!("{}: {e}", block.name));
     }
 }
 

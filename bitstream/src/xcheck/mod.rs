@@ -11,7 +11,7 @@ mod yosys;
 
 pub use replay::{replay, Mismatch, ReplayReport};
 pub use tools::{require, Tool, ToolError};
-pub use yosys::{structural_check, synthesize, Resources};
+pub use yosys::{structural_check, synthesize, Resources, DEVICE_ALMS};
 
 /// Runs `verilator --lint-only` on a design whose top module is `top`.
 pub fn lint(name: &str, verilog: &str) -> Result<(), ToolError> {

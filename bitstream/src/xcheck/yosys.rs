@@ -19,7 +19,32 @@ pub struct Resources {
     pub mlab: u64,
 }
 
+/// Capacity of the 5CSEMA5 (hardware-facts.md §2: 32,070 ALMs, 397 M10K, 87 DSP blocks).
+pub const DEVICE_ALMS: u64 = 32_070;
+pub const DEVICE_M10K: u64 = 397;
+pub const DEVICE_DSP: u64 = 87;
+/// The whole core's ALM budget, in percent of the device: room for timing closure and later
+/// blocks (issue 10).
+pub const CORE_BUDGET_PERCENT: u64 = 60;
+/// The block the budget applies to.
+pub const CORE_BLOCK: &str = "skylux_core";
+
 impl Resources {
+    /// Whether block `name` fits the 5CSEMA5, and the whole core its budget: the error says
+    /// which limit it passes.
+    pub fn check_fit(&self, name: &str) -> Result<(), String> {
+        let alms = self.alm_estimate();
+        if alms > DEVICE_ALMS || self.m10k > DEVICE_M10K || self.dsp > DEVICE_DSP {
+            return Err(format!("{name} does not fit the 5CSEMA5: {self:?}"));
+        }
+        if name == CORE_BLOCK && alms * 100 > CORE_BUDGET_PERCENT * DEVICE_ALMS {
+            return Err(format!(
+                "{name} uses {alms} ALMs, over its budget of {CORE_BUDGET_PERCENT} % of {DEVICE_ALMS}"
+            ));
+        }
+        Ok(())
+    }
+
     /// ALMs needed, estimated: yosys 0.23 does not pack ALMs, so this takes the larger of
     /// the LUT bound (two ALUTs per ALM, an arithmetic ALUT pair per ALM) and the register
     /// bound (four flip-flops per ALM). Quartus packs less tightly; treat it as a floor.

@@ -129,11 +129,14 @@ impl World {
             if let Shape::Polygon(p) = &surface.shape {
                 polygon_vertices.push((primitives.len() as u32, p.vertices_m.clone()));
             }
-            let (material, _) = resolve(scene, surface.modifier)?;
-            let subtracted = material.and_then(|m| match &m.kind {
-                ModifierKind::Antimatter(a) => Some((surface.modifier, a.subtracted.as_slice())),
-                _ => None,
-            });
+            let subtracted = scene
+                .material(surface.modifier)
+                .and_then(|m| match &m.kind {
+                    ModifierKind::Antimatter(a) => {
+                        Some((surface.modifier, a.subtracted.as_slice()))
+                    }
+                    _ => None,
+                });
             antimatter.push(surface.modifier, subtracted);
             names.push(surface.name.clone());
             primitives.push(match &surface.shape {
