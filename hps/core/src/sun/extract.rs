@@ -120,25 +120,16 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
-/// Finds and measures the sun in `map`.
-pub fn extract_sun(
+/// The 8-connected components of sun candidates: groups over-range, or at or above the
+/// threshold (scaled for groups larger than the disk).
+fn bright_components(
     map: &LuminanceMap,
     geometry: &GroupGeometry,
     search: &SunSearch,
-) -> Result<ExtractedSun, NoSun> {
+) -> Vec<Vec<usize>> {
     let (w, h) = (map.width, map.height);
     let n = w * h;
-    if n > 0 && map.flags.iter().all(|f| *f == MapFlag::OverRange) {
-        return Err(NoSun::AllSaturated);
-    }
     let seen = |i: usize| geometry.direction[i].is_finite();
-    if let Some(p) = search.predicted_direction {
-        // Outside the field of view: no imaged group within the search radius of the prediction.
-        let cos_limit = search.max_offset_deg.to_radians().cos();
-        if !(0..n).any(|i| seen(i) && geometry.direction[i].as_dvec3().dot(p) >= cos_limit) {
-            return Err(NoSun::OutsideFieldOfView);
-        }
-    }
     // A group larger than the disk that integrates its footprint (a binned readout, or the
     // simulator's integrated footprint) holds a whole disk's flux diluted over its own solid
     // angle: its threshold is the luminance a disk at the threshold gives over the group.
@@ -182,6 +173,29 @@ pub fn extract_sun(
         }
         components.push(members);
     }
+    components
+}
+
+/// Finds and measures the sun in `map`.
+pub fn extract_sun(
+    map: &LuminanceMap,
+    geometry: &GroupGeometry,
+    search: &SunSearch,
+) -> Result<ExtractedSun, NoSun> {
+    let (w, h) = (map.width, map.height);
+    let n = w * h;
+    if n > 0 && map.flags.iter().all(|f| *f == MapFlag::OverRange) {
+        return Err(NoSun::AllSaturated);
+    }
+    let seen = |i: usize| geometry.direction[i].is_finite();
+    if let Some(p) = search.predicted_direction {
+        // Outside the field of view: no imaged group within the search radius of the prediction.
+        let cos_limit = search.max_offset_deg.to_radians().cos();
+        if !(0..n).any(|i| seen(i) && geometry.direction[i].as_dvec3().dot(p) >= cos_limit) {
+            return Err(NoSun::OutsideFieldOfView);
+        }
+    }
+    let components = bright_components(map, geometry, search);
     if components.is_empty() {
         return Err(NoSun::BelowThreshold {
             threshold_cd_m2: search.threshold_cd_m2,
