@@ -23,22 +23,36 @@ fn every_block_lints_and_has_no_latches_or_loops() {
     if !xcheck::require(ALL) {
         return;
     }
-    for block in BLOCKS {
-        let v = (block.verilog)();
-        xcheck::lint(block.name, &v).unwrap_or_else(|e| panic!("{}: {e}", block.name));
-        xcheck::structural_check(block.name, &v).unwrap_or_else(|e| panic!("{}: {e}", block.name));
-        let r =
-            xcheck::synthesize(block.name, &v).unwrap_or_else(|e| panic!("{}: {e}", block.name));
-        println!("{}: {r:?}, ~{} ALMs", block.name, r.alm_estimate());
-        assert!(
-            r.flip_flops > 0,
-            "{}: synthesis produced no registers",
-            block.name
-        );
-        // What `skylux-bitstream check` also asserts: the device and the core's budget.
-        r.check_fit(block.name)
-            .unwrap_or_else(|e| panic!("{}: {e}", block.name));
-    }
+    // Two blocks at a time, the largest first: the tools are single-threaded and the core's
+    // synthesis alone takes minutes.
+    let mut work: Vec<_> = BLOCKS.iter().map(|b| (b, (b.verilog)())).collect();
+    work.sort_by_key(|(_, v)| std::cmp::Reverse(v.len()));
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    std::thread::scope(|scope| {
+        for _ in 0..2 {
+            scope.spawn(|| loop {
+                let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                let Some((block, v)) = work.get(i) else { break };
+                check_block(block, v);
+            });
+        }
+    });
+}
+
+/// Lint, structure, synthesis and the device and core's budget of one exported block.
+fn check_block(block: &skylux_bitstream::blocks::ExportedBlock, v: &str) {
+    xcheck::lint(block.name, v).unwrap_or_else(|e| panic!("{}: {e}", block.name));
+    xcheck::structural_check(block.name, v).unwrap_or_else(|e| panic!("{}: {e}", block.name));
+    let r = xcheck::synthesize(block.name, v).unwrap_or_else(|e| panic!("{}: {e}", block.name));
+    println!("{}: {r:?}, ~{} ALMs", block.name, r.alm_estimate());
+    assert!(
+        r.flip_flops > 0,
+        "{}: synthesis produced no registers",
+        block.name
+    );
+    // What `skylux-bitstream check` also asserts: the device and the core's budget.
+    r.check_fit(block.name)
+        .unwrap_or_else(|e| panic!("{}: {e}", block.name));
 }
 
 /// Random register transfers (and fabric-side pulses) recorded from the rust-hdl simulation,

@@ -35,13 +35,8 @@ const REFERENCE_ROOM: &str = concat!(
 );
 /// rtrace estimates per sensor (each 4096 paths), for its mean and standard error.
 const RTRACE_SAMPLES: usize = 32;
-/// Paths per sensor; fewer under qemu-arm (about 20 times slower), where the acceptance band
-/// widens with the larger standard error.
-const OUR_SAMPLES: u32 = if cfg!(target_arch = "arm") {
-    16_384
-} else {
-    131_072
-};
+/// Our paths per sensor (an eighth under qemu-arm: `common::compare::our_samples_here`).
+const OUR_SAMPLES: u32 = 131_072;
 
 /// A room's RADIANCE text, built in the room's own frame (façade in the plane y = 0, the
 /// room at y > 0) and turned by `rotation_deg` about the vertical through the origin

@@ -17,12 +17,8 @@ use std::path::Path;
 
 /// rtrace estimates per sensor, each of `-ad 2048` paths (the test stays under 30 s).
 const RTRACE_SAMPLES: usize = 8;
-/// Our paths per sensor; fewer under qemu-arm, where the band widens with the error.
-const OUR_SAMPLES: u32 = if cfg!(target_arch = "arm") {
-    4_096
-} else {
-    16_384
-};
+/// Our paths per sensor (an eighth under qemu-arm: `common::compare::our_samples_here`).
+const OUR_SAMPLES: u32 = 16_384;
 
 /// [`RTRACE_PATH_TRACING`] with half its paths per estimate.
 fn rtrace_args() -> Vec<&'static str> {

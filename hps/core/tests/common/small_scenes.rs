@@ -15,13 +15,8 @@ pub const RTRACE_ARGS: &[&str] = &[
 ];
 /// Independent rtrace estimates per sensor.
 pub const RTRACE_SAMPLES: usize = 16;
-/// Our paths per sensor; fewer under qemu-arm (about ten times slower), where the band widens
-/// with the larger standard error.
-pub const OUR_SAMPLES: u32 = if cfg!(target_arch = "arm") {
-    8_192
-} else {
-    65_536
-};
+/// Our paths per sensor (an eighth under qemu-arm: [`super::compare::our_samples_here`]).
+pub const OUR_SAMPLES: u32 = 65_536;
 
 /// A uniform sky and ground (`glow`, no pattern) and a sun (`light` source) from the
 /// south-east, 45° high: what the outdoor scenes are lit by.
