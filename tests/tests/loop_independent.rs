@@ -7,7 +7,7 @@
 //!
 //! All four pass since the acceptance became the projection test over every hold-out reading
 //! (`scoring::judge_projection`), the clouds aperiodic, the model's bounces converged and the
-//! pairs led by a nuisance (docs/loop.md). They take about 6 minutes of two cores.
+//! pairs led by a nuisance (docs/loop.md). They take about 3.5 minutes of two cores.
 
 mod common;
 

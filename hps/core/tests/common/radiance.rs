@@ -251,17 +251,23 @@ pub const FALSE_ALARM_PER_SET: f64 = 1e-4;
 /// Complementary error function, Chebyshev fit with fractional error below 1.2e-7 everywhere
 /// (Press et al., Numerical Recipes in C, 2nd ed., §6.2, `erfcc`).
 fn erfc(x: f64) -> f64 {
+    // The fit's coefficients, lowest power of t first (Horner's rule from the highest).
+    const C: [f64; 10] = [
+        -1.265_512_23,
+        1.000_023_68,
+        0.374_091_96,
+        0.096_784_18,
+        -0.186_288_06,
+        0.278_868_07,
+        -1.135_203_98,
+        1.488_515_87,
+        -0.822_152_23,
+        0.170_872_77,
+    ];
     let z = x.abs();
     let t = 1.0 / (1.0 + 0.5 * z);
-    let poly = -z * z - 1.265_512_23
-        + t * (1.000_023_68
-            + t * (0.374_091_96
-                + t * (0.096_784_18
-                    + t * (-0.186_288_06
-                        + t * (0.278_868_07
-                            + t * (-1.135_203_98
-                                + t * (1.488_515_87 + t * (-0.822_152_23 + t * 0.170_872_77))))))));
-    let r = t * poly.exp();
+    let poly = C.iter().rev().fold(0.0, |acc, c| acc * t + c);
+    let r = t * (-z * z + poly).exp();
     if x >= 0.0 {
         r
     } else {
