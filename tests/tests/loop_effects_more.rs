@@ -35,6 +35,7 @@ fn partly_floor() -> f64 {
 /// `--sky partly`: the light changes within minutes (the logged series shows it), and the
 /// loop runs on it without adding an effect that is not there.
 #[test]
+#[ignore = "long: the loop on a further campaign; CI runs its short form, scripts/long-tests all"]
 fn partly_cloudy_sky_changes_within_minutes_and_the_loop_runs_on_it() {
     let c = &partly_clean().1;
     // Some reading changes by more than 30 % from one 30 s log to the next: the sun comes
@@ -78,6 +79,7 @@ fn partly_cloudy_sky_changes_within_minutes_and_the_loop_runs_on_it() {
 /// capture, so only the cloud edges nearest the fit captures (a few to some 90 s away)
 /// determine the offset.
 #[test]
+#[ignore = "long: the loop on a further campaign; CI runs its short form, scripts/long-tests all"]
 fn clock_offset() {
     let dir = tempfile::tempdir().unwrap();
     let c = simulate_spec(
@@ -102,6 +104,7 @@ fn clock_offset() {
 /// fitted overhead and finds it within 0.15 µs. (With several µs the sun saturates even the
 /// shortest frame and is not extracted at all: that case is not in the library yet.)
 #[test]
+#[ignore = "long: the loop on a further campaign; CI runs its short form, scripts/long-tests all"]
 fn shutter_overhead() {
     let dir = tempfile::tempdir().unwrap();
     let r = run(&simulate(dir.path(), &["shutter_overhead=0.5"], 91), false).report;

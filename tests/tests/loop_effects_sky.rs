@@ -72,6 +72,7 @@ fn true_slope() -> f64 {
 /// 1), names the effect and fits its slope within 20 % of the truth (it lands high: +8 % and
 /// +17 % with two engine versions' noise, the clear day's three fit captures pinning it).
 #[test]
+#[ignore = "long: the loop on a further campaign; CI runs its short form, scripts/long-tests all"]
 fn spectral_mismatch() {
     let truth = true_slope();
     println!("true slope {truth:.4} per unit of blue / red");
@@ -137,6 +138,7 @@ fn angular() -> &'static (tempfile::TempDir, Campaign, Vec<TruthRecord>, LoopOut
 }
 
 #[test]
+#[ignore = "long: the loop on a further campaign; CI runs its short form, scripts/long-tests all"]
 fn glazing_angular() {
     let r = &angular().3.report;
     println!("{:#?}", r.effects);
@@ -167,6 +169,7 @@ fn glazing_angular() {
 /// the incidence is acos(−s_y) of the simulated sun s (NaN below the horizon or from the
 /// north), and the sensors at y = 1, 2, 3, 3.9, 4.7 m (`sensors.pts`) are that far from it.
 #[test]
+#[ignore = "long: the loop on a further campaign; CI runs its short form, scripts/long-tests all"]
 fn incidence_and_facade_distance_variables() {
     let (_, _, truth, outcome) = angular();
     let depth = [
@@ -242,6 +245,7 @@ const SEED: u64 = 11;
 /// takes from the extrapolated sky beyond the field keeps part of the fall-off), so the
 /// tolerance is 0.06.
 #[test]
+#[ignore = "long: the loop on a further campaign; CI runs its short form, scripts/long-tests all"]
 fn vignetting() {
     let dir = tempfile::tempdir().unwrap();
     let r = run(&simulate(dir.path(), &["vignetting=0.4"], SEED), false).report;
@@ -265,6 +269,7 @@ fn vignetting() {
 /// the hold-out error is 3.7 %. The loop reads the field the maps show within 1.5° of the
 /// baffle's, and fills the sun beyond it from the pyranometer.
 #[test]
+#[ignore = "long: the loop on a further campaign; CI runs its short form, scripts/long-tests all"]
 fn sky_outside_fov() {
     // Hourly captures: the sun leaves the clipped field at several of them, in fit and
     // hold-out blocks alike (with the harness's two-hourly captures the gain sat at the

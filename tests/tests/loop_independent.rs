@@ -52,6 +52,7 @@ fn parameter(r: &Report, effect: &str, name: &str) -> f64 {
 }
 
 #[test]
+#[ignore = "long: the loop on a further campaign; CI runs its short form, scripts/long-tests all"]
 fn a_seven_minute_logger_clock_offset_is_fitted_within_30_s() {
     let (_dir, campaign) = world(&[("clock_offset", 420.0)], true);
     let r = run(&campaign, false).report;
@@ -70,6 +71,7 @@ fn a_seven_minute_logger_clock_offset_is_fitted_within_30_s() {
 }
 
 #[test]
+#[ignore = "long: the loop on a further campaign; CI runs its short form, scripts/long-tests all"]
 fn a_clock_offset_with_dirty_glazing_are_both_found() {
     let (_dir, campaign) = world(
         &[("clock_offset", 420.0), ("glazing_transmittance", 0.85)],
@@ -92,6 +94,7 @@ fn a_clock_offset_with_dirty_glazing_are_both_found() {
 /// enough to stay valid, it reads (1 + 9) / 1 = 10 times the pyranometer's beam: the overhead,
 /// with no lux-meter involved.
 #[test]
+#[ignore = "long: the loop on a further campaign; CI runs its short form, scripts/long-tests all"]
 fn a_9_us_shutter_overhead_is_named_as_such_and_not_as_vignetting() {
     let (_dir, campaign) = world(&[("shutter_overhead", 9.0)], false);
     let r = run(&campaign, false).report;
