@@ -64,6 +64,9 @@ struct Latest<'a> {
     illuminance: &'a [crate::cycle::SensorLux],
     #[serde(skip_serializing_if = "Option::is_none")]
     monte_carlo: Option<&'a Vec<crate::cycle::SensorLux>>,
+    /// Glare per occupant view: `ev_lux`, `dgp`, `dgps`, `method` and their companions.
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    views: &'a [crate::views::ViewGlare],
     outdoor_horizontal_lux: f64,
 }
 
@@ -96,6 +99,7 @@ pub fn respond(method: &str, url: &str, state: &ApiState) -> Response {
                     sun: &r.sun,
                     illuminance: &r.illuminance,
                     monte_carlo: r.monte_carlo.as_ref(),
+                    views: &r.views,
                     outdoor_horizontal_lux: r.outdoor_horizontal_lux,
                 })
                 .unwrap_or_default(),
@@ -179,6 +183,7 @@ fn metrics(s: &ApiState) -> String {
                 ("terms", d.terms_ms),
                 ("illuminance", d.illuminance_ms),
                 ("monte_carlo", d.monte_carlo_ms),
+                ("views", d.views_ms),
                 ("output", s.last_output_ms),
                 ("total", d.total_ms),
             ]

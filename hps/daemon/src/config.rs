@@ -10,6 +10,9 @@ use skylux_regmap::{LW_BRIDGE_PHYS_BASE, LW_BRIDGE_SPAN_BYTES};
 use std::net::SocketAddr;
 use std::path::{Path, PathBuf};
 
+mod views;
+pub use views::{GlareConfig, ViewConfig};
+
 /// The API address when the config names none: loopback only (the specification: "bound to
 /// 127.0.0.1 by default"); port 8740 is a project choice.
 pub const DEFAULT_API_ADDRESS: &str = "127.0.0.1:8740";
@@ -75,6 +78,11 @@ pub struct Config {
     pub sim: SimConfig,
     #[serde(default)]
     pub fabric: FabricConfig,
+    /// Occupants' eyes whose glare each cycle reports (`[[views]]`).
+    #[serde(default)]
+    pub views: Vec<ViewConfig>,
+    #[serde(default)]
+    pub glare: GlareConfig,
     /// The file this was read from (set by [`Config::parse`]).
     #[serde(skip)]
     pub path: PathBuf,
@@ -542,10 +550,23 @@ impl Config {
         self.sim.check().map_err(in_section("sim"))?;
         self.fabric.check().map_err(in_section("fabric"))?;
         self.sim.check_fault_source().map_err(in_section("sim"))?;
-        for f in &self.sim.faults {
-            f.check().map_err(in_section("sim.fault"))?;
+        for (i, f) in self.sim.faults.iter().enumerate() {
+            f.check()
+                .map_err(|e| self.table_error(text, "sim.fault", i, e))?;
         }
+        self.glare.check().map_err(in_section("glare"))?;
+        views::check_views(&self.views).map_err(|(i, e)| self.table_error(text, "views", i, e))?;
         Ok(())
+    }
+
+    /// An error in the `index`-th (0-based) `[[section]]` table, named `section[index].key`.
+    fn table_error(&self, text: &str, section: &str, index: usize, e: FieldError) -> ConfigError {
+        ConfigError::Invalid {
+            path: self.path.clone(),
+            line: line_in_table(text, section, index, e.key),
+            field: format!("{section}[{index}].{}", e.key),
+            message: e.message,
+        }
     }
 }
 
@@ -871,15 +892,38 @@ pub fn parse_offset(s: &str) -> Option<FixedOffset> {
 
 /// The 1-based line of `key` in `[section]` (0 if not found: a default was used).
 fn line_of(text: &str, section: &str, key: &str) -> usize {
-    let mut current = String::new();
+    line_in_table(text, section, 0, key)
+}
+
+/// The name of the table a header line opens (`[a.b]` or `[[a.b]]`), if it is one.
+fn header_name(line: &str) -> Option<&str> {
+    let h = line.strip_prefix('[')?.trim_start_matches('[');
+    Some(h[..h.find(']').unwrap_or(h.len())].trim())
+}
+
+/// The 1-based line of `key` in the `index`-th (0-based) table headed `[section]` or
+/// `[[section]]`; without the key (a default was used), that table's header line; 0 if there
+/// is no such table.
+fn line_in_table(text: &str, section: &str, index: usize, key: &str) -> usize {
+    let mut seen = 0usize;
+    let mut header = 0usize;
+    let mut inside = false;
     for (i, raw) in text.lines().enumerate() {
         let line = raw.trim();
-        if let Some(h) = line.strip_prefix('[') {
-            let h = h.trim_start_matches('[');
-            current = h[..h.find(']').unwrap_or(h.len())].trim().to_string();
+        if let Some(h) = header_name(line) {
+            if inside {
+                break; // the table ended without the key
+            }
+            if h == section {
+                if seen == index {
+                    inside = true;
+                    header = i + 1;
+                }
+                seen += 1;
+            }
             continue;
         }
-        if current == section {
+        if inside {
             if let Some(rest) = line.strip_prefix(key) {
                 if rest.trim_start().starts_with('=') {
                     return i + 1;
@@ -887,14 +931,7 @@ fn line_of(text: &str, section: &str, key: &str) -> usize {
             }
         }
     }
-    // A default: point at the section header if there is one.
-    text.lines()
-        .position(|l| {
-            let l = l.trim();
-            let h = l.trim_start_matches('[');
-            l.starts_with('[') && h[..h.find(']').unwrap_or(h.len())].trim() == section
-        })
-        .map_or(0, |i| i + 1)
+    header
 }
 
 #[cfg(test)]

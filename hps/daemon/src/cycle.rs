@@ -14,19 +14,22 @@
 
 use crate::config::Config;
 use crate::source::CaptureSet;
+use crate::views::{evaluate_views, RenderRates, ViewGlare, ViewRequest, ViewsOutcome};
 use chrono::{Datelike, Utc};
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 use skylux_hps::camera::{CameraModel, DeviceConfig};
-use skylux_hps::engine::sky::DistantEmitter;
 use skylux_hps::engine::{self, DaylightCoefficients, Settings, World};
 use skylux_hps::hdr::{merge, GroupGeometry, LuminanceMap};
-use skylux_hps::model::{capture_terms, predict, CaptureData, CaptureTerms, ModelState, Room};
-use skylux_hps::sky::SkyPatches;
-use skylux_hps::sun::{remove_sun, solar_position, Site, SOLAR_DISK_SR};
+use skylux_hps::model::{
+    capture_terms, install_measured_sky, predict, remove_measured_sky, CaptureData, CaptureTerms,
+    ModelState, Room,
+};
+use skylux_hps::picture::Picture;
+use skylux_hps::sun::{solar_position, Site};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{Arc, Mutex};
+use std::sync::Mutex;
 use std::time::Instant;
 
 /// Held while a daylight-coefficient matrix is written to the cache and renamed into place.
@@ -156,6 +159,9 @@ pub struct StageDurations {
     /// The model's prediction per sensor from the terms.
     pub illuminance_ms: f64,
     pub monte_carlo_ms: f64,
+    /// The occupant views: eye sensors, renders and their glare (`views.rs`).
+    #[serde(default)]
+    pub views_ms: f64,
     /// Capture to record, before the output (whose time is a metric: `/v1/metrics`).
     pub total_ms: f64,
 }
@@ -174,6 +180,9 @@ pub struct CycleRecord {
     /// Full Monte-Carlo illuminance under the measured sky, when `room.monte_carlo` is set.
     #[serde(default)]
     pub monte_carlo: Option<Vec<SensorLux>>,
+    /// Glare per declared occupant view (`[[views]]`), in their order.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub views: Vec<ViewGlare>,
     /// Outdoor horizontal illuminance the map implies, lux.
     pub outdoor_horizontal_lux: f64,
     /// Fraction of valid groups over-range.
@@ -198,6 +207,8 @@ pub struct CycleRecord {
 pub struct CycleProducts {
     pub record: CycleRecord,
     pub map: LuminanceMap,
+    /// The rendered view pictures: index into `record.views`, and the picture.
+    pub view_pictures: Vec<(usize, Picture)>,
 }
 
 /// Everything computed once at start.
@@ -209,6 +220,8 @@ pub struct Pipeline {
     state: ModelState,
     monte_carlo: Option<Settings>,
     geometry: Option<(GeometryKey, GroupGeometry)>,
+    /// What the views' renders took per path, for the next cycle's estimate.
+    render_rates: RenderRates,
     /// The cache file the daylight coefficients were read from.
     pub dc_path: PathBuf,
 }
@@ -366,6 +379,7 @@ impl Pipeline {
             state: ModelState::default(),
             monte_carlo,
             geometry: None,
+            render_rates: RenderRates::default(),
             dc_path,
         })
     }
@@ -376,12 +390,13 @@ impl Pipeline {
     }
 
     /// Turns a capture into a record (the fields `map`, `capture` and `sequence` are the
-    /// caller's).
+    /// caller's), with the glare of `views`.
     pub fn process(
         &mut self,
         set: &CaptureSet,
         capture_ms: f64,
         source: &str,
+        views: &ViewRequest,
     ) -> Result<CycleProducts, CycleError> {
         let started = Instant::now();
         // A flagged frame is not merged: a FIFO overflow or a short line means the frame's
@@ -464,6 +479,16 @@ impl Pipeline {
         };
         let monte_carlo_ms = ms(t);
 
+        let t = Instant::now();
+        let outcome = if views.views.is_empty() {
+            ViewsOutcome::default()
+        } else {
+            // The budget counts from the capture's start.
+            let deadline_ms = views.budget_ms - capture_ms;
+            self.views(&map, &terms, views, started, deadline_ms)?
+        };
+        let views_ms = ms(t);
+
         let sun = &terms.sun;
         let mut record = CycleRecord {
             time: set.time.to_rfc3339(),
@@ -495,6 +520,7 @@ impl Pipeline {
                 })
                 .collect(),
             monte_carlo,
+            views: outcome.glare,
             outdoor_horizontal_lux: terms.outdoor_horizontal_lux,
             saturated_fraction: terms.saturated_fraction,
             map: None,
@@ -506,6 +532,7 @@ impl Pipeline {
                 terms_ms,
                 illuminance_ms,
                 monte_carlo_ms,
+                views_ms,
                 total_ms: capture_ms + ms(started),
             },
             truth_outdoor_horizontal_lux: set.truth_outdoor_horizontal_lux,
@@ -517,7 +544,11 @@ impl Pipeline {
                 .into_iter()
                 .map(str::to_string)
                 .collect();
-        Ok(CycleProducts { record, map })
+        Ok(CycleProducts {
+            record,
+            map,
+            view_pictures: outcome.pictures,
+        })
     }
 
     /// Full Monte-Carlo through the engine: the room under the measured sky (the map's
@@ -533,48 +564,17 @@ impl Pipeline {
             Some((_, g)) => g,
             None => return Err(CycleError::Model("no geometry".into())),
         };
-        let without_sun = match &terms.sun {
-            Some(s) => remove_sun(map, s),
-            None => map.clone(),
-        };
-        let patches = SkyPatches::reinhart(self.room.dc.mf);
-        let sky = patches.aggregate(
-            &without_sun,
-            &geometry.direction,
-            &geometry.solid_angle_sr,
-            skylux_hps::model::terms::MIN_COVERAGE,
+        install_measured_sky(
+            &mut self.room.world,
+            map,
+            terms,
+            geometry,
+            self.room.dc.mf,
+            &self.state,
         );
-        let ground_cd_m2 =
-            self.state.ground_reflectance * terms.outdoor_horizontal_lux / std::f64::consts::PI;
-        let efficacy = engine::WHITE_EFFICACY_LM_PER_W;
-        let luminance = sky.luminance_cd_m2;
-        self.room
-            .world
-            .set_environment(Some(Arc::new(move |d: DVec3| {
-                let l = if d.z < 0.0 {
-                    ground_cd_m2
-                } else {
-                    patches
-                        .patch_of(d)
-                        .and_then(|p| luminance.get(p).copied())
-                        .filter(|l| l.is_finite())
-                        .unwrap_or(0.0)
-                };
-                DVec3::splat(l / efficacy)
-            })));
-        if let Some(s) = &terms.sun {
-            if s.direct_normal_illuminance_lux > 0.0 {
-                self.room.world.add_distant(DistantEmitter::sun(
-                    s.direction,
-                    SOLAR_DISK_SR,
-                    s.direct_normal_illuminance_lux / (efficacy * SOLAR_DISK_SR),
-                ));
-            }
-        }
         let result =
             engine::illuminance(&self.room.world, &self.room.sensors, settings, &|_, _| {});
-        self.room.world.clear_distant();
-        self.room.world.set_environment(None);
+        remove_measured_sky(&mut self.room.world);
         let result = result.map_err(|e| CycleError::Model(format!("Monte-Carlo: {e}")))?;
         Ok(result
             .into_iter()
@@ -584,6 +584,40 @@ impl Pipeline {
                 stderr_lux: Some(s.stderr_lux),
             })
             .collect())
+    }
+
+    /// The occupant views under the measured sky: see `views.rs`.
+    fn views(
+        &mut self,
+        map: &LuminanceMap,
+        terms: &CaptureTerms,
+        request: &ViewRequest,
+        started: Instant,
+        deadline_ms: f64,
+    ) -> Result<ViewsOutcome, CycleError> {
+        let geometry = match &self.geometry {
+            Some((_, g)) => g,
+            None => return Err(CycleError::Model("no geometry".into())),
+        };
+        install_measured_sky(
+            &mut self.room.world,
+            map,
+            terms,
+            geometry,
+            self.room.dc.mf,
+            &self.state,
+        );
+        let result = evaluate_views(
+            &self.room.world,
+            request.views,
+            request.glare,
+            self.room.settings,
+            &mut self.render_rates,
+            started,
+            deadline_ms,
+        );
+        remove_measured_sky(&mut self.room.world);
+        result.map_err(|e| CycleError::Model(format!("views: {e}")))
     }
 
     /// Where the daylight coefficients live.

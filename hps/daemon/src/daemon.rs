@@ -639,7 +639,12 @@ fn run_cycle(
     }
     let set = set?;
     let capture_ms = t.elapsed().as_secs_f64() * 1e3;
-    let products = pipeline.process(&set, capture_ms, source.name())?;
+    let products = pipeline.process(
+        &set,
+        capture_ms,
+        source.name(),
+        &crate::views::ViewRequest::from_config(config),
+    )?;
     let mut record = products.record;
     record.sequence = sequence;
     let t = Instant::now();
@@ -651,6 +656,7 @@ fn run_cycle(
         .write_cycle(
             &mut record,
             &products.map,
+            &products.view_pictures,
             &pipeline.device,
             Some((&set.config, &set.frames)),
             &mut faults,

@@ -11,6 +11,7 @@
 //! | [`wait`] | waiting for frames: UIO interrupt or polling, with a timeout |
 //! | [`budget`] | `--bench-cycle`: the cycle budget by stage |
 //! | [`cycle`] | capture → HDR → sun → illuminance → record |
+//! | [`views`] | glare at the occupants' views: fisheye render, Ev, DGP, or DGPs in short time |
 //! | [`output`] | crash-safe results, maps and captures, with retention |
 //! | [`api`] | `/v1/latest`, `/v1/health`, `/v1/metrics` |
 //! | [`daemon`] | the loop: schedule, back-off, signals, watchdog |
@@ -32,4 +33,5 @@ pub mod plausibility;
 pub mod privilege;
 pub mod source;
 pub mod spawn;
+pub mod views;
 pub mod wait;

@@ -16,6 +16,7 @@ use crate::cycle::CycleRecord;
 use skylux_hps::camera::DeviceConfig;
 use skylux_hps::campaign::RawFrame;
 use skylux_hps::hdr::{write_exr, LuminanceMap};
+use skylux_hps::picture::Picture;
 use std::fs::{File, OpenOptions};
 use std::io::{Read, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
@@ -30,6 +31,8 @@ pub const LATEST_FILE: &str = "latest.json";
 pub const API_ADDRESS_FILE: &str = "api.address";
 pub const MAPS_DIR: &str = "maps";
 pub const CAPTURES_DIR: &str = "captures";
+/// The occupant views' pictures, kept as the maps are.
+pub const VIEWS_DIR: &str = "views";
 /// Partial captures and scratch files; emptied on start.
 pub const SPOOL_DIR: &str = "spool";
 use skylux_hps::output::atomic::TMP_SUFFIX;
@@ -191,6 +194,13 @@ impl FaultHook for NoFaults {
     }
 }
 
+/// The pictures of one cycle: the sky map and the views' renders (index into the record's
+/// views, picture).
+struct Pictures<'a> {
+    map: &'a LuminanceMap,
+    views: &'a [(usize, Picture)],
+}
+
 /// The daemon's output directory.
 pub struct Output {
     pub dir: PathBuf,
@@ -217,6 +227,7 @@ impl Output {
         for d in [
             dir.to_path_buf(),
             dir.join(MAPS_DIR),
+            dir.join(VIEWS_DIR),
             dir.join(CAPTURES_DIR),
             dir.join(SPOOL_DIR),
         ] {
@@ -224,7 +235,7 @@ impl Output {
         }
         let mut recovery = Recovery::default();
         // Stale temporaries and partial captures from a crash.
-        for d in [dir.to_path_buf(), dir.join(MAPS_DIR)] {
+        for d in [dir.to_path_buf(), dir.join(MAPS_DIR), dir.join(VIEWS_DIR)] {
             for entry in std::fs::read_dir(&d).map_err(err(&d, "list"))?.flatten() {
                 let name = entry.file_name().to_string_lossy().into_owned();
                 if name.starts_with('.')
@@ -278,11 +289,13 @@ impl Output {
 
     /// Writes one cycle: the map, the capture (if kept), the log lines, `latest.json`.
     /// On any error nothing of this cycle stays in the logs, and earlier results are
-    /// untouched. Fills `record.map` and `record.capture`.
+    /// untouched. Fills `record.map`, `record.capture` and each rendered view's `image`
+    /// (`view_pictures`: index into `record.views`, picture), kept as the maps are.
     pub fn write_cycle(
         &mut self,
         record: &mut CycleRecord,
         map: &LuminanceMap,
+        view_pictures: &[(usize, Picture)],
         device: &DeviceConfig,
         capture: Option<(&skylux_hps::campaign::CaptureConfig, &[RawFrame])>,
         faults: &mut dyn FaultHook,
@@ -293,7 +306,12 @@ impl Output {
         let stamp = Self::stamp(&record.time);
         // What this cycle created, removed again if a later step fails.
         let mut created: Vec<PathBuf> = Vec::new();
-        let result = self.write_cycle_files(&stamp, record, map, device, capture, &mut created);
+        let pictures = Pictures {
+            map,
+            views: view_pictures,
+        };
+        let result =
+            self.write_cycle_files(&stamp, record, &pictures, device, capture, &mut created);
         if result.is_err() {
             for p in created {
                 let _ = if p.is_dir() {
@@ -309,6 +327,10 @@ impl Output {
             prune(&self.dir.join(MAPS_DIR), self.max_maps, |n| {
                 n.ends_with(".exr")
             });
+            let per_cycle = view_pictures.len().max(1);
+            prune(&self.dir.join(VIEWS_DIR), self.max_maps * per_cycle, |n| {
+                n.ends_with(".exr")
+            });
         }
         if self.max_captures > 0 {
             prune(&self.dir.join(CAPTURES_DIR), self.max_captures, |n| {
@@ -322,38 +344,28 @@ impl Output {
         &mut self,
         stamp: &str,
         record: &mut CycleRecord,
-        map: &LuminanceMap,
+        pictures: &Pictures,
         device: &DeviceConfig,
         capture: Option<(&skylux_hps::campaign::CaptureConfig, &[RawFrame])>,
         created: &mut Vec<PathBuf>,
     ) -> Result<(), OutputError> {
         if self.max_maps > 0 {
             let rel = format!("{MAPS_DIR}/{stamp}.exr");
-            let path = self.dir.join(&rel);
-            let existed = path.exists();
-            let tmp = tmp_name(&path);
-            write_exr(&tmp, map, device, &capture_readout(capture))
-                .map_err(|e| {
-                    let _ = std::fs::remove_file(&tmp);
-                    OutputError {
-                        path: path.clone(),
-                        what: "EXR map",
-                        source: std::io::Error::other(e.to_string()),
-                    }
-                })
-                .and_then(|_| {
-                    fsync_file(&tmp)
-                        .and_then(|_| std::fs::rename(&tmp, &path))
-                        .and_then(|_| fsync_dir(&self.dir.join(MAPS_DIR)))
-                        .map_err(|e| {
-                            let _ = std::fs::remove_file(&tmp);
-                            err(&path, "EXR map")(e)
-                        })
-                })?;
-            if !existed {
-                created.push(path);
-            }
+            self.write_whole(&rel, "EXR map", created, &|tmp| {
+                write_exr(tmp, pictures.map, device, &capture_readout(capture))
+                    .map_err(|e| e.to_string())
+            })?;
             record.map = Some(rel);
+            for (i, picture) in pictures.views {
+                let Some(view) = record.views.get_mut(*i) else {
+                    continue;
+                };
+                let rel = format!("{VIEWS_DIR}/{stamp}-{}.exr", view.view);
+                self.write_whole(&rel, "view picture", created, &|tmp| {
+                    skylux_hps::picture::exr::write_exr(tmp, picture).map_err(|e| e.to_string())
+                })?;
+                view.image = Some(rel);
+            }
         }
         if let (Some((config, frames)), true) = (capture, self.max_captures > 0) {
             let rel = format!("{CAPTURES_DIR}/{stamp}");
@@ -386,6 +398,44 @@ impl Output {
             self.results.rollback(results_len);
             self.csv.rollback(csv_len);
             return Err(e);
+        }
+        Ok(())
+    }
+
+    /// Writes the file `rel` (under the output directory) whole or not at all: `write` fills a
+    /// temporary beside it, which is fsynced and renamed into place. A new file is added to
+    /// `created`.
+    fn write_whole(
+        &self,
+        rel: &str,
+        what: &'static str,
+        created: &mut Vec<PathBuf>,
+        write: &dyn Fn(&Path) -> Result<(), String>,
+    ) -> Result<(), OutputError> {
+        let path = self.dir.join(rel);
+        let dir = path.parent().unwrap_or(&self.dir).to_path_buf();
+        let existed = path.exists();
+        let tmp = tmp_name(&path);
+        write(&tmp)
+            .map_err(|e| {
+                let _ = std::fs::remove_file(&tmp);
+                OutputError {
+                    path: path.clone(),
+                    what,
+                    source: std::io::Error::other(e),
+                }
+            })
+            .and_then(|_| {
+                fsync_file(&tmp)
+                    .and_then(|_| std::fs::rename(&tmp, &path))
+                    .and_then(|_| fsync_dir(&dir))
+                    .map_err(|e| {
+                        let _ = std::fs::remove_file(&tmp);
+                        err(&path, what)(e)
+                    })
+            })?;
+        if !existed {
+            created.push(path);
         }
         Ok(())
     }
@@ -563,6 +613,7 @@ mod tests {
                 stderr_lux: None,
             }],
             monte_carlo: None,
+            views: vec![],
             outdoor_horizontal_lux: 1e5,
             saturated_fraction: 0.0,
             map: None,
@@ -587,7 +638,7 @@ mod tests {
         };
         let device = DeviceConfig::default();
         let mut r1 = record("2017-05-08T10:00:00+02:00");
-        out.write_cycle(&mut r1, &map, &device, None, &mut NoFaults)
+        out.write_cycle(&mut r1, &map, &[], &device, None, &mut NoFaults)
             .unwrap();
         let maps = |d: &Path| {
             let mut v: Vec<String> = std::fs::read_dir(d.join(MAPS_DIR))
@@ -604,7 +655,7 @@ mod tests {
         let good = std::mem::replace(&mut out.results.file, full);
         let mut r2 = record("2017-05-08T11:00:00+02:00");
         let e = out
-            .write_cycle(&mut r2, &map, &device, None, &mut NoFaults)
+            .write_cycle(&mut r2, &map, &[], &device, None, &mut NoFaults)
             .unwrap_err();
         assert!(e.is_disk_full());
         out.results.file = good;
@@ -613,7 +664,7 @@ mod tests {
         let text = std::fs::read_to_string(dir.path().join(RESULTS_FILE)).unwrap();
         assert_eq!(text.lines().count(), 1);
         let mut r3 = record("2017-05-08T12:00:00+02:00");
-        out.write_cycle(&mut r3, &map, &device, None, &mut NoFaults)
+        out.write_cycle(&mut r3, &map, &[], &device, None, &mut NoFaults)
             .unwrap();
         assert_eq!(maps(dir.path()), vec!["20170508T100000Z.exr"]);
         let csv = std::fs::read_to_string(dir.path().join(CSV_FILE)).unwrap();

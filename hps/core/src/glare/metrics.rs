@@ -34,6 +34,14 @@ pub fn dgp(ev_lux: f64, sources: &[SourceTerms]) -> f64 {
     dgp.min(1.0)
 }
 
+/// Simplified daylight glare probability from the vertical eye illuminance alone (Wienold,
+/// "Dynamic daylight glare evaluation", Building Simulation 2009, Glasgow, 944-951):
+/// DGPs = 6.22·10⁻⁵ Ev + 0.184, at most 1. Valid where no direct sun or specular reflection
+/// of it reaches the eye; the fallback when there is no time to render the view.
+pub fn dgps(ev_lux: f64) -> f64 {
+    (6.22e-5 * ev_lux + 0.184).min(1.0)
+}
+
 /// The low-light correction factor of DGP (Wienold, "Dynamic daylight glare evaluation",
 /// Building Simulation 2009): e^(0.024 Ev − 4) / (1 + e^(0.024 Ev − 4)) below 1000 lx, else 1.
 pub fn low_light_factor(ev_lux: f64) -> f64 {
@@ -113,4 +121,17 @@ pub fn vcp(dgr: f64) -> f64 {
 /// sources' direct part, over π, cd/m².
 pub fn background_luminance_cd_m2(ev_lux: f64, ev_direct_lux: f64) -> f64 {
     (ev_lux - ev_direct_lux) / PI
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn dgps_is_wienolds_line_and_saturates() {
+        // Wienold 2009: DGPs 0.35 (the "perceptible" class limit) at Ev = 0.166 / 6.22e-5.
+        assert!((dgps(0.166 / 6.22e-5) - 0.35).abs() < 1e-12);
+        assert!((dgps(0.0) - 0.184).abs() < 1e-12);
+        assert_eq!(dgps(1e6), 1.0);
+    }
 }

@@ -11,6 +11,7 @@
 pub mod band;
 pub mod detection;
 pub mod error;
+pub mod ev_noise;
 pub mod image;
 pub mod metrics;
 pub mod neighbourhood;
@@ -21,6 +22,7 @@ pub mod sources;
 
 pub use detection::DetectionSettings;
 pub use error::GlareError;
+pub use ev_noise::ev_stderr_lux;
 pub use image::{load_image, LuminanceImage};
 
 use glam::DVec3;

@@ -5,6 +5,7 @@
 
 pub mod captures;
 pub mod error;
+pub mod measured_sky;
 pub mod plausibility;
 pub mod prediction;
 pub mod room;
@@ -12,6 +13,7 @@ pub mod terms;
 
 pub use captures::{load_captures, load_captures_with, CaptureData};
 pub use error::ModelError;
+pub use measured_sky::{install_measured_sky, remove_measured_sky};
 pub use prediction::{parts, predict, ModelState};
 pub use room::Room;
 pub use terms::{capture_terms, CaptureTerms, SunMissing};
