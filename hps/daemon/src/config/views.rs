@@ -136,10 +136,11 @@ pub struct GlareConfig {
     pub budget_fraction: f64,
 }
 
-/// 96 × 96 pixels at 16 paths each: three views fit a 60 s cycle on one A9 core with room to
-/// spare (BENCHMARKS.md, "Glare views"); a pixel spans under 2° of the hemisphere.
+/// 64 × 64 pixels (2.8° each) at 16 paths: three views take 1.7 s (overcast or no sun) to
+/// 2.9 s (sun) of one core here per cycle, 17 to 29 s on the A9 by the budget's ×10
+/// (BENCHMARKS.md, "Glare views"), inside the default budget of a 60 s period.
 fn default_resolution_px() -> u32 {
-    96
+    64
 }
 fn default_samples_per_pixel() -> u32 {
     16
@@ -147,8 +148,10 @@ fn default_samples_per_pixel() -> u32 {
 fn default_sensor_samples() -> u32 {
     4096
 }
+/// Three quarters of the period: 45 s of a 60 s period, of which the rest of the cycle takes
+/// some 3 s on the A9 (BENCHMARKS.md, "skyluxd cycle budget").
 fn default_budget_fraction() -> f64 {
-    0.5
+    0.75
 }
 
 impl Default for GlareConfig {
