@@ -11,6 +11,9 @@
 //! of the room (scene and sensor files) and the settings. The daemon always uses the matrix
 //! as read back from that file (float32), so a cache hit and a fresh computation give
 //! bit-identical results.
+//!
+//! With `[[views]]` declared, the cycle also reports glare at each occupant view under the
+//! same measured sky (`views.rs`), within the cycle's time budget.
 
 use crate::config::Config;
 use crate::source::CaptureSet;
