@@ -5,6 +5,7 @@
 //! channel, kept as a `DVec3` (x = red, y = green, z = blue) so the engine can do channel-wise
 //! arithmetic on them.
 
+use super::brdf_material::{anisotropic, brdf_func, Anisotropic, BrdfFunc, NormalFamily};
 use super::bsdf_modifier::{self, BsdfModifier};
 use super::error::{ArgumentList, SceneError};
 use super::function::{brtd, data_pattern, function_args, BrtdFunc, DataPattern, FunctionArgs};
@@ -62,6 +63,10 @@ pub enum ModifierKind {
     Texfunc(FunctionArgs),
     Mixfunc(Mixfunc),
     BrtdFunc(BrtdFunc),
+    /// `plasfunc`, `metfunc`, `transfunc`, `plasdata`, `metdata`, `transdata`.
+    BrdfFunc(BrdfFunc),
+    /// `plastic2`, `metal2`, `trans2`.
+    Anisotropic(Anisotropic),
 }
 
 impl ModifierKind {
@@ -91,6 +96,19 @@ impl ModifierKind {
             ModifierKind::Texfunc(_) => "texfunc",
             ModifierKind::Mixfunc(_) => "mixfunc",
             ModifierKind::BrtdFunc(_) => "BRTDfunc",
+            ModifierKind::BrdfFunc(f) => match (f.fractions.family, f.data.is_some()) {
+                (NormalFamily::Plastic, false) => "plasfunc",
+                (NormalFamily::Metal, false) => "metfunc",
+                (NormalFamily::Trans, false) => "transfunc",
+                (NormalFamily::Plastic, true) => "plasdata",
+                (NormalFamily::Metal, true) => "metdata",
+                (NormalFamily::Trans, true) => "transdata",
+            },
+            ModifierKind::Anisotropic(a) => match a.fractions.family {
+                NormalFamily::Plastic => "plastic2",
+                NormalFamily::Metal => "metal2",
+                NormalFamily::Trans => "trans2",
+            },
         }
     }
 
@@ -402,6 +420,15 @@ pub(crate) fn build(
         | PrimitiveType::Texfunc
         | PrimitiveType::Mixfunc
         | PrimitiveType::BrtdFunc => function_modifier(raw, resolve)?,
+        PrimitiveType::Plasfunc
+        | PrimitiveType::Metfunc
+        | PrimitiveType::Transfunc
+        | PrimitiveType::Plasdata
+        | PrimitiveType::Metdata
+        | PrimitiveType::Transdata => ModifierKind::BrdfFunc(brdf_func(raw)?),
+        PrimitiveType::Plastic2 | PrimitiveType::Metal2 | PrimitiveType::Trans2 => {
+            ModifierKind::Anisotropic(anisotropic(raw)?)
+        }
         PrimitiveType::Polygon
         | PrimitiveType::Sphere
         | PrimitiveType::Cylinder

@@ -18,6 +18,7 @@
 //! ```
 
 mod alias;
+mod brdf_material;
 mod bsdf_modifier;
 mod command;
 mod error;
@@ -33,6 +34,7 @@ mod sensors;
 mod shape;
 mod xform;
 
+pub use brdf_material::{Anisotropic, BrdfData, BrdfFunc, NormalFamily, NormalFractions};
 pub use bsdf_modifier::{BsdfModifier, BsdfType};
 pub use error::{ArgumentList, SceneError, SourceLocation, SUPPORTED_TYPES};
 pub use expand::{LoadOptions, MAX_INCLUDE_DEPTH, MAX_PRIMITIVES};

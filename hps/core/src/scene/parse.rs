@@ -18,18 +18,9 @@ pub(crate) const OTHER_RADIANCE_TYPES: &[&str] = &[
     "prism1",
     "prism2",
     "mist",
-    "plastic2",
-    "metal2",
-    "trans2",
     "ashik2",
     "WGMDfunc",
-    "plasfunc",
-    "metfunc",
-    "transfunc",
     "BRTDfunc",
-    "plasdata",
-    "metdata",
-    "transdata",
     "texfunc",
     "texdata",
     "colorfunc",
@@ -74,6 +65,15 @@ pub(crate) enum PrimitiveType {
     Texfunc,
     Mixfunc,
     BrtdFunc,
+    Plasfunc,
+    Metfunc,
+    Transfunc,
+    Plasdata,
+    Metdata,
+    Transdata,
+    Plastic2,
+    Metal2,
+    Trans2,
     Polygon,
     Sphere,
     Cylinder,
@@ -112,6 +112,15 @@ impl PrimitiveType {
             "texfunc" => Self::Texfunc,
             "mixfunc" => Self::Mixfunc,
             "BRTDfunc" => Self::BrtdFunc,
+            "plasfunc" => Self::Plasfunc,
+            "metfunc" => Self::Metfunc,
+            "transfunc" => Self::Transfunc,
+            "plasdata" => Self::Plasdata,
+            "metdata" => Self::Metdata,
+            "transdata" => Self::Transdata,
+            "plastic2" => Self::Plastic2,
+            "metal2" => Self::Metal2,
+            "trans2" => Self::Trans2,
             "polygon" => Self::Polygon,
             "sphere" => Self::Sphere,
             "cylinder" => Self::Cylinder,
@@ -148,6 +157,15 @@ impl PrimitiveType {
             Self::Texfunc => "texfunc",
             Self::Mixfunc => "mixfunc",
             Self::BrtdFunc => "BRTDfunc",
+            Self::Plasfunc => "plasfunc",
+            Self::Metfunc => "metfunc",
+            Self::Transfunc => "transfunc",
+            Self::Plasdata => "plasdata",
+            Self::Metdata => "metdata",
+            Self::Transdata => "transdata",
+            Self::Plastic2 => "plastic2",
+            Self::Metal2 => "metal2",
+            Self::Trans2 => "trans2",
             Self::Polygon => "polygon",
             Self::Sphere => "sphere",
             Self::Cylinder => "cylinder",
@@ -185,6 +203,16 @@ impl PrimitiveType {
             Self::Interface => &["rtn1", "gtn1", "btn1", "n1", "rtn2", "gtn2", "btn2", "n2"],
             Self::Spotlight => &["red", "green", "blue", "angle", "xdir", "ydir", "zdir"],
             Self::Glow => &["red", "green", "blue", "maxrad"],
+            Self::Plastic2 | Self::Metal2 => &["red", "green", "blue", "spec", "urough", "vrough"],
+            Self::Trans2 => &[
+                "red", "green", "blue", "rspec", "urough", "vrough", "trans", "tspec",
+            ],
+            Self::Plasfunc | Self::Metfunc | Self::Plasdata | Self::Metdata => {
+                &["red", "green", "blue", "spec"]
+            }
+            Self::Transfunc | Self::Transdata => {
+                &["red", "green", "blue", "rspec", "trans", "tspec"]
+            }
             Self::Source => &["xdir", "ydir", "zdir", "angle"],
             Self::Sphere | Self::Bubble => &["xcent", "ycent", "zcent", "radius"],
             Self::Cylinder | Self::Tube => &["x0", "y0", "z0", "x1", "y1", "z1", "rad"],
@@ -230,6 +258,16 @@ impl PrimitiveType {
                     ["rdf", "gdf", "bdf", "rdb", "gdb", "bdb", "rdt", "gdt", "bdt"][index]
                 ),
                 _ => format!("real argument {number} (A{number})"),
+            },
+            // The named reals, then A5 .. (A7 .. for the trans family) for the function.
+            Self::Plasfunc
+            | Self::Metfunc
+            | Self::Transfunc
+            | Self::Plasdata
+            | Self::Metdata
+            | Self::Transdata => match self.real_names().get(index) {
+                Some(name) => format!("real argument {number} ({name})"),
+                None => format!("real argument {number} (A{number})"),
             },
             _ => match self.real_names().get(index) {
                 Some(name) => format!("real argument {number} ({name})"),

@@ -4,10 +4,15 @@
 use super::loader::FunctionLoader;
 use super::varying::{Modulation, VaryingBase, VaryingMaterial};
 use crate::engine::error::EngineError;
-use crate::engine::material::{BrtdMaterial, Material};
+use crate::engine::material::{AnisotropicMaterial, BrdfFunctionMaterial, BrtdMaterial, Material};
 use crate::engine::sky::SkyFunction;
-use crate::scene::{DataPattern, Modifier, ModifierKind, ModifierRef, Scene, Surface};
+use crate::scene::{
+    Anisotropic, BrdfFunc, DataPattern, Modifier, ModifierKind, ModifierRef, Scene, Surface,
+};
 use std::sync::Arc;
+
+/// The orientation vector's expressions of `plastic2`, `metal2`, `trans2` (`ux uy uz`).
+const ORIENTATION_EXPRESSIONS: usize = 3;
 
 /// BRTDfunc's expressions compiled as such (the specular colours); the next three name
 /// functions of the source direction (`m_brdf.c`: `getfunc(m, 9, 0x3f, 0)`).
@@ -48,7 +53,10 @@ pub fn material_of(
         })
     };
     match &base {
-        VaryingBase::Plain(Material::Normal(_)) | VaryingBase::Brtd(_) => {}
+        VaryingBase::Plain(Material::Normal(_))
+        | VaryingBase::Brtd(_)
+        | VaryingBase::Function(_)
+        | VaryingBase::Anisotropic(_) => {}
         _ if modulations.is_empty() => {}
         VaryingBase::Mix { .. } => return refuse("patterns above a mixfunc are not traced yet"),
         VaryingBase::Plain(_) => {
@@ -83,7 +91,9 @@ fn is_function(kind: &ModifierKind, emitter: bool) -> bool {
         | ModifierKind::Colordata(_)
         | ModifierKind::Texfunc(_)
         | ModifierKind::Mixfunc(_)
-        | ModifierKind::BrtdFunc(_) => true,
+        | ModifierKind::BrtdFunc(_)
+        | ModifierKind::BrdfFunc(_)
+        | ModifierKind::Anisotropic(_) => true,
         _ => false,
     }
 }
@@ -156,6 +166,10 @@ fn base(
             arguments: b.clone(),
             function: loader.compile(m, &b.function, BRTD_EXPRESSIONS)?,
         })),
+        ModifierKind::BrdfFunc(f) => VaryingBase::Function(Arc::new(brdf_function(m, f, loader)?)),
+        ModifierKind::Anisotropic(a) => {
+            VaryingBase::Anisotropic(Box::new(anisotropic(m, a, loader)?))
+        }
         ModifierKind::Mixfunc(mix) => VaryingBase::Mix {
             coefficient: loader.compile(m, &mix.function, 1)?,
             foreground: Box::new(material_of(scene, mix.foreground, surface, loader)?),
@@ -163,6 +177,62 @@ fn base(
         },
         // Its patterns are the chain's modulations.
         _ => VaryingBase::Plain(Material::from_modifier(surface, Some(m), Vec::new())?),
+    })
+}
+
+/// A function material: its file compiled, the function of the source direction and the
+/// coordinate functions checked to exist, its data file read and its dimensions checked
+/// against the coordinate functions.
+fn brdf_function(
+    m: &Modifier,
+    f: &BrdfFunc,
+    loader: &mut FunctionLoader,
+) -> Result<BrdfFunctionMaterial, EngineError> {
+    let function = loader.compile(m, &f.function, 0)?;
+    let fail = |what: String| EngineError::Unsupported {
+        at: m.origin.clone(),
+        what: format!("{} `{}`: {what}", m.kind.type_name(), m.name),
+    };
+    if function.parameter_count(&f.function_name).is_none() {
+        return Err(fail(format!(
+            "function `{}` is not defined in {} nor in the library",
+            f.function_name, f.function.cal_file
+        )));
+    }
+    let data = match &f.data {
+        None => None,
+        Some(d) => {
+            let array = loader.data(m, &d.data_file, &f.function.scene_dir)?;
+            if array.dimension_count() != d.coordinate_functions.len() {
+                return Err(fail(format!(
+                    "data file {} has {} dimension(s) but {} coordinate function(s) are given",
+                    d.data_file,
+                    array.dimension_count(),
+                    d.coordinate_functions.len()
+                )));
+            }
+            Some(array)
+        }
+    };
+    Ok(BrdfFunctionMaterial {
+        fractions: f.fractions.clone(),
+        function_name: f.function_name.clone(),
+        function,
+        data,
+    })
+}
+
+/// An anisotropic material with its orientation expressions compiled.
+fn anisotropic(
+    m: &Modifier,
+    a: &Anisotropic,
+    loader: &mut FunctionLoader,
+) -> Result<AnisotropicMaterial, EngineError> {
+    Ok(AnisotropicMaterial {
+        fractions: a.fractions.clone(),
+        u_roughness: a.u_roughness,
+        v_roughness: a.v_roughness,
+        orientation: loader.compile(m, &a.orientation, ORIENTATION_EXPRESSIONS)?,
     })
 }
 

@@ -7,7 +7,8 @@ use super::data::DataArray;
 use super::loader::CompiledFunction;
 use super::ray::FunctionRay;
 use crate::engine::material::{
-    BrtdMaterial, HitDependent, HitPoint, Material, Shading, ShadowCrossing,
+    AnisotropicMaterial, BrdfFunctionMaterial, BrtdMaterial, HitDependent, HitPoint, Material,
+    Shading, ShadowCrossing,
 };
 use crate::engine::rng::Rng;
 use glam::DVec3;
@@ -34,6 +35,10 @@ pub enum VaryingBase {
     /// A plain material (`plastic`, `metal`, `trans`) whose colour patterns scale.
     Plain(Material),
     Brtd(Box<BrtdMaterial>),
+    /// `plasfunc`, `metfunc`, `transfunc` and their data forms.
+    Function(Arc<BrdfFunctionMaterial>),
+    /// `plastic2`, `metal2`, `trans2`.
+    Anisotropic(Box<AnisotropicMaterial>),
     /// `mixfunc`: the foreground where the coefficient is 1, the background where 0.
     Mix {
         coefficient: Arc<CompiledFunction>,
@@ -81,6 +86,27 @@ impl HitDependent for VaryingMaterial {
                 hit.distance_m,
                 m.color_rgb,
             ))))),
+            VaryingBase::Function(f) => {
+                Material::Shaded(Box::new(Shading::Function(Box::new(f.shade(
+                    hit.direction,
+                    hit.normal,
+                    normal,
+                    hit.point_m,
+                    hit.distance_m,
+                    m.color_rgb,
+                )))))
+            }
+            VaryingBase::Anisotropic(a) => {
+                Material::Shaded(Box::new(Shading::Anisotropic(Box::new(a.shade(
+                    hit.direction,
+                    hit.normal,
+                    normal,
+                    hit.point_m,
+                    hit.distance_m,
+                    m.color_rgb,
+                    hit.flat,
+                )))))
+            }
             VaryingBase::Mix {
                 coefficient,
                 foreground,
@@ -102,6 +128,10 @@ impl HitDependent for VaryingMaterial {
     /// What a shadow ray does here: for a `mixfunc`, the coefficient's blend of what each
     /// side transmits (a shadow ray has no random choice).
     fn shadow_crossing(&self, hit: &HitPoint) -> ShadowCrossing {
+        if let VaryingBase::Function(_) | VaryingBase::Anisotropic(_) = &self.base {
+            // m_brdf2 and m_aniso end every shadow ray.
+            return ShadowCrossing::Opaque;
+        }
         let m = self.modulate(hit);
         let normal = shading_normal(hit, m.perturbation);
         match &self.base {
@@ -119,6 +149,7 @@ impl HitDependent for VaryingMaterial {
                 )
                 .shadow_transmission(),
             ),
+            VaryingBase::Function(_) | VaryingBase::Anisotropic(_) => ShadowCrossing::Opaque,
             VaryingBase::Mix {
                 coefficient,
                 foreground,
