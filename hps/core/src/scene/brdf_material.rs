@@ -206,7 +206,7 @@ mod tests {
         assert_eq!(f.function.real_args.len(), 7);
         assert!(f.data.is_none());
         let ModifierKind::BrdfFunc(d) =
-            first("void metdata m\n6 scale m.dat f.cal theta phi -rz 90\n0\n4 .8 .7 .6 .3\n")
+            first("void metdata m\n7 scale m.dat f.cal theta phi -rz 90\n0\n4 .8 .7 .6 .3\n")
                 .unwrap()
         else {
             panic!("a metdata")
