@@ -2,14 +2,17 @@
 //! which each of the nine types covers a large surface that the sensors see, under a sunny
 //! `gensky` sky, so that the parts only light sources see (the functions of the source
 //! direction and the data over it) are lit by the sun:
-//! - floor: `plasfunc` in front (a glossy lobe about the viewer's mirror direction, a
-//!   function of `Dx Dy Dz`, `NxP`.. and the sun's direction) and `plasdata` behind (a 1-D
-//!   data file over the sun's angle of incidence), both in the patch of a clear window;
+//! - floor, all in the sun patch of a clear window: in front, a `plasfunc` with RADIANCE's
+//!   own W-G-M-D model in `.cal` (`absdf` of the corpus' `aniso.cal`, through
+//!   `rayinit.cal`'s `Ldx`.. frame) and a `metfunc` with a glossy lobe of our own about the
+//!   viewer's mirror direction (a function of `Dx Dy Dz`, `NxP`.. and the sun's
+//!   direction); behind, a `plasdata` (1-D data over the sun's angle of incidence);
 //! - west wall: `metdata` (2-D data over incidence and the sun's height, irregular points),
 //!   sunlit through the same window; north wall: `metal2` brushed vertically, sunlit
 //!   through an east window, its highlight seen by a sensor facing it (turning the brushing
 //!   horizontal changes that sensor by a third in rtrace);
-//! - ceiling: `metfunc`; east wall: `plastic2` whose grain turns with height;
+//! - ceiling: `metfunc` (lit by no source: its ambient part); east wall: `plastic2` whose
+//!   grain turns with height;
 //! - three panes behind clear glass: `trans2`, `transdata` (data over the angle between the
 //!   view and the sun), and a clerestory of `transfunc` (a forward-scattering lobe).
 //!
@@ -21,6 +24,7 @@
 
 mod common;
 use common::compare::{compare_with_rtrace, sky, Effort};
+use common::corpus::corpus;
 use common::radiance::{radiance_or_skip, RTRACE_PATH_TRACING};
 use std::path::Path;
 
@@ -74,7 +78,8 @@ const H: f64 = 2.7;
 const MATERIALS: &str = "\
 void plastic wall_white 0 0 5 0.6 0.6 0.6 0 0
 void glass pane 0 0 3 0.96 0.96 0.96
-void plasfunc floor_front 2 gloss brdf.cal 0 4 0.5 0.45 0.4 0.15
+void plasfunc floor_aniso 2 absdf aniso.cal 0 9 0.5 0.45 0.4 0.12 0.05 0.15 1 0 0
+void metfunc floor_gloss 2 gloss brdf.cal 0 4 0.55 0.5 0.45 0.15
 void plasdata floor_back 4 scale floor.dat brdf.cal incidence 0 4 0.45 0.5 0.4 0.2
 void metdata west_wall 5 scale west.dat brdf.cal incidence lvert 0 4 0.6 0.55 0.5 0.3
 void metal2 brushed 4 0 0 1 . 0 6 0.6 0.65 0.7 0.5 0.04 0.3
@@ -168,9 +173,14 @@ fn room() -> String {
     [
         MATERIALS.to_string(),
         polygon(
-            "floor_front",
-            "floor_front",
-            &[[0., 0., 0.], [W, 0., 0.], [W, 1.6, 0.], [0., 1.6, 0.]],
+            "floor_aniso",
+            "floor_west",
+            &[[0., 0., 0.], [1., 0., 0.], [1., 1.6, 0.], [0., 1.6, 0.]],
+        ),
+        polygon(
+            "floor_gloss",
+            "floor_east",
+            &[[1., 0., 0.], [W, 0., 0.], [W, 1.6, 0.], [1., 1.6, 0.]],
         ),
         polygon(
             "floor_back",
@@ -200,7 +210,8 @@ fn room() -> String {
 
 /// Up at the workplane; down over the floor's two halves; at the west wall's sun patch,
 /// the north and east walls, the south panes; up under the ceiling; low, facing the north
-/// wall's sunlit highlight.
+/// wall's sunlit highlight; facing the sun's glint on the `aniso.cal` floor (a quarter of its
+/// light in rtrace; its line to the sun meets the wall 5 cm below the clerestory).
 const SENSORS: &str = "\
 3.2 1.5 0.8 0 0 1
 2.0 3.0 0.8 0 0 1
@@ -214,6 +225,7 @@ const SENSORS: &str = "\
 2.0 2.0 1.5 0 0 1
 3.0 3.0 1.0 1 0 0
 2.2 4.0 0.3 0.5 0.63 0.59
+0.2 1.93 0.45 0.5 -0.633 -0.591
 ";
 
 fn write(dir: &Path, name: &str, text: &str) -> std::path::PathBuf {
@@ -232,6 +244,12 @@ fn function_and_anisotropic_materials_match_rtrace() {
     write(dir.path(), "floor.dat", FLOOR_DAT);
     write(dir.path(), "west.dat", WEST_DAT);
     write(dir.path(), "pane.dat", PANE_DAT);
+    // RADIANCE's own file (BSD-style licence, header kept), as the corpus holds it.
+    std::fs::copy(
+        corpus().join("radiance-test-renders/test/renders/aniso.cal"),
+        dir.path().join("aniso.cal"),
+    )
+    .unwrap();
     let room = write(dir.path(), "room.rad", &room());
     // Our loader reads rayinit.cal (PI) through RAYPATH, as rtrace does.
     if let Some(lib) = &lib {
