@@ -94,6 +94,9 @@ fn a_brtdfunc_with_too_few_arguments_is_a_scene_error() {
     );
 }
 
+/// A material's line, the files beside it (name, text), and fragments its error must hold.
+type Case<'a> = (&'a str, &'a [(&'a str, &'a str)], &'a [&'a str]);
+
 /// The function and anisotropic materials (`plasfunc` .. `transdata`, `plastic2` ..
 /// `trans2`): a missing `.cal` or `.dat` file, an unknown function name, a data file of the
 /// wrong dimension and an orientation naming an unknown variable are engine errors naming
@@ -106,7 +109,7 @@ fn function_and_anisotropic_materials_name_what_is_missing() {
     );
     let dat = ("one.dat", "1\n0 1 3\n0.5 1 2\n");
     let surface = |m: &str| format!("# room\n{m}\n{}", SURFACE.replace("m polygon", "x polygon"));
-    let cases: [(&str, &[(&str, &str)], &[&str]); 6] = [
+    let cases: [Case; 6] = [
         (
             "void plasfunc x 2 lobe absent.cal\n0\n4 .5 .5 .5 .1",
             &[],

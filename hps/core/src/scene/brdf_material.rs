@@ -90,10 +90,8 @@ fn family(kind: PrimitiveType) -> NormalFamily {
 /// `trans` family; each checked for range.
 fn fractions(raw: &RawPrimitive<'_>, trans_at: usize) -> Result<NormalFractions, SceneError> {
     let r = &raw.reals;
-    for i in 0..3 {
-        if r[i] < 0.0 {
-            return Err(raw.invalid_real(i, "a colour component >= 0"));
-        }
+    if let Some(i) = r[..3].iter().position(|&c| c < 0.0) {
+        return Err(raw.invalid_real(i, "a colour component >= 0"));
     }
     let family = family(raw.kind);
     let mut fraction_indices = vec![3];
