@@ -372,7 +372,7 @@ mod tests {
     fn sampled_highlight_carries_what_the_lobe_reflects() {
         let rdir = DVec3::new(0.3, 0.2, -0.932).normalize();
         let s = brushed(0.08, 0.3, rdir);
-        let (n_theta, n_phi) = (600, 600);
+        let (n_theta, n_phi) = (300, 400);
         let mut albedo = 0.0;
         for i in 0..n_theta {
             let theta = (i as f64 + 0.5) / n_theta as f64 * 0.5 * PI;
@@ -388,7 +388,7 @@ mod tests {
             }
         }
         let mut rng = Rng::for_stream(3, 0);
-        let n = 200_000;
+        let n = 100_000;
         let cos_i = -rdir.z;
         let weighted: f64 = (0..n)
             .filter_map(|_| s.specular_direction(true, &mut rng))
