@@ -10,7 +10,7 @@
 //! - west wall: `metdata` (2-D data over incidence and the sun's height, irregular points),
 //!   sunlit through the same window; north wall: `metal2` brushed vertically, sunlit
 //!   through an east window, its highlight seen by a sensor facing it (turning the brushing
-//!   horizontal changes that sensor by a third in rtrace);
+//!   horizontal raises that sensor by 60 % in rtrace);
 //! - ceiling: `metfunc` (lit by no source: its ambient part); east wall: `plastic2` whose
 //!   grain turns with height;
 //! - three panes behind clear glass: `trans2`, `transdata` (data over the angle between the
