@@ -1,18 +1,19 @@
-//! The function and anisotropic materials against RADIANCE run live: a room of our own in
-//! which each of the nine types covers a large surface that the sensors see, under a sunny
+//! The function and anisotropic materials, `texdata` and `mixdata` against RADIANCE run
+//! live: a room of our own in which each of the eleven types covers a large surface that the sensors see, under a sunny
 //! `gensky` sky, so that the parts only light sources see (the functions of the source
 //! direction and the data over it) are lit by the sun:
 //! - floor, all in the sun patch of a clear window: in front, a `plasfunc` with RADIANCE's
 //!   own W-G-M-D model in `.cal` (`absdf` of the corpus' `aniso.cal`, through
 //!   `rayinit.cal`'s `Ldx`.. frame) and a `metfunc` with a glossy lobe of our own about the
 //!   viewer's mirror direction (a function of `Dx Dy Dz`, `NxP`.. and the sun's
-//!   direction); behind, a `plasdata` (1-D data over the sun's angle of incidence);
+//!   direction), tilted towards the sun by a `texdata` (2-D data over the floor); behind,
+//!   a `plasdata` (1-D data over the sun's angle of incidence);
 //! - west wall: `metdata` (2-D data over incidence and the sun's height, irregular points),
 //!   sunlit through the same window; north wall: `metal2` brushed vertically, sunlit
 //!   through an east window, its highlight seen by a sensor facing it (turning the brushing
 //!   horizontal raises that sensor by 60 % in rtrace);
-//! - ceiling: `metfunc` (lit by no source: its ambient part); east wall: `plastic2` whose
-//!   grain turns with height;
+//! - ceiling: a `mixdata` (1-D data along x) of a `metfunc` (lit by no source: its ambient
+//!   part) and a grey plastic; east wall: `plastic2` whose grain turns with height;
 //! - three panes behind clear glass: `trans2`, `transdata` (data over the angle between the
 //!   view and the sun), and a clerestory of `transfunc` (a forward-scattering lobe).
 //!
@@ -59,9 +60,29 @@ incidence(lx, ly, lz, om) = acos(abs(ndotl(lx, ly, lz))) * 180 / PI;
 lvert(lx, ly, lz, om) = lz;
 spread(lx, ly, lz, om) = acos(Dx * lx + Dy * ly + Dz * lz) * 180 / PI;
 scale(v, lx, ly, lz, om) = v / PI;
+clip01(v) = if(v - 1, 1, if(v, v, 0));
+first(a, b, c) = a;
+second(a, b, c) = b;
+third(a, b, c) = c;
 grain_y = sin(2 * Pz);
 grain_z = cos(2 * Pz);
 ";
+
+/// texdata on the floor's glossy part: a tilt towards the sun (+x, −y) over (Px, Py), one
+/// file per component.
+const TILT_DAT: [(&str, &str); 3] = [
+    (
+        "tilt_x.dat",
+        "2\n1 4 3\n0 1.6 2\n0.1 0.15\n0.2 0.12\n0.15 0.1\n",
+    ),
+    (
+        "tilt_y.dat",
+        "2\n1 4 3\n0 1.6 2\n-0.15 -0.05\n-0.1 -0.12\n-0.2 -0.1\n",
+    ),
+    ("tilt_z.dat", "2\n1 4 3\n0 1.6 2\n0 0\n0 0\n0 0\n"),
+];
+/// mixdata on the ceiling: the glossy metfunc's share along x.
+const CEILING_DAT: &str = "1\n0 4 5\n0.2 0.9 0.5 0.1 0.7\n";
 
 /// plasdata on the floor's back half: over the incidence angle, evenly spaced.
 const FLOOR_DAT: &str = "1\n0 90 4\n0.4 0.6 0.9 1.4\n";
@@ -79,11 +100,14 @@ const MATERIALS: &str = "\
 void plastic wall_white 0 0 5 0.6 0.6 0.6 0 0
 void glass pane 0 0 3 0.96 0.96 0.96
 void plasfunc floor_aniso 2 absdf aniso.cal 0 9 0.5 0.45 0.4 0.12 0.05 0.15 1 0 0
-void metfunc floor_gloss 2 gloss brdf.cal 0 4 0.55 0.5 0.45 0.15
+void texdata tilt 9 first second third tilt_x.dat tilt_y.dat tilt_z.dat brdf.cal Px Py 0 0
+tilt metfunc floor_gloss 2 gloss brdf.cal 0 4 0.55 0.5 0.45 0.15
 void plasdata floor_back 4 scale floor.dat brdf.cal incidence 0 4 0.45 0.5 0.4 0.2
 void metdata west_wall 5 scale west.dat brdf.cal incidence lvert 0 4 0.6 0.55 0.5 0.3
 void metal2 brushed 4 0 0 1 . 0 6 0.6 0.65 0.7 0.5 0.04 0.3
-void metfunc ceiling 2 gloss brdf.cal 0 4 0.85 0.85 0.85 0.25
+void metfunc ceiling_gloss 2 gloss brdf.cal 0 4 0.85 0.85 0.85 0.25
+void plastic ceiling_grey 0 0 5 0.4 0.4 0.4 0 0
+void mixdata ceiling 6 ceiling_gloss ceiling_grey clip01 ceiling.dat brdf.cal Px 0 0
 void plastic2 grained 4 0 grain_y grain_z brdf.cal 0 6 0.6 0.6 0.55 0.08 0.05 0.2
 void trans2 frosted 4 1 0 0 . 0 8 0.8 0.8 0.8 0.04 0.12 0.04 0.6 0.5
 void transdata scattering 4 scale pane.dat brdf.cal spread 0 6 0.85 0.85 0.85 0.03 0.6 0.5
@@ -244,6 +268,10 @@ fn function_and_anisotropic_materials_match_rtrace() {
     write(dir.path(), "floor.dat", FLOOR_DAT);
     write(dir.path(), "west.dat", WEST_DAT);
     write(dir.path(), "pane.dat", PANE_DAT);
+    write(dir.path(), "ceiling.dat", CEILING_DAT);
+    for (name, text) in TILT_DAT {
+        write(dir.path(), name, text);
+    }
     // RADIANCE's own file (BSD-style licence, header kept), as the corpus holds it.
     std::fs::copy(
         corpus().join("radiance-test-renders/test/renders/aniso.cal"),

@@ -8,7 +8,9 @@
 use super::brdf_material::{anisotropic, brdf_func, Anisotropic, BrdfFunc, NormalFamily};
 use super::bsdf_modifier::{self, BsdfModifier};
 use super::error::{ArgumentList, SceneError};
-use super::function::{brtd, data_pattern, function_args, BrtdFunc, DataPattern, FunctionArgs};
+use super::function::{
+    brtd, data_pattern, data_pattern_after, function_args, BrtdFunc, DataPattern, FunctionArgs,
+};
 use super::parse::{PrimitiveType, RawPrimitive};
 use glam::DVec3;
 use std::path::Path;
@@ -62,6 +64,9 @@ pub enum ModifierKind {
     Colordata(DataPattern),
     Texfunc(FunctionArgs),
     Mixfunc(Mixfunc),
+    /// `texdata`: a texture from three data files (t_data.c).
+    Texdata(DataPattern),
+    Mixdata(Mixdata),
     BrtdFunc(BrtdFunc),
     /// `plasfunc`, `metfunc`, `transfunc`, `plasdata`, `metdata`, `transdata`.
     BrdfFunc(BrdfFunc),
@@ -95,6 +100,8 @@ impl ModifierKind {
             ModifierKind::Colordata(_) => "colordata",
             ModifierKind::Texfunc(_) => "texfunc",
             ModifierKind::Mixfunc(_) => "mixfunc",
+            ModifierKind::Texdata(_) => "texdata",
+            ModifierKind::Mixdata(_) => "mixdata",
             ModifierKind::BrtdFunc(_) => "BRTDfunc",
             ModifierKind::BrdfFunc(f) => match (f.fractions.family, f.data.is_some()) {
                 (NormalFamily::Plastic, false) => "plasfunc",
@@ -122,6 +129,7 @@ impl ModifierKind {
                 | ModifierKind::Brightdata(_)
                 | ModifierKind::Colordata(_)
                 | ModifierKind::Texfunc(_)
+                | ModifierKind::Texdata(_)
         )
     }
 }
@@ -227,6 +235,16 @@ pub struct Mixfunc {
     pub background: ModifierRef,
     /// One expression: the coefficient.
     pub function: FunctionArgs,
+}
+
+/// `mixdata`: blends two modifiers by a coefficient interpolated in a data file and passed
+/// through a function (manual §2.1.6, `src/rt/mx_data.c`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mixdata {
+    pub foreground: ModifierRef,
+    pub background: ModifierRef,
+    /// One function (of the interpolated value), one data file, the coordinates.
+    pub data: DataPattern,
 }
 
 /// Refractive index RADIANCE's `dielectric` adds per unit of Hartmann constant: the constant
@@ -419,6 +437,8 @@ pub(crate) fn build(
         | PrimitiveType::Colordata
         | PrimitiveType::Texfunc
         | PrimitiveType::Mixfunc
+        | PrimitiveType::Texdata
+        | PrimitiveType::Mixdata
         | PrimitiveType::BrtdFunc => function_modifier(raw, resolve)?,
         PrimitiveType::Plasfunc
         | PrimitiveType::Metfunc
@@ -588,21 +608,7 @@ fn function_modifier(
         T::Mixfunc => {
             let function =
                 function_args(raw, 3, "foreground background vname funcfile [transform]")?;
-            let modifier = |i: usize, field: &'static str| {
-                let name = &function.expressions[i];
-                if name == "void" {
-                    return Ok(ModifierRef::Void);
-                }
-                resolve(name).ok_or_else(|| SceneError::UnknownModifier {
-                    at: raw.at.clone(),
-                    primitive: raw.describe(),
-                    field,
-                    modifier: name.clone(),
-                    hint: String::new(),
-                })
-            };
-            let foreground = modifier(0, "string argument 1 (foreground)")?;
-            let background = modifier(1, "string argument 2 (background)")?;
+            let (foreground, background) = mixture_sides(raw, resolve)?;
             ModifierKind::Mixfunc(Mixfunc {
                 foreground,
                 background,
@@ -613,6 +619,16 @@ fn function_modifier(
             })
         }
         T::BrtdFunc => ModifierKind::BrtdFunc(brtd(raw)?),
+        T::Texdata => ModifierKind::Texdata(data_pattern(raw, 3)?),
+        T::Mixdata => {
+            let data = data_pattern_after(raw, 1, 2)?;
+            let (foreground, background) = mixture_sides(raw, resolve)?;
+            ModifierKind::Mixdata(Mixdata {
+                foreground,
+                background,
+                data,
+            })
+        }
         T::Brightdata => ModifierKind::Brightdata(data_pattern(raw, 1)?),
         T::Colordata => ModifierKind::Colordata(data_pattern(raw, 3)?),
         _ => {
@@ -623,6 +639,31 @@ fn function_modifier(
             ))
         }
     })
+}
+
+/// The two modifiers a `mixfunc` or `mixdata` names first, each defined before it or
+/// `void` (its string count already checked).
+fn mixture_sides(
+    raw: &RawPrimitive<'_>,
+    resolve: &dyn Fn(&str) -> Option<ModifierRef>,
+) -> Result<(ModifierRef, ModifierRef), SceneError> {
+    let side = |i: usize, field: &'static str| {
+        let name = raw.strings[i];
+        if name == "void" {
+            return Ok(ModifierRef::Void);
+        }
+        resolve(name).ok_or_else(|| SceneError::UnknownModifier {
+            at: raw.at.clone(),
+            primitive: raw.describe(),
+            field,
+            modifier: name.to_string(),
+            hint: String::new(),
+        })
+    };
+    Ok((
+        side(0, "string argument 1 (foreground)")?,
+        side(1, "string argument 2 (background)")?,
+    ))
 }
 
 /// Reflectances and transmissivities below zero have no physical meaning (RADIANCE accepts

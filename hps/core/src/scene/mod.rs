@@ -40,8 +40,8 @@ pub use error::{ArgumentList, SceneError, SourceLocation, SUPPORTED_TYPES};
 pub use expand::{LoadOptions, MAX_INCLUDE_DEPTH, MAX_PRIMITIVES};
 pub use function::{BrtdFunc, DataPattern, FunctionArgs, FunctionTransform};
 pub use material::{
-    Antimatter, Brightfunc, Dielectric, Glass, Glow, Illum, Light, Medium, Metal, Mirror, Mixfunc,
-    ModifierId, ModifierKind, ModifierRef, Plastic, Spotlight, Trans,
+    Antimatter, Brightfunc, Dielectric, Glass, Glow, Illum, Light, Medium, Metal, Mirror, Mixdata,
+    Mixfunc, ModifierId, ModifierKind, ModifierRef, Plastic, Spotlight, Trans,
     GLASS_DEFAULT_REFRACTIVE_INDEX, HARTMANN_MEAN_WAVELENGTH_NM,
 };
 pub use primitive::Primitive;

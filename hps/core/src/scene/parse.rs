@@ -22,7 +22,6 @@ pub(crate) const OTHER_RADIANCE_TYPES: &[&str] = &[
     "WGMDfunc",
     "BRTDfunc",
     "texfunc",
-    "texdata",
     "colorfunc",
     "brightdata",
     "colordata",
@@ -35,7 +34,6 @@ pub(crate) const OTHER_RADIANCE_TYPES: &[&str] = &[
     "specdata",
     "specpict",
     "mixfunc",
-    "mixdata",
     "mixpict",
     "mixtext",
     "alias",
@@ -64,6 +62,8 @@ pub(crate) enum PrimitiveType {
     Colordata,
     Texfunc,
     Mixfunc,
+    Texdata,
+    Mixdata,
     BrtdFunc,
     Plasfunc,
     Metfunc,
@@ -111,6 +111,8 @@ impl PrimitiveType {
             "colordata" => Self::Colordata,
             "texfunc" => Self::Texfunc,
             "mixfunc" => Self::Mixfunc,
+            "texdata" => Self::Texdata,
+            "mixdata" => Self::Mixdata,
             "BRTDfunc" => Self::BrtdFunc,
             "plasfunc" => Self::Plasfunc,
             "metfunc" => Self::Metfunc,
@@ -156,6 +158,8 @@ impl PrimitiveType {
             Self::Colordata => "colordata",
             Self::Texfunc => "texfunc",
             Self::Mixfunc => "mixfunc",
+            Self::Texdata => "texdata",
+            Self::Mixdata => "mixdata",
             Self::BrtdFunc => "BRTDfunc",
             Self::Plasfunc => "plasfunc",
             Self::Metfunc => "metfunc",
@@ -226,6 +230,8 @@ impl PrimitiveType {
             | Self::Colordata
             | Self::Texfunc
             | Self::Mixfunc
+            | Self::Texdata
+            | Self::Mixdata
             | Self::BrtdFunc
             | Self::Polygon
             | Self::Antimatter => &[],
@@ -249,7 +255,9 @@ impl PrimitiveType {
             | Self::Brightdata
             | Self::Colordata
             | Self::Texfunc
-            | Self::Mixfunc => {
+            | Self::Mixfunc
+            | Self::Texdata
+            | Self::Mixdata => {
                 format!("real argument {number} (A{number})")
             }
             Self::BrtdFunc => match index {

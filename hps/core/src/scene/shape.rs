@@ -214,6 +214,8 @@ pub(crate) fn build(raw: &RawPrimitive<'_>) -> Result<Shape, SceneError> {
         | PrimitiveType::Colordata
         | PrimitiveType::Texfunc
         | PrimitiveType::Mixfunc
+        | PrimitiveType::Texdata
+        | PrimitiveType::Mixdata
         | PrimitiveType::BrtdFunc
         | PrimitiveType::Plasfunc
         | PrimitiveType::Metfunc

@@ -2,7 +2,7 @@
 //! compiled as [`Modulation`]s over a plain material, a `BRTDfunc` or a `mixfunc`.
 
 use super::loader::FunctionLoader;
-use super::varying::{Modulation, VaryingBase, VaryingMaterial};
+use super::varying::{DataLookup, MixCoefficient, Modulation, VaryingBase, VaryingMaterial};
 use crate::engine::error::EngineError;
 use crate::engine::material::{AnisotropicMaterial, BrdfFunctionMaterial, BrtdMaterial, Material};
 use crate::engine::sky::SkyFunction;
@@ -90,7 +90,9 @@ fn is_function(kind: &ModifierKind, emitter: bool) -> bool {
         | ModifierKind::Brightdata(_)
         | ModifierKind::Colordata(_)
         | ModifierKind::Texfunc(_)
+        | ModifierKind::Texdata(_)
         | ModifierKind::Mixfunc(_)
+        | ModifierKind::Mixdata(_)
         | ModifierKind::BrtdFunc(_)
         | ModifierKind::BrdfFunc(_)
         | ModifierKind::Anisotropic(_) => true,
@@ -103,7 +105,10 @@ fn modulation(m: &Modifier, loader: &mut FunctionLoader) -> Result<Modulation, E
         ModifierKind::Brightfunc(b) => Modulation::Pattern(loader.compile(m, &b.function, 1)?),
         ModifierKind::Colorfunc(f) => Modulation::Pattern(loader.compile(m, f, 3)?),
         ModifierKind::Texfunc(f) => Modulation::Texture(loader.compile(m, f, 3)?),
-        ModifierKind::Brightdata(d) | ModifierKind::Colordata(d) => data_modulation(m, d, loader)?,
+        ModifierKind::Brightdata(d) | ModifierKind::Colordata(d) => {
+            Modulation::Data(data_lookup(m, d, loader)?)
+        }
+        ModifierKind::Texdata(d) => Modulation::DataTexture(data_lookup(m, d, loader)?),
         other => {
             return Err(EngineError::Unsupported {
                 at: m.origin.clone(),
@@ -113,13 +118,13 @@ fn modulation(m: &Modifier, loader: &mut FunctionLoader) -> Result<Modulation, E
     })
 }
 
-/// A data pattern: its coordinates compiled, its arrays read, their dimensions checked
-/// against the coordinates, its functions checked to exist.
-fn data_modulation(
+/// A data pattern, texture or mixture: its coordinates compiled, its arrays read, their
+/// dimensions checked against the coordinates, its functions checked to exist.
+fn data_lookup(
     m: &Modifier,
     d: &DataPattern,
     loader: &mut FunctionLoader,
-) -> Result<Modulation, EngineError> {
+) -> Result<DataLookup, EngineError> {
     let coordinates = loader.compile(m, &d.function, d.function.expressions.len())?;
     let fail = |what: String| EngineError::Unsupported {
         at: m.origin.clone(),
@@ -147,7 +152,7 @@ fn data_modulation(
             d.function.cal_file
         )));
     }
-    Ok(Modulation::Data {
+    Ok(DataLookup {
         coordinates,
         functions: d.functions.clone(),
         arrays,
@@ -170,8 +175,13 @@ fn base(
         ModifierKind::Anisotropic(a) => {
             VaryingBase::Anisotropic(Box::new(anisotropic(m, a, loader)?))
         }
+        ModifierKind::Mixdata(mix) => VaryingBase::Mix {
+            coefficient: MixCoefficient::Data(data_lookup(m, &mix.data, loader)?),
+            foreground: Box::new(material_of(scene, mix.foreground, surface, loader)?),
+            background: Box::new(material_of(scene, mix.background, surface, loader)?),
+        },
         ModifierKind::Mixfunc(mix) => VaryingBase::Mix {
-            coefficient: loader.compile(m, &mix.function, 1)?,
+            coefficient: MixCoefficient::Function(loader.compile(m, &mix.function, 1)?),
             foreground: Box::new(material_of(scene, mix.foreground, surface, loader)?),
             background: Box::new(material_of(scene, mix.background, surface, loader)?),
         },

@@ -509,7 +509,9 @@ impl Material {
             | ModifierKind::Brightdata(_)
             | ModifierKind::Colordata(_)
             | ModifierKind::Texfunc(_)
+            | ModifierKind::Texdata(_)
             | ModifierKind::Mixfunc(_)
+            | ModifierKind::Mixdata(_)
             | ModifierKind::BrtdFunc(_)
             | ModifierKind::BrdfFunc(_)
             | ModifierKind::Anisotropic(_) => {
