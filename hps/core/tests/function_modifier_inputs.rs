@@ -145,6 +145,20 @@ fn function_and_anisotropic_materials_name_what_is_missing() {
         let err = engine_error(&surface(material), files);
         assert_names(&err, 2, fragments);
     }
+    // A texdata and a mixdata above a plastic: the texture's or the mixture's line is named.
+    let plastic = "void plastic p 0 0 5 .5 .5 .5 0 0";
+    let textured = format!("# room\n{plastic}\nvoid texdata x 8 first second third one.dat absent.dat one.dat f.cal up\n0 0\nx plastic m 0 0 5 .5 .5 .5 0 0\n{SURFACE}");
+    let tex_cal = (
+        "f.cal",
+        "first(a, b, c) = a;\nsecond(a, b, c) = b;\nthird(a, b, c) = c;\nup = Pz;\n",
+    );
+    let err = engine_error(&textured, &[tex_cal, dat]);
+    assert_names(&err, 3, &["texdata `x`", "absent.dat", "not found"]);
+    let mixed = format!(
+        "# room\n{plastic}\nvoid mixdata m 6 p void nofunc one.dat f.cal up\n0 0\n{SURFACE}"
+    );
+    let err = engine_error(&mixed, &[tex_cal, dat]);
+    assert_names(&err, 3, &["mixdata `m`", "nofunc", "not defined"]);
 }
 
 /// A well-formed data file of `dims` dimensions with the given counts.

@@ -157,6 +157,8 @@ fn primitive() -> impl Strategy<Value = String> {
             ("plastic2", 6),
             ("metal2", 6),
             ("trans2", 8),
+            ("texdata", 0),
+            ("mixdata", 0),
         ]),
         prop::sample::select(vec!["void", "void", "m", "m", "m", "sky", "x"]),
         prop::sample::select(vec!["m", "sky", "p"]),
@@ -185,6 +187,10 @@ fn primitive() -> impl Strategy<Value = String> {
                 ("metdata" | "transdata", 1) => "6 f d.dat f.cal x y -s",
                 ("plastic2" | "metal2" | "trans2", 0) => "4 1 0 0 .",
                 ("plastic2" | "metal2" | "trans2", 1) => "4 ux uy uz f.cal -rx 30",
+                ("texdata", 0) => "9 f g h x.dat y.dat z.dat f.cal Px Py",
+                ("texdata", 1) => "8 f g h x.dat y.dat z.dat f.cal",
+                ("mixdata", 0) => "6 m void f d.dat f.cal Px",
+                ("mixdata", 1) => "8 nowhere m f d.dat f.cal Px -s 2",
                 _ => "0",
             };
             let reals: Vec<String> = reals.iter().map(f64::to_string).collect();

@@ -258,6 +258,18 @@ mod tests {
                 "void plasfunc p\n2 lobe f.cal\n0\n4 .5 .5 .5 1.5\n",
                 "between 0 and 1",
             ),
+            (
+                "void texdata t\n7 f g h x.dat y.dat z.dat f.cal\n0\n0\n",
+                "at least 8",
+            ),
+            (
+                "void mixdata x\n5 void void f d.dat f.cal\n0\n0\n",
+                "at least 6",
+            ),
+            (
+                "void mixdata x\n6 nowhere void f d.dat f.cal Px\n0\n0\n",
+                "`nowhere`",
+            ),
         ];
         for (text, expected) in cases {
             let text = format!("# a comment\n{text}");
