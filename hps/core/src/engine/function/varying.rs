@@ -1,5 +1,6 @@
-//! Materials that change from hit to hit: a material under `brightfunc`/`colorfunc`
-//! patterns and `texfunc` textures, a `BRTDfunc`, a `mixfunc` of two modifiers. Each is
+//! Materials that change from hit to hit: a material under `brightfunc`/`colorfunc`/
+//! `brightdata`/`colordata` patterns and `texfunc`/`texdata` textures, a `BRTDfunc`, a
+//! function or anisotropic material, a `mixfunc` or `mixdata` of two modifiers. Each is
 //! resolved at a hit into a plain [`Material`] and a shading normal, which the integrator
 //! then uses as it uses any other; it never learns which kind it was.
 
