@@ -1,13 +1,15 @@
 //! The material of a modifier chain that holds function modifiers: patterns and textures
 //! compiled as [`Modulation`]s over a plain material, a `BRTDfunc` or a `mixfunc`.
 
-use super::loader::FunctionLoader;
+use super::data::DataArray;
+use super::loader::{CompiledFunction, FunctionLoader};
 use super::varying::{DataLookup, MixCoefficient, Modulation, VaryingBase, VaryingMaterial};
 use crate::engine::error::EngineError;
 use crate::engine::material::{AnisotropicMaterial, BrdfFunctionMaterial, BrtdMaterial, Material};
 use crate::engine::sky::SkyFunction;
 use crate::scene::{
-    Anisotropic, BrdfFunc, DataPattern, Modifier, ModifierKind, ModifierRef, Scene, Surface,
+    Anisotropic, BrdfFunc, DataPattern, FunctionArgs, Modifier, ModifierKind, ModifierRef, Scene,
+    Surface,
 };
 use std::sync::Arc;
 
@@ -125,32 +127,14 @@ fn data_lookup(
     d: &DataPattern,
     loader: &mut FunctionLoader,
 ) -> Result<DataLookup, EngineError> {
-    let coordinates = loader.compile(m, &d.function, d.function.expressions.len())?;
-    let fail = |what: String| EngineError::Unsupported {
-        at: m.origin.clone(),
-        what: format!("{} `{}`: {what}", m.kind.type_name(), m.name),
-    };
+    let dimensions = d.function.expressions.len();
+    let coordinates = loader.compile(m, &d.function, dimensions)?;
     let mut arrays = Vec::new();
     for name in &d.data_files {
-        let array = loader.data(m, name, &d.function.scene_dir)?;
-        if array.dimension_count() != d.function.expressions.len() {
-            return Err(fail(format!(
-                "data file {name} has {} dimension(s) but {} coordinate expression(s) are given",
-                array.dimension_count(),
-                d.function.expressions.len()
-            )));
-        }
-        arrays.push(array);
+        arrays.push(data_array(m, name, &d.function, dimensions, loader)?);
     }
-    if let Some(name) = d
-        .functions
-        .iter()
-        .find(|f| coordinates.parameter_count(f).is_none())
-    {
-        return Err(fail(format!(
-            "function `{name}` is not defined in {} nor in the library",
-            d.function.cal_file
-        )));
+    for name in &d.functions {
+        defined(m, &coordinates, name)?;
     }
     Ok(DataLookup {
         coordinates,
@@ -175,19 +159,73 @@ fn base(
         ModifierKind::Anisotropic(a) => {
             VaryingBase::Anisotropic(Box::new(anisotropic(m, a, loader)?))
         }
-        ModifierKind::Mixdata(mix) => VaryingBase::Mix {
-            coefficient: MixCoefficient::Data(data_lookup(m, &mix.data, loader)?),
-            foreground: Box::new(material_of(scene, mix.foreground, surface, loader)?),
-            background: Box::new(material_of(scene, mix.background, surface, loader)?),
-        },
-        ModifierKind::Mixfunc(mix) => VaryingBase::Mix {
-            coefficient: MixCoefficient::Function(loader.compile(m, &mix.function, 1)?),
-            foreground: Box::new(material_of(scene, mix.foreground, surface, loader)?),
-            background: Box::new(material_of(scene, mix.background, surface, loader)?),
-        },
+        ModifierKind::Mixdata(mix) => {
+            let coefficient = MixCoefficient::Data(data_lookup(m, &mix.data, loader)?);
+            mixture(
+                scene,
+                coefficient,
+                [mix.foreground, mix.background],
+                surface,
+                loader,
+            )?
+        }
+        ModifierKind::Mixfunc(mix) => {
+            let coefficient = MixCoefficient::Function(loader.compile(m, &mix.function, 1)?);
+            mixture(
+                scene,
+                coefficient,
+                [mix.foreground, mix.background],
+                surface,
+                loader,
+            )?
+        }
         // Its patterns are the chain's modulations.
         _ => VaryingBase::Plain(Material::from_modifier(surface, Some(m), Vec::new())?),
     })
+}
+
+/// An error naming the modifier `m`, its scene file and line.
+fn failure(m: &Modifier, what: String) -> EngineError {
+    EngineError::Unsupported {
+        at: m.origin.clone(),
+        what: format!("{} `{}`: {what}", m.kind.type_name(), m.name),
+    }
+}
+
+/// Fails unless `function`'s file or the library defines `name`.
+fn defined(m: &Modifier, function: &CompiledFunction, name: &str) -> Result<(), EngineError> {
+    match function.parameter_count(name) {
+        Some(_) => Ok(()),
+        None => Err(failure(
+            m,
+            format!(
+                "function `{name}` is not defined in {} nor in the library",
+                function.args.cal_file
+            ),
+        )),
+    }
+}
+
+/// The data file `name` of `m`, read once, with `dimensions` dimensions (one per coordinate
+/// the modifier gives).
+fn data_array(
+    m: &Modifier,
+    name: &str,
+    args: &FunctionArgs,
+    dimensions: usize,
+    loader: &mut FunctionLoader,
+) -> Result<Arc<DataArray>, EngineError> {
+    let array = loader.data(m, name, &args.scene_dir)?;
+    if array.dimension_count() != dimensions {
+        return Err(failure(
+            m,
+            format!(
+                "data file {name} has {} dimension(s) but {dimensions} coordinate(s) are given",
+                array.dimension_count()
+            ),
+        ));
+    }
+    Ok(array)
 }
 
 /// A function material: its file compiled, the function of the source direction and the
@@ -199,30 +237,16 @@ fn brdf_function(
     loader: &mut FunctionLoader,
 ) -> Result<BrdfFunctionMaterial, EngineError> {
     let function = loader.compile(m, &f.function, 0)?;
-    let fail = |what: String| EngineError::Unsupported {
-        at: m.origin.clone(),
-        what: format!("{} `{}`: {what}", m.kind.type_name(), m.name),
-    };
-    if function.parameter_count(&f.function_name).is_none() {
-        return Err(fail(format!(
-            "function `{}` is not defined in {} nor in the library",
-            f.function_name, f.function.cal_file
-        )));
-    }
+    defined(m, &function, &f.function_name)?;
     let data = match &f.data {
         None => None,
-        Some(d) => {
-            let array = loader.data(m, &d.data_file, &f.function.scene_dir)?;
-            if array.dimension_count() != d.coordinate_functions.len() {
-                return Err(fail(format!(
-                    "data file {} has {} dimension(s) but {} coordinate function(s) are given",
-                    d.data_file,
-                    array.dimension_count(),
-                    d.coordinate_functions.len()
-                )));
-            }
-            Some(array)
-        }
+        Some(d) => Some(data_array(
+            m,
+            &d.data_file,
+            &f.function,
+            d.coordinate_functions.len(),
+            loader,
+        )?),
     };
     Ok(BrdfFunctionMaterial {
         fractions: f.fractions.clone(),
@@ -243,6 +267,21 @@ fn anisotropic(
         u_roughness: a.u_roughness,
         v_roughness: a.v_roughness,
         orientation: loader.compile(m, &a.orientation, ORIENTATION_EXPRESSIONS)?,
+    })
+}
+
+/// A `mixfunc` or `mixdata` of the `sides` (foreground, background).
+fn mixture(
+    scene: &Scene,
+    coefficient: MixCoefficient,
+    sides: [ModifierRef; 2],
+    surface: &Surface,
+    loader: &mut FunctionLoader,
+) -> Result<VaryingBase, EngineError> {
+    Ok(VaryingBase::Mix {
+        coefficient,
+        foreground: Box::new(material_of(scene, sides[0], surface, loader)?),
+        background: Box::new(material_of(scene, sides[1], surface, loader)?),
     })
 }
 
