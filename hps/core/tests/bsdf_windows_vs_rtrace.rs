@@ -25,23 +25,11 @@
 mod common;
 
 use common::compare::{compare_with_rtrace, sky, Effort};
+use common::corpus::corpus;
 use common::radiance::radiance_or_skip;
 use skylux_hps::engine::World;
 use skylux_hps::scene;
 use std::path::{Path, PathBuf};
-
-fn corpus() -> PathBuf {
-    let root = std::env::var_os("SKYLUX_DATA_DIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data"));
-    let corpus = root.join("radiance-corpus");
-    assert!(
-        corpus.join("README.md").is_file(),
-        "the RADIANCE corpus is missing at {}",
-        corpus.display()
-    );
-    corpus
-}
 
 /// rtrace's converged setting for BSDF scenes (see the module comment for `-st 0`).
 const RTRACE_BSDF: &[&str] = &[

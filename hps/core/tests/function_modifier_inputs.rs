@@ -94,6 +94,73 @@ fn a_brtdfunc_with_too_few_arguments_is_a_scene_error() {
     );
 }
 
+/// A material's line, the files beside it (name, text), and fragments its error must hold.
+type Case<'a> = (&'a str, &'a [(&'a str, &'a str)], &'a [&'a str]);
+
+/// The function and anisotropic materials (`plasfunc` .. `transdata`, `plastic2` ..
+/// `trans2`): a missing `.cal` or `.dat` file, an unknown function name, a data file of the
+/// wrong dimension and an orientation naming an unknown variable are engine errors naming
+/// the scene file, line and material.
+#[test]
+fn function_and_anisotropic_materials_name_what_is_missing() {
+    let cal = (
+        "f.cal",
+        "lobe(lx, ly, lz, om) = 0.2;\nscale(v, lx, ly, lz, om) = v;\nup(lx, ly, lz, om) = lz;\n",
+    );
+    let dat = ("one.dat", "1\n0 1 3\n0.5 1 2\n");
+    let surface = |m: &str| format!("# room\n{m}\n{}", SURFACE.replace("m polygon", "x polygon"));
+    let cases: [Case; 6] = [
+        (
+            "void plasfunc x 2 lobe absent.cal\n0\n4 .5 .5 .5 .1",
+            &[],
+            &["plasfunc `x`", "absent.cal", "not found"],
+        ),
+        (
+            "void metfunc x 2 nolobe f.cal\n0\n4 .5 .5 .5 .1",
+            &[cal],
+            &["metfunc `x`", "nolobe", "not defined"],
+        ),
+        (
+            "void transdata x 4 scale absent.dat f.cal up\n0\n6 .5 .5 .5 .1 .5 .5",
+            &[cal],
+            &["transdata `x`", "absent.dat", "not found"],
+        ),
+        (
+            "void plasdata x 4 noscale one.dat f.cal up\n0\n4 .5 .5 .5 .1",
+            &[cal, dat],
+            &["plasdata `x`", "noscale", "not defined"],
+        ),
+        (
+            "void metdata x 5 scale one.dat f.cal up up\n0\n4 .5 .5 .5 .1",
+            &[cal, dat],
+            &["metdata `x`", "1 dimension(s)", "2 coordinate"],
+        ),
+        (
+            "void plastic2 x 4 ux 0 0 f.cal\n0\n6 .5 .5 .5 .1 .1 .2",
+            &[cal],
+            &["plastic2 `x`", "ux"],
+        ),
+    ];
+    for (material, files, fragments) in cases {
+        let err = engine_error(&surface(material), files);
+        assert_names(&err, 2, fragments);
+    }
+    // A texdata and a mixdata above a plastic: the texture's or the mixture's line is named.
+    let plastic = "void plastic p 0 0 5 .5 .5 .5 0 0";
+    let textured = format!("# room\n{plastic}\nvoid texdata x 8 first second third one.dat absent.dat one.dat f.cal up\n0 0\nx plastic m 0 0 5 .5 .5 .5 0 0\n{SURFACE}");
+    let tex_cal = (
+        "f.cal",
+        "first(a, b, c) = a;\nsecond(a, b, c) = b;\nthird(a, b, c) = c;\nup = Pz;\n",
+    );
+    let err = engine_error(&textured, &[tex_cal, dat]);
+    assert_names(&err, 3, &["texdata `x`", "absent.dat", "not found"]);
+    let mixed = format!(
+        "# room\n{plastic}\nvoid mixdata m 6 p void nofunc one.dat f.cal up\n0 0\n{SURFACE}"
+    );
+    let err = engine_error(&mixed, &[tex_cal, dat]);
+    assert_names(&err, 3, &["mixdata `m`", "nofunc", "not defined"]);
+}
+
 /// A well-formed data file of `dims` dimensions with the given counts.
 fn data_text(counts: &[usize], irregular: &[bool], values: &[f64]) -> String {
     let mut text = format!("{}\n", counts.len());

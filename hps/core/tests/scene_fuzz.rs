@@ -150,6 +150,15 @@ fn primitive() -> impl Strategy<Value = String> {
             ("illum", 3),
             ("antimatter", 0),
             ("alias", 0),
+            ("plasfunc", 4),
+            ("metdata", 4),
+            ("transfunc", 6),
+            ("transdata", 7),
+            ("plastic2", 6),
+            ("metal2", 6),
+            ("trans2", 8),
+            ("texdata", 0),
+            ("mixdata", 0),
         ]),
         prop::sample::select(vec!["void", "void", "m", "m", "m", "sky", "x"]),
         prop::sample::select(vec!["m", "sky", "p"]),
@@ -172,6 +181,16 @@ fn primitive() -> impl Strategy<Value = String> {
                 ("illum", 1) => "1 void",
                 ("antimatter", 0) => "1 m",
                 ("antimatter", 1) => "2 void m",
+                ("plasfunc" | "transfunc", 0) => "2 lobe f.cal",
+                ("plasfunc" | "transfunc", 1) => "3 lobe f.cal -rz",
+                ("metdata" | "transdata", 0) => "4 f d.dat f.cal x",
+                ("metdata" | "transdata", 1) => "6 f d.dat f.cal x y -s",
+                ("plastic2" | "metal2" | "trans2", 0) => "4 1 0 0 .",
+                ("plastic2" | "metal2" | "trans2", 1) => "4 ux uy uz f.cal -rx 30",
+                ("texdata", 0) => "9 f g h x.dat y.dat z.dat f.cal Px Py",
+                ("texdata", 1) => "8 f g h x.dat y.dat z.dat f.cal",
+                ("mixdata", 0) => "6 m void f d.dat f.cal Px",
+                ("mixdata", 1) => "8 nowhere m f d.dat f.cal Px -s 2",
                 _ => "0",
             };
             let reals: Vec<String> = reals.iter().map(f64::to_string).collect();
@@ -200,6 +219,8 @@ fn traceable_primitive() -> impl Strategy<Value = String> {
             "window_glass",
             "lamp",
             "copy",
+            "brushed",
+            "frosted",
             "void",
         ]),
         prop::sample::select(vec![
@@ -241,7 +262,9 @@ const SCENE_MATERIALS: &str = "void dielectric crystal 0 0 5 .8 .8 .8 1.5 0\n\
     void glow lamp 0 0 4 5 5 5 0\n\
     inherit alias copy crystal\n\
     void antimatter hole 2 m crystal 0 0\n\
-    void antimatter erase 1 void 0 0\n";
+    void antimatter erase 1 void 0 0\n\
+    void metal2 brushed 4 1 0 0 . 0 6 .8 .7 .6 .6 .04 .3\n\
+    void trans2 frosted 4 0 1 0 . 0 8 .8 .8 .8 .05 .2 .05 .6 .4\n";
 
 /// Words of inline command lines: programs, their options, numbers and shell syntax.
 fn command_word() -> impl Strategy<Value = String> {

@@ -171,8 +171,20 @@ pub(crate) fn data_pattern(
     raw: &RawPrimitive<'_>,
     channels: usize,
 ) -> Result<DataPattern, SceneError> {
-    let names = 2 * channels;
-    let synopsis = if channels == 1 {
+    data_pattern_after(raw, channels, 0)
+}
+
+/// [`data_pattern`] from string argument `first` on (`mixdata` names its two modifiers
+/// first).
+pub(crate) fn data_pattern_after(
+    raw: &RawPrimitive<'_>,
+    channels: usize,
+    first: usize,
+) -> Result<DataPattern, SceneError> {
+    let names = first + 2 * channels;
+    let synopsis = if first > 0 {
+        "foreground background func datafile funcfile x1 .. xn [transform]"
+    } else if channels == 1 {
         "func datafile funcfile x1 .. xn [transform]"
     } else {
         "rfunc gfunc bfunc rdatafile gdatafile bdatafile funcfile x1 .. xn [transform]"
@@ -194,11 +206,11 @@ pub(crate) fn data_pattern(
         .collect();
     let scene_dir = raw.at.file.parent().map(PathBuf::from).unwrap_or_default();
     Ok(DataPattern {
-        functions: raw.strings[..channels]
+        functions: raw.strings[first..first + channels]
             .iter()
             .map(|s| s.to_string())
             .collect(),
-        data_files: raw.strings[channels..names]
+        data_files: raw.strings[first + channels..names]
             .iter()
             .map(|s| s.to_string())
             .collect(),

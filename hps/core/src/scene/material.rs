@@ -5,9 +5,12 @@
 //! channel, kept as a `DVec3` (x = red, y = green, z = blue) so the engine can do channel-wise
 //! arithmetic on them.
 
+use super::brdf_material::{anisotropic, brdf_func, Anisotropic, BrdfFunc, NormalFamily};
 use super::bsdf_modifier::{self, BsdfModifier};
 use super::error::{ArgumentList, SceneError};
-use super::function::{brtd, data_pattern, function_args, BrtdFunc, DataPattern, FunctionArgs};
+use super::function::{
+    brtd, data_pattern, data_pattern_after, function_args, BrtdFunc, DataPattern, FunctionArgs,
+};
 use super::parse::{PrimitiveType, RawPrimitive};
 use glam::DVec3;
 use std::path::Path;
@@ -61,7 +64,14 @@ pub enum ModifierKind {
     Colordata(DataPattern),
     Texfunc(FunctionArgs),
     Mixfunc(Mixfunc),
+    /// `texdata`: a texture from three data files (t_data.c).
+    Texdata(DataPattern),
+    Mixdata(Mixdata),
     BrtdFunc(BrtdFunc),
+    /// `plasfunc`, `metfunc`, `transfunc`, `plasdata`, `metdata`, `transdata`.
+    BrdfFunc(BrdfFunc),
+    /// `plastic2`, `metal2`, `trans2`.
+    Anisotropic(Anisotropic),
 }
 
 impl ModifierKind {
@@ -90,7 +100,22 @@ impl ModifierKind {
             ModifierKind::Colordata(_) => "colordata",
             ModifierKind::Texfunc(_) => "texfunc",
             ModifierKind::Mixfunc(_) => "mixfunc",
+            ModifierKind::Texdata(_) => "texdata",
+            ModifierKind::Mixdata(_) => "mixdata",
             ModifierKind::BrtdFunc(_) => "BRTDfunc",
+            ModifierKind::BrdfFunc(f) => match (f.fractions.family, f.data.is_some()) {
+                (NormalFamily::Plastic, false) => "plasfunc",
+                (NormalFamily::Metal, false) => "metfunc",
+                (NormalFamily::Trans, false) => "transfunc",
+                (NormalFamily::Plastic, true) => "plasdata",
+                (NormalFamily::Metal, true) => "metdata",
+                (NormalFamily::Trans, true) => "transdata",
+            },
+            ModifierKind::Anisotropic(a) => match a.fractions.family {
+                NormalFamily::Plastic => "plastic2",
+                NormalFamily::Metal => "metal2",
+                NormalFamily::Trans => "trans2",
+            },
         }
     }
 
@@ -104,6 +129,7 @@ impl ModifierKind {
                 | ModifierKind::Brightdata(_)
                 | ModifierKind::Colordata(_)
                 | ModifierKind::Texfunc(_)
+                | ModifierKind::Texdata(_)
         )
     }
 }
@@ -209,6 +235,16 @@ pub struct Mixfunc {
     pub background: ModifierRef,
     /// One expression: the coefficient.
     pub function: FunctionArgs,
+}
+
+/// `mixdata`: blends two modifiers by a coefficient interpolated in a data file and passed
+/// through a function (manual §2.1.6, `src/rt/mx_data.c`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mixdata {
+    pub foreground: ModifierRef,
+    pub background: ModifierRef,
+    /// One function (of the interpolated value), one data file, the coordinates.
+    pub data: DataPattern,
 }
 
 /// Refractive index RADIANCE's `dielectric` adds per unit of Hartmann constant: the constant
@@ -401,7 +437,18 @@ pub(crate) fn build(
         | PrimitiveType::Colordata
         | PrimitiveType::Texfunc
         | PrimitiveType::Mixfunc
+        | PrimitiveType::Texdata
+        | PrimitiveType::Mixdata
         | PrimitiveType::BrtdFunc => function_modifier(raw, resolve)?,
+        PrimitiveType::Plasfunc
+        | PrimitiveType::Metfunc
+        | PrimitiveType::Transfunc
+        | PrimitiveType::Plasdata
+        | PrimitiveType::Metdata
+        | PrimitiveType::Transdata => ModifierKind::BrdfFunc(brdf_func(raw)?),
+        PrimitiveType::Plastic2 | PrimitiveType::Metal2 | PrimitiveType::Trans2 => {
+            ModifierKind::Anisotropic(anisotropic(raw)?)
+        }
         PrimitiveType::Polygon
         | PrimitiveType::Sphere
         | PrimitiveType::Cylinder
@@ -561,21 +608,7 @@ fn function_modifier(
         T::Mixfunc => {
             let function =
                 function_args(raw, 3, "foreground background vname funcfile [transform]")?;
-            let modifier = |i: usize, field: &'static str| {
-                let name = &function.expressions[i];
-                if name == "void" {
-                    return Ok(ModifierRef::Void);
-                }
-                resolve(name).ok_or_else(|| SceneError::UnknownModifier {
-                    at: raw.at.clone(),
-                    primitive: raw.describe(),
-                    field,
-                    modifier: name.clone(),
-                    hint: String::new(),
-                })
-            };
-            let foreground = modifier(0, "string argument 1 (foreground)")?;
-            let background = modifier(1, "string argument 2 (background)")?;
+            let (foreground, background) = mixture_sides(raw, resolve)?;
             ModifierKind::Mixfunc(Mixfunc {
                 foreground,
                 background,
@@ -586,6 +619,16 @@ fn function_modifier(
             })
         }
         T::BrtdFunc => ModifierKind::BrtdFunc(brtd(raw)?),
+        T::Texdata => ModifierKind::Texdata(data_pattern(raw, 3)?),
+        T::Mixdata => {
+            let data = data_pattern_after(raw, 1, 2)?;
+            let (foreground, background) = mixture_sides(raw, resolve)?;
+            ModifierKind::Mixdata(Mixdata {
+                foreground,
+                background,
+                data,
+            })
+        }
         T::Brightdata => ModifierKind::Brightdata(data_pattern(raw, 1)?),
         T::Colordata => ModifierKind::Colordata(data_pattern(raw, 3)?),
         _ => {
@@ -596,6 +639,31 @@ fn function_modifier(
             ))
         }
     })
+}
+
+/// The two modifiers a `mixfunc` or `mixdata` names first, each defined before it or
+/// `void` (its string count already checked).
+fn mixture_sides(
+    raw: &RawPrimitive<'_>,
+    resolve: &dyn Fn(&str) -> Option<ModifierRef>,
+) -> Result<(ModifierRef, ModifierRef), SceneError> {
+    let side = |i: usize, field: &'static str| {
+        let name = raw.strings[i];
+        if name == "void" {
+            return Ok(ModifierRef::Void);
+        }
+        resolve(name).ok_or_else(|| SceneError::UnknownModifier {
+            at: raw.at.clone(),
+            primitive: raw.describe(),
+            field,
+            modifier: name.to_string(),
+            hint: String::new(),
+        })
+    };
+    Ok((
+        side(0, "string argument 1 (foreground)")?,
+        side(1, "string argument 2 (background)")?,
+    ))
 }
 
 /// Reflectances and transmissivities below zero have no physical meaning (RADIANCE accepts

@@ -18,6 +18,7 @@
 //! ```
 
 mod alias;
+mod brdf_material;
 mod bsdf_modifier;
 mod command;
 mod error;
@@ -33,13 +34,14 @@ mod sensors;
 mod shape;
 mod xform;
 
+pub use brdf_material::{Anisotropic, BrdfData, BrdfFunc, NormalFamily, NormalFractions};
 pub use bsdf_modifier::{BsdfModifier, BsdfType};
 pub use error::{ArgumentList, SceneError, SourceLocation, SUPPORTED_TYPES};
 pub use expand::{LoadOptions, MAX_INCLUDE_DEPTH, MAX_PRIMITIVES};
 pub use function::{BrtdFunc, DataPattern, FunctionArgs, FunctionTransform};
 pub use material::{
-    Antimatter, Brightfunc, Dielectric, Glass, Glow, Illum, Light, Medium, Metal, Mirror, Mixfunc,
-    ModifierId, ModifierKind, ModifierRef, Plastic, Spotlight, Trans,
+    Antimatter, Brightfunc, Dielectric, Glass, Glow, Illum, Light, Medium, Metal, Mirror, Mixdata,
+    Mixfunc, ModifierId, ModifierKind, ModifierRef, Plastic, Spotlight, Trans,
     GLASS_DEFAULT_REFRACTIVE_INDEX, HARTMANN_MEAN_WAVELENGTH_NM,
 };
 pub use primitive::Primitive;

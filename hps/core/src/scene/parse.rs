@@ -18,23 +18,8 @@ pub(crate) const OTHER_RADIANCE_TYPES: &[&str] = &[
     "prism1",
     "prism2",
     "mist",
-    "plastic2",
-    "metal2",
-    "trans2",
     "ashik2",
     "WGMDfunc",
-    "plasfunc",
-    "metfunc",
-    "transfunc",
-    "BRTDfunc",
-    "plasdata",
-    "metdata",
-    "transdata",
-    "texfunc",
-    "texdata",
-    "colorfunc",
-    "brightdata",
-    "colordata",
     "colorpict",
     "colortext",
     "brighttext",
@@ -43,8 +28,6 @@ pub(crate) const OTHER_RADIANCE_TYPES: &[&str] = &[
     "specfunc",
     "specdata",
     "specpict",
-    "mixfunc",
-    "mixdata",
     "mixpict",
     "mixtext",
     "alias",
@@ -73,7 +56,18 @@ pub(crate) enum PrimitiveType {
     Colordata,
     Texfunc,
     Mixfunc,
+    Texdata,
+    Mixdata,
     BrtdFunc,
+    Plasfunc,
+    Metfunc,
+    Transfunc,
+    Plasdata,
+    Metdata,
+    Transdata,
+    Plastic2,
+    Metal2,
+    Trans2,
     Polygon,
     Sphere,
     Cylinder,
@@ -111,7 +105,18 @@ impl PrimitiveType {
             "colordata" => Self::Colordata,
             "texfunc" => Self::Texfunc,
             "mixfunc" => Self::Mixfunc,
+            "texdata" => Self::Texdata,
+            "mixdata" => Self::Mixdata,
             "BRTDfunc" => Self::BrtdFunc,
+            "plasfunc" => Self::Plasfunc,
+            "metfunc" => Self::Metfunc,
+            "transfunc" => Self::Transfunc,
+            "plasdata" => Self::Plasdata,
+            "metdata" => Self::Metdata,
+            "transdata" => Self::Transdata,
+            "plastic2" => Self::Plastic2,
+            "metal2" => Self::Metal2,
+            "trans2" => Self::Trans2,
             "polygon" => Self::Polygon,
             "sphere" => Self::Sphere,
             "cylinder" => Self::Cylinder,
@@ -147,7 +152,18 @@ impl PrimitiveType {
             Self::Colordata => "colordata",
             Self::Texfunc => "texfunc",
             Self::Mixfunc => "mixfunc",
+            Self::Texdata => "texdata",
+            Self::Mixdata => "mixdata",
             Self::BrtdFunc => "BRTDfunc",
+            Self::Plasfunc => "plasfunc",
+            Self::Metfunc => "metfunc",
+            Self::Transfunc => "transfunc",
+            Self::Plasdata => "plasdata",
+            Self::Metdata => "metdata",
+            Self::Transdata => "transdata",
+            Self::Plastic2 => "plastic2",
+            Self::Metal2 => "metal2",
+            Self::Trans2 => "trans2",
             Self::Polygon => "polygon",
             Self::Sphere => "sphere",
             Self::Cylinder => "cylinder",
@@ -185,6 +201,16 @@ impl PrimitiveType {
             Self::Interface => &["rtn1", "gtn1", "btn1", "n1", "rtn2", "gtn2", "btn2", "n2"],
             Self::Spotlight => &["red", "green", "blue", "angle", "xdir", "ydir", "zdir"],
             Self::Glow => &["red", "green", "blue", "maxrad"],
+            Self::Plastic2 | Self::Metal2 => &["red", "green", "blue", "spec", "urough", "vrough"],
+            Self::Trans2 => &[
+                "red", "green", "blue", "rspec", "urough", "vrough", "trans", "tspec",
+            ],
+            Self::Plasfunc | Self::Metfunc | Self::Plasdata | Self::Metdata => {
+                &["red", "green", "blue", "spec"]
+            }
+            Self::Transfunc | Self::Transdata => {
+                &["red", "green", "blue", "rspec", "trans", "tspec"]
+            }
             Self::Source => &["xdir", "ydir", "zdir", "angle"],
             Self::Sphere | Self::Bubble => &["xcent", "ycent", "zcent", "radius"],
             Self::Cylinder | Self::Tube => &["x0", "y0", "z0", "x1", "y1", "z1", "rad"],
@@ -198,6 +224,8 @@ impl PrimitiveType {
             | Self::Colordata
             | Self::Texfunc
             | Self::Mixfunc
+            | Self::Texdata
+            | Self::Mixdata
             | Self::BrtdFunc
             | Self::Polygon
             | Self::Antimatter => &[],
@@ -221,7 +249,9 @@ impl PrimitiveType {
             | Self::Brightdata
             | Self::Colordata
             | Self::Texfunc
-            | Self::Mixfunc => {
+            | Self::Mixfunc
+            | Self::Texdata
+            | Self::Mixdata => {
                 format!("real argument {number} (A{number})")
             }
             Self::BrtdFunc => match index {
@@ -230,6 +260,16 @@ impl PrimitiveType {
                     ["rdf", "gdf", "bdf", "rdb", "gdb", "bdb", "rdt", "gdt", "bdt"][index]
                 ),
                 _ => format!("real argument {number} (A{number})"),
+            },
+            // The named reals, then A5 .. (A7 .. for the trans family) for the function.
+            Self::Plasfunc
+            | Self::Metfunc
+            | Self::Transfunc
+            | Self::Plasdata
+            | Self::Metdata
+            | Self::Transdata => match self.real_names().get(index) {
+                Some(name) => format!("real argument {number} ({name})"),
+                None => format!("real argument {number} (A{number})"),
             },
             _ => match self.real_names().get(index) {
                 Some(name) => format!("real argument {number} ({name})"),
@@ -617,6 +657,17 @@ mod tests {
             read_all("# c\n\nvoid light l\n0 0 3 1 1 1\n\nl source s 0 0 4 0 0 1 0.5").unwrap();
         assert_eq!(ps[0].origin.line, 3);
         assert_eq!(ps[1].origin.line, 6);
+    }
+
+    /// The list of other RADIANCE types holds none that Skylux reads (`alias` is read apart).
+    #[test]
+    fn other_types_are_not_supported_ones() {
+        for name in OTHER_RADIANCE_TYPES {
+            assert!(
+                PrimitiveType::from_name(name).is_none(),
+                "{name} is supported"
+            );
+        }
     }
 
     #[test]

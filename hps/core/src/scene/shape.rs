@@ -214,7 +214,18 @@ pub(crate) fn build(raw: &RawPrimitive<'_>) -> Result<Shape, SceneError> {
         | PrimitiveType::Colordata
         | PrimitiveType::Texfunc
         | PrimitiveType::Mixfunc
-        | PrimitiveType::BrtdFunc => {
+        | PrimitiveType::Texdata
+        | PrimitiveType::Mixdata
+        | PrimitiveType::BrtdFunc
+        | PrimitiveType::Plasfunc
+        | PrimitiveType::Metfunc
+        | PrimitiveType::Transfunc
+        | PrimitiveType::Plasdata
+        | PrimitiveType::Metdata
+        | PrimitiveType::Transdata
+        | PrimitiveType::Plastic2
+        | PrimitiveType::Metal2
+        | PrimitiveType::Trans2 => {
             return Err(raw.invalid(
                 "type",
                 raw.kind.name(),

@@ -1,4 +1,5 @@
 pub mod compare;
+pub mod corpus;
 pub mod primitives;
 pub mod radiance;
 pub mod small_scenes;

@@ -1,13 +1,20 @@
 //! The material of a modifier chain that holds function modifiers: patterns and textures
 //! compiled as [`Modulation`]s over a plain material, a `BRTDfunc` or a `mixfunc`.
 
-use super::loader::FunctionLoader;
-use super::varying::{Modulation, VaryingBase, VaryingMaterial};
+use super::data::DataArray;
+use super::loader::{CompiledFunction, FunctionLoader};
+use super::varying::{DataLookup, MixCoefficient, Modulation, VaryingBase, VaryingMaterial};
 use crate::engine::error::EngineError;
-use crate::engine::material::{BrtdMaterial, Material};
+use crate::engine::material::{AnisotropicMaterial, BrdfFunctionMaterial, BrtdMaterial, Material};
 use crate::engine::sky::SkyFunction;
-use crate::scene::{DataPattern, Modifier, ModifierKind, ModifierRef, Scene, Surface};
+use crate::scene::{
+    Anisotropic, BrdfFunc, DataPattern, FunctionArgs, Modifier, ModifierKind, ModifierRef, Scene,
+    Surface,
+};
 use std::sync::Arc;
+
+/// The orientation vector's expressions of `plastic2`, `metal2`, `trans2` (`ux uy uz`).
+const ORIENTATION_EXPRESSIONS: usize = 3;
 
 /// BRTDfunc's expressions compiled as such (the specular colours); the next three name
 /// functions of the source direction (`m_brdf.c`: `getfunc(m, 9, 0x3f, 0)`).
@@ -48,7 +55,10 @@ pub fn material_of(
         })
     };
     match &base {
-        VaryingBase::Plain(Material::Normal(_)) | VaryingBase::Brtd(_) => {}
+        VaryingBase::Plain(Material::Normal(_))
+        | VaryingBase::Brtd(_)
+        | VaryingBase::Function(_)
+        | VaryingBase::Anisotropic(_) => {}
         _ if modulations.is_empty() => {}
         VaryingBase::Mix { .. } => return refuse("patterns above a mixfunc are not traced yet"),
         VaryingBase::Plain(_) => {
@@ -82,8 +92,12 @@ fn is_function(kind: &ModifierKind, emitter: bool) -> bool {
         | ModifierKind::Brightdata(_)
         | ModifierKind::Colordata(_)
         | ModifierKind::Texfunc(_)
+        | ModifierKind::Texdata(_)
         | ModifierKind::Mixfunc(_)
-        | ModifierKind::BrtdFunc(_) => true,
+        | ModifierKind::Mixdata(_)
+        | ModifierKind::BrtdFunc(_)
+        | ModifierKind::BrdfFunc(_)
+        | ModifierKind::Anisotropic(_) => true,
         _ => false,
     }
 }
@@ -93,7 +107,10 @@ fn modulation(m: &Modifier, loader: &mut FunctionLoader) -> Result<Modulation, E
         ModifierKind::Brightfunc(b) => Modulation::Pattern(loader.compile(m, &b.function, 1)?),
         ModifierKind::Colorfunc(f) => Modulation::Pattern(loader.compile(m, f, 3)?),
         ModifierKind::Texfunc(f) => Modulation::Texture(loader.compile(m, f, 3)?),
-        ModifierKind::Brightdata(d) | ModifierKind::Colordata(d) => data_modulation(m, d, loader)?,
+        ModifierKind::Brightdata(d) | ModifierKind::Colordata(d) => {
+            Modulation::Data(data_lookup(m, d, loader)?)
+        }
+        ModifierKind::Texdata(d) => Modulation::DataTexture(data_lookup(m, d, loader)?),
         other => {
             return Err(EngineError::Unsupported {
                 at: m.origin.clone(),
@@ -103,41 +120,23 @@ fn modulation(m: &Modifier, loader: &mut FunctionLoader) -> Result<Modulation, E
     })
 }
 
-/// A data pattern: its coordinates compiled, its arrays read, their dimensions checked
-/// against the coordinates, its functions checked to exist.
-fn data_modulation(
+/// A data pattern, texture or mixture: its coordinates compiled, its arrays read, their
+/// dimensions checked against the coordinates, its functions checked to exist.
+fn data_lookup(
     m: &Modifier,
     d: &DataPattern,
     loader: &mut FunctionLoader,
-) -> Result<Modulation, EngineError> {
-    let coordinates = loader.compile(m, &d.function, d.function.expressions.len())?;
-    let fail = |what: String| EngineError::Unsupported {
-        at: m.origin.clone(),
-        what: format!("{} `{}`: {what}", m.kind.type_name(), m.name),
-    };
+) -> Result<DataLookup, EngineError> {
+    let dimensions = d.function.expressions.len();
+    let coordinates = loader.compile(m, &d.function, dimensions)?;
     let mut arrays = Vec::new();
     for name in &d.data_files {
-        let array = loader.data(m, name, &d.function.scene_dir)?;
-        if array.dimension_count() != d.function.expressions.len() {
-            return Err(fail(format!(
-                "data file {name} has {} dimension(s) but {} coordinate expression(s) are given",
-                array.dimension_count(),
-                d.function.expressions.len()
-            )));
-        }
-        arrays.push(array);
+        arrays.push(data_array(m, name, &d.function, dimensions, loader)?);
     }
-    if let Some(name) = d
-        .functions
-        .iter()
-        .find(|f| coordinates.parameter_count(f).is_none())
-    {
-        return Err(fail(format!(
-            "function `{name}` is not defined in {} nor in the library",
-            d.function.cal_file
-        )));
+    for name in &d.functions {
+        defined(m, &coordinates, name)?;
     }
-    Ok(Modulation::Data {
+    Ok(DataLookup {
         coordinates,
         functions: d.functions.clone(),
         arrays,
@@ -156,13 +155,133 @@ fn base(
             arguments: b.clone(),
             function: loader.compile(m, &b.function, BRTD_EXPRESSIONS)?,
         })),
-        ModifierKind::Mixfunc(mix) => VaryingBase::Mix {
-            coefficient: loader.compile(m, &mix.function, 1)?,
-            foreground: Box::new(material_of(scene, mix.foreground, surface, loader)?),
-            background: Box::new(material_of(scene, mix.background, surface, loader)?),
-        },
+        ModifierKind::BrdfFunc(f) => VaryingBase::Function(Arc::new(brdf_function(m, f, loader)?)),
+        ModifierKind::Anisotropic(a) => {
+            VaryingBase::Anisotropic(Box::new(anisotropic(m, a, loader)?))
+        }
+        ModifierKind::Mixdata(mix) => {
+            let coefficient = MixCoefficient::Data(data_lookup(m, &mix.data, loader)?);
+            mixture(
+                scene,
+                coefficient,
+                [mix.foreground, mix.background],
+                surface,
+                loader,
+            )?
+        }
+        ModifierKind::Mixfunc(mix) => {
+            let coefficient = MixCoefficient::Function(loader.compile(m, &mix.function, 1)?);
+            mixture(
+                scene,
+                coefficient,
+                [mix.foreground, mix.background],
+                surface,
+                loader,
+            )?
+        }
         // Its patterns are the chain's modulations.
         _ => VaryingBase::Plain(Material::from_modifier(surface, Some(m), Vec::new())?),
+    })
+}
+
+/// An error naming the modifier `m`, its scene file and line.
+fn failure(m: &Modifier, what: String) -> EngineError {
+    EngineError::Unsupported {
+        at: m.origin.clone(),
+        what: format!("{} `{}`: {what}", m.kind.type_name(), m.name),
+    }
+}
+
+/// Fails unless `function`'s file or the library defines `name`.
+fn defined(m: &Modifier, function: &CompiledFunction, name: &str) -> Result<(), EngineError> {
+    match function.parameter_count(name) {
+        Some(_) => Ok(()),
+        None => Err(failure(
+            m,
+            format!(
+                "function `{name}` is not defined in {} nor in the library",
+                function.args.cal_file
+            ),
+        )),
+    }
+}
+
+/// The data file `name` of `m`, read once, with `dimensions` dimensions (one per coordinate
+/// the modifier gives).
+fn data_array(
+    m: &Modifier,
+    name: &str,
+    args: &FunctionArgs,
+    dimensions: usize,
+    loader: &mut FunctionLoader,
+) -> Result<Arc<DataArray>, EngineError> {
+    let array = loader.data(m, name, &args.scene_dir)?;
+    if array.dimension_count() != dimensions {
+        return Err(failure(
+            m,
+            format!(
+                "data file {name} has {} dimension(s) but {dimensions} coordinate(s) are given",
+                array.dimension_count()
+            ),
+        ));
+    }
+    Ok(array)
+}
+
+/// A function material: its file compiled, the function of the source direction and the
+/// coordinate functions checked to exist, its data file read and its dimensions checked
+/// against the coordinate functions.
+fn brdf_function(
+    m: &Modifier,
+    f: &BrdfFunc,
+    loader: &mut FunctionLoader,
+) -> Result<BrdfFunctionMaterial, EngineError> {
+    let function = loader.compile(m, &f.function, 0)?;
+    defined(m, &function, &f.function_name)?;
+    let data = match &f.data {
+        None => None,
+        Some(d) => Some(data_array(
+            m,
+            &d.data_file,
+            &f.function,
+            d.coordinate_functions.len(),
+            loader,
+        )?),
+    };
+    Ok(BrdfFunctionMaterial {
+        fractions: f.fractions.clone(),
+        function_name: f.function_name.clone(),
+        function,
+        data,
+    })
+}
+
+/// An anisotropic material with its orientation expressions compiled.
+fn anisotropic(
+    m: &Modifier,
+    a: &Anisotropic,
+    loader: &mut FunctionLoader,
+) -> Result<AnisotropicMaterial, EngineError> {
+    Ok(AnisotropicMaterial {
+        fractions: a.fractions.clone(),
+        u_roughness: a.u_roughness,
+        v_roughness: a.v_roughness,
+        orientation: loader.compile(m, &a.orientation, ORIENTATION_EXPRESSIONS)?,
+    })
+}
+
+/// A `mixfunc` or `mixdata` of the `sides` (foreground, background).
+fn mixture(
+    scene: &Scene,
+    coefficient: MixCoefficient,
+    sides: [ModifierRef; 2],
+    surface: &Surface,
+    loader: &mut FunctionLoader,
+) -> Result<VaryingBase, EngineError> {
+    Ok(VaryingBase::Mix {
+        coefficient,
+        foreground: Box::new(material_of(scene, sides[0], surface, loader)?),
+        background: Box::new(material_of(scene, sides[1], surface, loader)?),
     })
 }
 

@@ -1,7 +1,9 @@
-//! Function modifiers in the engine: the `.cal` programs that `brightfunc`, `colorfunc`,
-//! `texfunc`, `mixfunc` and `BRTDfunc` name, compiled once per file ([`loader`]), evaluated
-//! at each hit with the ray variables RADIANCE defines ([`ray`], `src/rt/func.c`), and the
-//! materials they make ([`varying`]).
+//! Function modifiers in the engine: the `.cal` programs (and data files) that
+//! `brightfunc`, `colorfunc`, `brightdata`, `colordata`, `texfunc`, `texdata`, `mixfunc`,
+//! `mixdata`, `BRTDfunc`, the function materials (`plasfunc` .. `transdata`) and the
+//! anisotropic ones (`plastic2`, `metal2`, `trans2`) name, compiled once per file
+//! ([`loader`]), evaluated at each hit with the ray variables RADIANCE defines ([`ray`],
+//! `src/rt/func.c`), and the materials they make ([`varying`]).
 //!
 //! A run-time evaluation error (a division by zero, a domain error) gives 0 for that
 //! expression, as calcomp does, and is counted in [`CompiledFunction::warnings`];

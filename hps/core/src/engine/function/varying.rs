@@ -1,5 +1,6 @@
-//! Materials that change from hit to hit: a material under `brightfunc`/`colorfunc`
-//! patterns and `texfunc` textures, a `BRTDfunc`, a `mixfunc` of two modifiers. Each is
+//! Materials that change from hit to hit: a material under `brightfunc`/`colorfunc`/
+//! `brightdata`/`colordata` patterns and `texfunc`/`texdata` textures, a `BRTDfunc`, a
+//! function or anisotropic material, a `mixfunc` or `mixdata` of two modifiers. Each is
 //! resolved at a hit into a plain [`Material`] and a shading normal, which the integrator
 //! then uses as it uses any other; it never learns which kind it was.
 
@@ -7,7 +8,8 @@ use super::data::DataArray;
 use super::loader::CompiledFunction;
 use super::ray::FunctionRay;
 use crate::engine::material::{
-    BrtdMaterial, HitDependent, HitPoint, Material, Shading, ShadowCrossing,
+    AnisotropicMaterial, BrdfFunctionMaterial, BrtdMaterial, HitDependent, HitPoint, Material,
+    Shading, ShadowCrossing,
 };
 use crate::engine::rng::Rng;
 use glam::DVec3;
@@ -21,11 +23,40 @@ pub enum Modulation {
     /// `texfunc`: adds a perturbation to the normal.
     Texture(Arc<CompiledFunction>),
     /// `brightdata` (one function and array) or `colordata` (three).
-    Data {
-        coordinates: Arc<CompiledFunction>,
-        functions: Vec<String>,
-        arrays: Vec<Arc<DataArray>>,
-    },
+    Data(DataLookup),
+    /// `texdata`: three arrays and functions giving the perturbation.
+    DataTexture(DataLookup),
+}
+
+/// Data files interpolated at coordinates given by expressions, then passed through
+/// functions (p_data.c, t_data.c, mx_data.c).
+#[derive(Clone, Debug)]
+pub struct DataLookup {
+    /// The coordinate expressions (one per dimension), with their file.
+    pub coordinates: Arc<CompiledFunction>,
+    /// The functions of the interpolated values (1 or 3).
+    pub functions: Vec<String>,
+    /// The data files (1 or 3), of as many dimensions as there are coordinates.
+    pub arrays: Vec<Arc<DataArray>>,
+}
+
+/// What decides between a mixture's two sides.
+#[derive(Clone, Debug)]
+pub enum MixCoefficient {
+    /// `mixfunc`: an expression.
+    Function(Arc<CompiledFunction>),
+    /// `mixdata`: a function of a data file's value.
+    Data(DataLookup),
+}
+
+impl MixCoefficient {
+    /// The coefficient at `hit` (the foreground's share).
+    fn at(&self, hit: &HitPoint) -> f64 {
+        match self {
+            MixCoefficient::Function(f) => f.value(0, &function_ray(f, hit)),
+            MixCoefficient::Data(d) => d.evaluate(hit, false).first().copied().unwrap_or(0.0),
+        }
+    }
 }
 
 /// The material below the modulations.
@@ -34,9 +65,13 @@ pub enum VaryingBase {
     /// A plain material (`plastic`, `metal`, `trans`) whose colour patterns scale.
     Plain(Material),
     Brtd(Box<BrtdMaterial>),
+    /// `plasfunc`, `metfunc`, `transfunc` and their data forms.
+    Function(Arc<BrdfFunctionMaterial>),
+    /// `plastic2`, `metal2`, `trans2`.
+    Anisotropic(Box<AnisotropicMaterial>),
     /// `mixfunc`: the foreground where the coefficient is 1, the background where 0.
     Mix {
-        coefficient: Arc<CompiledFunction>,
+        coefficient: MixCoefficient,
         foreground: Box<Material>,
         background: Box<Material>,
     },
@@ -81,12 +116,33 @@ impl HitDependent for VaryingMaterial {
                 hit.distance_m,
                 m.color_rgb,
             ))))),
+            VaryingBase::Function(f) => {
+                Material::Shaded(Box::new(Shading::Function(Box::new(f.shade(
+                    hit.direction,
+                    hit.normal,
+                    normal,
+                    hit.point_m,
+                    hit.distance_m,
+                    m.color_rgb,
+                )))))
+            }
+            VaryingBase::Anisotropic(a) => {
+                Material::Shaded(Box::new(Shading::Anisotropic(Box::new(a.shade(
+                    hit.direction,
+                    hit.normal,
+                    normal,
+                    hit.point_m,
+                    hit.distance_m,
+                    m.color_rgb,
+                    hit.flat,
+                )))))
+            }
             VaryingBase::Mix {
                 coefficient,
                 foreground,
                 background,
             } => {
-                let c = coefficient.value(0, &function_ray(coefficient, hit));
+                let c = coefficient.at(hit);
                 let chosen = if rng.uniform() < c {
                     foreground
                 } else {
@@ -102,6 +158,10 @@ impl HitDependent for VaryingMaterial {
     /// What a shadow ray does here: for a `mixfunc`, the coefficient's blend of what each
     /// side transmits (a shadow ray has no random choice).
     fn shadow_crossing(&self, hit: &HitPoint) -> ShadowCrossing {
+        if let VaryingBase::Function(_) | VaryingBase::Anisotropic(_) = &self.base {
+            // m_brdf2 and m_aniso end every shadow ray.
+            return ShadowCrossing::Opaque;
+        }
         let m = self.modulate(hit);
         let normal = shading_normal(hit, m.perturbation);
         match &self.base {
@@ -119,14 +179,13 @@ impl HitDependent for VaryingMaterial {
                 )
                 .shadow_transmission(),
             ),
+            VaryingBase::Function(_) | VaryingBase::Anisotropic(_) => ShadowCrossing::Opaque,
             VaryingBase::Mix {
                 coefficient,
                 foreground,
                 background,
             } => {
-                let c = coefficient
-                    .value(0, &function_ray(coefficient, hit))
-                    .clamp(0.0, 1.0);
+                let c = coefficient.at(hit).clamp(0.0, 1.0);
                 let kept = |m: &Material| match m.shadow_crossing_at(hit) {
                     ShadowCrossing::PassThrough => DVec3::ONE,
                     ShadowCrossing::Transmits(t) => t,
@@ -161,60 +220,66 @@ impl VaryingMaterial {
                 }
                 Modulation::Texture(f) => {
                     let local = DVec3::from_array(f.values::<3>(0, &function_ray(f, hit)));
-                    let t = &f.args.transform;
-                    let scene = DVec3::new(
-                        local.dot(DVec3::new(
-                            t.forward[0][0],
-                            t.forward[1][0],
-                            t.forward[2][0],
-                        )),
-                        local.dot(DVec3::new(
-                            t.forward[0][1],
-                            t.forward[1][1],
-                            t.forward[2][1],
-                        )),
-                        local.dot(DVec3::new(
-                            t.forward[0][2],
-                            t.forward[1][2],
-                            t.forward[2][2],
-                        )),
-                    );
-                    m.perturbation += scene / t.scale;
+                    m.perturbation += to_scene_perturbation(local, f);
                 }
-                Modulation::Data {
-                    coordinates,
-                    functions,
-                    arrays,
-                } => m.color_rgb *= data_colour(coordinates, functions, arrays, hit),
+                Modulation::Data(d) => m.color_rgb *= d.colour(hit),
+                Modulation::DataTexture(d) => {
+                    if let [x, y, z] = d.evaluate(hit, true)[..] {
+                        m.perturbation +=
+                            to_scene_perturbation(DVec3::new(x, y, z), &d.coordinates);
+                    }
+                }
             }
         }
         m
     }
 }
 
-/// p_data.c: the arrays interpolated at the coordinates, then each channel's function of
-/// its value (or of the three values, if it takes three arguments).
-fn data_colour(
-    coordinates: &CompiledFunction,
-    functions: &[String],
-    arrays: &[Arc<DataArray>],
-    hit: &HitPoint,
-) -> DVec3 {
-    let ray = function_ray(coordinates, hit);
-    let point = coordinates.all_values(&ray);
-    let values: Vec<f64> = arrays.iter().map(|a| a.value(&point)).collect();
-    let channel = |k: usize| {
-        let name = &functions[k];
-        if coordinates.parameter_count(name).unwrap_or(1) >= 3 && values.len() == 3 {
-            coordinates.call(name, &values, &ray)
-        } else {
-            coordinates.call(name, &values[k.min(values.len() - 1)..][..1], &ray)
+/// t_func.c, t_data.c: a perturbation in the function's frame taken to the scene's by the
+/// forward transform and divided by its scale.
+fn to_scene_perturbation(local: DVec3, f: &CompiledFunction) -> DVec3 {
+    let t = &f.args.transform;
+    let column = |j: usize| DVec3::new(t.forward[0][j], t.forward[1][j], t.forward[2][j]);
+    DVec3::new(
+        local.dot(column(0)),
+        local.dot(column(1)),
+        local.dot(column(2)),
+    ) / t.scale
+}
+
+impl DataLookup {
+    /// p_data.c, t_data.c, mx_data.c: the arrays interpolated at the coordinates, then each
+    /// function of its channel's value, or of the three values if it takes three arguments
+    /// or `texture` (t_data.c passes all three); one value per function.
+    fn evaluate(&self, hit: &HitPoint, texture: bool) -> Vec<f64> {
+        let ray = function_ray(&self.coordinates, hit);
+        let point = self.coordinates.all_values(&ray);
+        let values: Vec<f64> = self.arrays.iter().map(|a| a.value(&point)).collect();
+        let all = |name: &str| {
+            values.len() == 3
+                && (texture || self.coordinates.parameter_count(name).unwrap_or(1) >= 3)
+        };
+        self.functions
+            .iter()
+            .enumerate()
+            .map(|(k, name)| {
+                if all(name) {
+                    self.coordinates.call(name, &values, &ray)
+                } else {
+                    let own = &values[k.min(values.len() - 1)..][..1];
+                    self.coordinates.call(name, own, &ray)
+                }
+            })
+            .collect()
+    }
+
+    /// The colour of a `brightdata` (grey) or `colordata`.
+    fn colour(&self, hit: &HitPoint) -> DVec3 {
+        match self.evaluate(hit, false)[..] {
+            [r, g, b] => DVec3::new(r, g, b),
+            [v, ..] => DVec3::splat(v),
+            [] => DVec3::ONE,
         }
-    };
-    if functions.len() == 1 {
-        DVec3::splat(channel(0))
-    } else {
-        DVec3::new(channel(0), channel(1), channel(2))
     }
 }
 

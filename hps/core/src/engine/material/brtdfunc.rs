@@ -44,14 +44,16 @@ pub struct BrtdShading {
     diffuse_transmission_rgb: DVec3,
 }
 
-/// What [`FunctionRay`] needs, owned.
+/// What [`FunctionRay`] needs, owned: kept by the shadings whose functions are called
+/// again for each source direction.
 #[derive(Clone, Copy, Debug)]
-struct HitSnapshot {
-    direction: DVec3,
-    normal: DVec3,
-    point_m: DVec3,
-    distance_m: f64,
-    perturbed: Perturbed,
+pub(super) struct HitSnapshot {
+    pub direction: DVec3,
+    /// The normal the functions see as `Nx Ny Nz`.
+    pub normal: DVec3,
+    pub point_m: DVec3,
+    pub distance_m: f64,
+    pub perturbed: Perturbed,
 }
 
 impl BrtdMaterial {
@@ -110,7 +112,11 @@ impl BrtdMaterial {
     }
 }
 
-fn function_ray<'a>(function: &'a CompiledFunction, hit: &HitSnapshot) -> FunctionRay<'a> {
+/// The hit as `function`'s expressions see it.
+pub(super) fn function_ray<'a>(
+    function: &'a CompiledFunction,
+    hit: &HitSnapshot,
+) -> FunctionRay<'a> {
     FunctionRay {
         direction: hit.direction,
         normal: hit.normal,

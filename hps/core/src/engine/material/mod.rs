@@ -1,7 +1,9 @@
 //! How surfaces scatter light, as RADIANCE shades them, so that our estimates converge to
 //! what `rtrace` computes: one file per family ([`normal`]: `plastic`, `metal`, `trans`;
-//! [`glass`]; [`mirror`]; [`emitter`]: `light` and `glow` on surfaces), the optics they share
-//! in [`scattering`]; [`bsdf`]: `BSDF` from WINDOW / LBNL XML data.
+//! [`anisotropic`]: `plastic2`, `metal2`, `trans2`; [`brdf_function`]: `plasfunc` ..
+//! `transdata`; [`brtdfunc`]; [`glass`]; [`mirror`]; [`emitter`]: `light` and `glow` on
+//! surfaces), the optics they share in [`scattering`]; [`bsdf`]: `BSDF` from WINDOW / LBNL XML
+//! data.
 //!
 //! The integrator, the per-ray radiance, shadow rays and virtual sources ask a [`Material`]
 //! what happens at a hit ([`Material::interact`], [`Material::shading`],
@@ -13,6 +15,8 @@
 //! Surfaces are two-sided (RADIANCE's default `-bv+`): hitting the back of a surface shades
 //! it with the normal turned towards the ray (`flipsurface`).
 
+pub mod anisotropic;
+pub mod brdf_function;
 pub mod brtdfunc;
 pub mod bsdf;
 pub mod dielectric;
@@ -24,6 +28,8 @@ pub mod normal;
 pub mod scattering;
 pub mod spotlight;
 
+pub use anisotropic::{AnisotropicMaterial, AnisotropicShading};
+pub use brdf_function::{BrdfFunctionMaterial, BrdfFunctionShading};
 pub use brtdfunc::{BrtdMaterial, BrtdShading};
 /// Where `validation::glazing` finds it; its home is [`crate::engine::sampling`].
 pub use bsdf::{BsdfMaterial, BsdfShading};
@@ -132,6 +138,10 @@ pub enum Shading {
     Normal(NormalShading),
     Bsdf(BsdfShading),
     Brtd(Box<BrtdShading>),
+    /// `plasfunc`, `metfunc`, `transfunc` and their data forms.
+    Function(Box<BrdfFunctionShading>),
+    /// `plastic2`, `metal2`, `trans2`.
+    Anisotropic(Box<AnisotropicShading>),
 }
 
 impl Shading {
@@ -142,6 +152,8 @@ impl Shading {
             Shading::Normal(s) => s.source_coefficient(ldir, omega_sr),
             Shading::Bsdf(s) => s.source_coefficient(ldir, omega_sr),
             Shading::Brtd(s) => s.source_coefficient(ldir, omega_sr),
+            Shading::Function(s) => s.source_coefficient(ldir, omega_sr),
+            Shading::Anisotropic(s) => s.source_coefficient(ldir, omega_sr),
         }
     }
 
@@ -154,6 +166,8 @@ impl Shading {
             // sky is not a source): no next-event strategy to weigh against.
             Shading::Bsdf(_) => None,
             Shading::Brtd(s) => s.diffuse_lobe(allow_diffuse),
+            Shading::Function(s) => s.diffuse_lobe(allow_diffuse),
+            Shading::Anisotropic(s) => s.diffuse_lobe(allow_diffuse),
         }
     }
 
@@ -163,9 +177,11 @@ impl Shading {
     /// (m_bsdf.c offsets those rays by the thickness).
     pub fn origin_towards(&self, p_m: DVec3, dir: DVec3) -> DVec3 {
         match self {
-            Shading::Normal(_) => p_m,
             Shading::Bsdf(s) => s.origin_towards(p_m, dir),
-            Shading::Brtd(_) => p_m,
+            Shading::Normal(_)
+            | Shading::Brtd(_)
+            | Shading::Function(_)
+            | Shading::Anisotropic(_) => p_m,
         }
     }
 
@@ -175,7 +191,9 @@ impl Shading {
         match self {
             Shading::Normal(s) => s.shadow_transmission(),
             Shading::Brtd(s) => s.shadow_transmission(),
-            Shading::Bsdf(_) => DVec3::ZERO,
+            Shading::Anisotropic(s) => s.shadow_transmission(),
+            // m_brdf2 is "always a shadow".
+            Shading::Bsdf(_) | Shading::Function(_) => DVec3::ZERO,
         }
     }
 
@@ -186,6 +204,8 @@ impl Shading {
             Shading::Normal(s) => s.sample(allow_diffuse, rng),
             Shading::Bsdf(s) => s.sample(allow_diffuse, rng),
             Shading::Brtd(s) => s.sample(allow_diffuse, rng),
+            Shading::Function(s) => s.sample(allow_diffuse, rng),
+            Shading::Anisotropic(s) => s.sample(allow_diffuse, rng),
         }
     }
 }
@@ -491,8 +511,12 @@ impl Material {
             | ModifierKind::Brightdata(_)
             | ModifierKind::Colordata(_)
             | ModifierKind::Texfunc(_)
+            | ModifierKind::Texdata(_)
             | ModifierKind::Mixfunc(_)
-            | ModifierKind::BrtdFunc(_) => {
+            | ModifierKind::Mixdata(_)
+            | ModifierKind::BrtdFunc(_)
+            | ModifierKind::BrdfFunc(_)
+            | ModifierKind::Anisotropic(_) => {
                 return Err(EngineError::Unsupported {
                     at: m.origin.clone(),
                     what: format!(

@@ -64,6 +64,36 @@ pub fn glass_fractions(
     (trans, refl)
 }
 
+/// How a normal material divides the light it does not absorb (normal.c, aniso.c,
+/// m_brdf.c `m_brdf2`): the specular reflectance `rspec`, the transmissivity
+/// trans = trans_arg (1 − rspec), its specular part tspec = trans tspec_arg, and the
+/// diffuse rests tdiff = trans − tspec, rdiff = 1 − trans − rspec (all fractions of the
+/// material colour).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NormalSplit {
+    pub rspec: f64,
+    pub trans: f64,
+    pub tspec: f64,
+    pub tdiff: f64,
+    pub rdiff: f64,
+}
+
+impl NormalSplit {
+    /// From the `spec`, `trans` and `tspec` arguments (the last two 0 for opaque materials).
+    pub fn new(specularity: f64, transmissivity: f64, transmitted_specularity: f64) -> Self {
+        let rspec = specularity;
+        let trans = transmissivity * (1.0 - rspec);
+        let tspec = trans * transmitted_specularity;
+        NormalSplit {
+            rspec,
+            trans,
+            tspec,
+            tdiff: trans - tspec,
+            rdiff: 1.0 - trans - rspec,
+        }
+    }
+}
+
 /// What a sampled scattering event does to the path.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Scatter {
