@@ -1,6 +1,14 @@
-//! `skylux bench loop --campaigns N --seed S [--keep DIR] [--json] [--only CLASS]`: the loop
-//! against a battery of random campaigns whose truth comes from RADIANCE, not from the
-//! engine the loop's model uses (issue 18; `skylux_sim::battery`).
+//! `skylux bench loop --campaigns N --seed S [--keep DIR] [--json] [--only CLASS]
+//! [--shard K/M] [--jsonl FILE]`: the loop against a battery of random campaigns whose truth
+//! comes from RADIANCE, not from the engine the loop's model uses (issue 18;
+//! `skylux_sim::battery`). `skylux bench loop --summarise FILE...` makes the tables from the
+//! JSON lines of earlier runs (a battery run in shards, on several machines or days).
+//!
+//! The campaigns run interleaved (the first of every bucket, then the second of every
+//! bucket, ...), so a battery stopped early, or one shard of it, still covers every class.
+//! `--cases 2,40,90` runs those campaigns of the battery alone (CI's small battery).
+//! A battery with RADIANCE truth takes minutes per campaign (rcontrib's converged daylight
+//! coefficients, every capture's sun a light source tested at every path vertex).
 //!
 //! Per campaign: simulate it, run the loop as `skylux loop` does, and compare the effects it
 //! names and their parameters with the world's. Per effect class: recall (named when
@@ -46,6 +54,52 @@ pub struct LoopBenchArgs {
     /// The campaigns' truth: radiance (converged), radiance:N (N bounces) or engine.
     #[arg(long, default_value = "radiance")]
     truth: TruthSource,
+    /// Run only every M-th campaign of the interleaved order, from the K-th (0-based): `K/M`.
+    #[arg(long, value_parser = parse_shard)]
+    shard: Option<(usize, usize)>,
+    /// Run only the campaigns of these battery indices (as the tables print them: `#40`).
+    #[arg(long, value_delimiter = ',')]
+    cases: Vec<usize>,
+    /// Append each campaign's result to FILE as one JSON line as soon as it is known.
+    #[arg(long)]
+    jsonl: Option<PathBuf>,
+    /// Make the tables from these JSON-lines files instead of running campaigns.
+    #[arg(long, num_args = 1..)]
+    summarise: Vec<PathBuf>,
+    /// Exit with an error unless every campaign meets issue 18's rule (see [`shortfalls`]):
+    /// CI's small battery.
+    #[arg(long)]
+    check: bool,
+}
+
+fn parse_shard(text: &str) -> Result<(usize, usize), String> {
+    let bad = || format!("--shard {text}: expected K/M with 0 <= K < M, e.g. 0/2");
+    let (k, m) = text.split_once('/').ok_or_else(bad)?;
+    let (k, m): (usize, usize) = (
+        k.trim().parse().map_err(|_| bad())?,
+        m.trim().parse().map_err(|_| bad())?,
+    );
+    (k < m).then_some((k, m)).ok_or_else(bad)
+}
+
+/// The battery's cases in round-robin over their buckets (`none`, each single class, pairs),
+/// each bucket in index order.
+fn interleaved(cases: Vec<BatteryCase>) -> Vec<BatteryCase> {
+    let bucket = |c: &BatteryCase| match c.effects.len() {
+        2 => "pair".to_string(),
+        _ => c.class.clone(),
+    };
+    let mut seen: BTreeMap<String, usize> = BTreeMap::new();
+    let mut keyed: Vec<(usize, usize, BatteryCase)> = cases
+        .into_iter()
+        .map(|c| {
+            let rank = seen.entry(bucket(&c)).or_default();
+            *rank += 1;
+            (*rank, c.index, c)
+        })
+        .collect();
+    keyed.sort_by_key(|(rank, index, _)| (*rank, *index));
+    keyed.into_iter().map(|(_, _, c)| c).collect()
 }
 
 /// How close a fitted parameter must be to the world's to count as right.
@@ -166,7 +220,67 @@ struct CaseResult {
     error: Option<String>,
 }
 
+/// An effect's name as the battery's static table spells it.
+fn effect_name(name: &str) -> anyhow::Result<&'static str> {
+    EFFECT_RANGES
+        .iter()
+        .map(|e| e.name)
+        .find(|n| *n == name)
+        .ok_or_else(|| anyhow::anyhow!("unknown effect {name:?}"))
+}
+
 impl CaseResult {
+    /// The inverse of [`CaseResult::json`].
+    fn from_json(v: &Value) -> anyhow::Result<CaseResult> {
+        let field = |k: &str| v.get(k).ok_or_else(|| anyhow::anyhow!("no field {k:?}"));
+        let number =
+            |k: &str| -> anyhow::Result<f64> { Ok(field(k)?.as_f64().unwrap_or(f64::NAN)) };
+        let truth = field("truth")?
+            .as_object()
+            .ok_or_else(|| anyhow::anyhow!("truth: not an object"))?
+            .iter()
+            .map(|(k, x)| Ok((effect_name(k)?, x.as_f64().unwrap_or(f64::NAN))))
+            .collect::<anyhow::Result<Vec<_>>>()?;
+        let named = field("named")?
+            .as_array()
+            .ok_or_else(|| anyhow::anyhow!("named: not a list"))?
+            .iter()
+            .map(|n| {
+                let name = n.get("name").and_then(Value::as_str).unwrap_or_default();
+                let parameters: BTreeMap<String, f64> =
+                    serde_json::from_value(n.get("parameters").cloned().unwrap_or(json!({})))?;
+                Ok((name.to_string(), parameters))
+            })
+            .collect::<anyhow::Result<Vec<_>>>()?;
+        let checks = field("parameters")?
+            .as_array()
+            .ok_or_else(|| anyhow::anyhow!("parameters: not a list"))?
+            .iter()
+            .map(|c| {
+                Ok(ParameterCheck {
+                    effect: effect_name(
+                        c.get("effect").and_then(Value::as_str).unwrap_or_default(),
+                    )?,
+                    truth: c.get("world").and_then(Value::as_f64).unwrap_or(f64::NAN),
+                    expected: c.get("expected").and_then(Value::as_f64),
+                    fitted: c.get("fitted").and_then(Value::as_f64),
+                })
+            })
+            .collect::<anyhow::Result<Vec<_>>>()?;
+        Ok(CaseResult {
+            index: field("index")?.as_u64().unwrap_or(0) as usize,
+            class: field("class")?.as_str().unwrap_or_default().to_string(),
+            truth,
+            named,
+            checks,
+            before: number("holdout_before")?,
+            after: number("holdout_after")?,
+            simulate_s: number("simulate_s")?,
+            loop_s: number("loop_s")?,
+            error: field("error")?.as_str().map(str::to_string),
+        })
+    }
+
     fn false_discoveries(&self) -> Vec<&str> {
         self.named
             .iter()
@@ -198,6 +312,18 @@ impl CaseResult {
 }
 
 pub fn run(args: &LoopBenchArgs) -> anyhow::Result<()> {
+    if !args.summarise.is_empty() {
+        let mut results = Vec::new();
+        for path in &args.summarise {
+            results.extend(read_jsonl(path)?);
+        }
+        anyhow::ensure!(
+            !results.is_empty(),
+            "no campaign results in {:?}",
+            args.summarise
+        );
+        return report(args, &results, None);
+    }
     if let Some(only) = &args.only {
         anyhow::ensure!(
             only == "none" || EFFECT_RANGES.iter().any(|e| e.name == only),
@@ -209,11 +335,22 @@ pub fn run(args: &LoopBenchArgs) -> anyhow::Result<()> {
                 .join(", ")
         );
     }
+    if let Some(bad) = args.cases.iter().find(|&&i| i >= args.campaigns) {
+        anyhow::bail!(
+            "--cases {bad}: the battery of --campaigns {} has campaigns 0 to {}",
+            args.campaigns,
+            args.campaigns.saturating_sub(1)
+        );
+    }
     if matches!(args.truth, TruthSource::Radiance { .. }) {
         skylux_sim::radiance_tools::Radiance::find()?;
     }
-    let cases: Vec<BatteryCase> = battery_campaigns(args.campaigns, args.seed)
+    let cases: Vec<BatteryCase> = interleaved(battery_campaigns(args.campaigns, args.seed))
         .into_iter()
+        .enumerate()
+        .filter(|(position, _)| args.shard.is_none_or(|(k, m)| position % m == k))
+        .map(|(_, c)| c)
+        .filter(|c| args.cases.is_empty() || args.cases.contains(&c.index))
         .filter(|c| match args.only.as_deref() {
             None => true,
             Some("none") => c.effects.is_empty(),
@@ -272,9 +409,45 @@ pub fn run(args: &LoopBenchArgs) -> anyhow::Result<()> {
                 .map(|e| format!("; FAILED: {e}"))
                 .unwrap_or_default()
         );
+        if let Some(path) = &args.jsonl {
+            append_line(path, &r.json())?;
+        }
         results.push(r);
     }
-    let summary = summarise(&results);
+    report(args, &results, slope)
+}
+
+/// Appends one JSON value as a line (the file is created if absent).
+fn append_line(path: &Path, value: &Value) -> anyhow::Result<()> {
+    use std::io::Write as _;
+    let mut f = std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open(path)
+        .with_context(|| format!("opening {}", path.display()))?;
+    writeln!(f, "{value}").with_context(|| format!("writing {}", path.display()))
+}
+
+/// Campaign results written by `--jsonl`; a line that is not one is an error naming it.
+fn read_jsonl(path: &Path) -> anyhow::Result<Vec<CaseResult>> {
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    text.lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty())
+        .map(|(i, l)| {
+            let v: Value = serde_json::from_str(l)
+                .with_context(|| format!("{} line {}: not JSON", path.display(), i + 1))?;
+            CaseResult::from_json(&v).with_context(|| {
+                format!("{} line {}: not a campaign result", path.display(), i + 1)
+            })
+        })
+        .collect()
+}
+
+/// The tables (or one JSON object) for these results.
+fn report(args: &LoopBenchArgs, results: &[CaseResult], slope: Option<f64>) -> anyhow::Result<()> {
+    let summary = summarise(results);
     if args.json {
         let out = json!({
             "campaigns": results.len(),
@@ -286,14 +459,65 @@ pub fn run(args: &LoopBenchArgs) -> anyhow::Result<()> {
             })).collect::<Vec<_>>(),
             "expected_spectral_slope_per_index": slope,
             "classes": summary.iter().map(ClassRow::json).collect::<Vec<_>>(),
-            "confusion": confusion(&results),
+            "confusion": confusion(results),
             "cases": results.iter().map(CaseResult::json).collect::<Vec<_>>(),
         });
         println!("{}", serde_json::to_string_pretty(&out)?);
     } else {
-        print_tables(&results, &summary);
+        print_tables(results, &summary);
+    }
+    if args.check {
+        let failures: Vec<String> = results.iter().flat_map(shortfalls).collect();
+        anyhow::ensure!(
+            failures.is_empty(),
+            "{} of {} campaigns fall short:\n  {}",
+            failures.len(),
+            results.len(),
+            failures.join("\n  ")
+        );
     }
     Ok(())
+}
+
+/// What a campaign misses of issue 18's rule: it ran; it names every effect of its world
+/// and nothing else; each named parameter within tolerance; and where an effect acts, the
+/// hold-out error after at most half of before.
+fn shortfalls(r: &CaseResult) -> Vec<String> {
+    let id = format!("#{} {}", r.index, r.class);
+    if let Some(e) = &r.error {
+        return vec![format!("{id}: {e}")];
+    }
+    let mut out: Vec<String> = r
+        .truth
+        .iter()
+        .filter(|(n, _)| !r.names(n))
+        .map(|(n, v)| format!("{id}: {n} ({v}) not named"))
+        .collect();
+    out.extend(
+        r.false_discoveries()
+            .iter()
+            .map(|n| format!("{id}: {n} named but absent")),
+    );
+    out.extend(
+        r.checks
+            .iter()
+            .filter(|c| c.within() == Some(false))
+            .map(|c| {
+                format!(
+                    "{id}: {} fitted {:?} for {:?}",
+                    c.effect, c.fitted, c.expected
+                )
+            }),
+    );
+    let halved = r.after <= 0.5 * r.before; // false when either is NaN
+    if !r.truth.is_empty() && !halved {
+        out.push(format!(
+            "{id}: hold-out {:.1} % -> {:.1} %, not halved",
+            100.0 * r.before,
+            100.0 * r.after
+        ));
+    }
+    out
 }
 
 /// Simulates one case, runs the loop on it and compares; failures are recorded, not fatal.
@@ -623,5 +847,102 @@ fn print_tables(results: &[CaseResult], rows: &[ClassRow]) {
                 .map(|e| format!("; FAILED: {e}"))
                 .unwrap_or_default()
         );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_result_survives_its_json_line() {
+        let r = CaseResult {
+            index: 7,
+            class: "clock_offset+glazing_transmittance".into(),
+            truth: vec![("clock_offset", 420.0), ("glazing_transmittance", 0.85)],
+            named: vec![(
+                "clock_offset".into(),
+                BTreeMap::from([("logger_minus_device_s".into(), 415.0)]),
+            )],
+            checks: vec![ParameterCheck {
+                effect: "clock_offset",
+                truth: 420.0,
+                expected: Some(420.0),
+                fitted: Some(415.0),
+            }],
+            before: 0.18,
+            after: 0.07,
+            simulate_s: 120.0,
+            loop_s: 20.0,
+            error: None,
+        };
+        let line = r.json().to_string();
+        let back = CaseResult::from_json(&serde_json::from_str(&line).unwrap()).unwrap();
+        assert_eq!(back.json(), r.json());
+        assert_eq!(back.checks[0].within(), Some(true));
+        let bad = line.replace("clock_offset", "clock_offsett");
+        let Err(err) = CaseResult::from_json(&serde_json::from_str(&bad).unwrap()) else {
+            panic!("an unknown effect was read");
+        };
+        assert!(err.to_string().contains("clock_offsett"), "{err}");
+    }
+
+    #[test]
+    fn the_interleaved_order_visits_every_bucket_before_repeating_one() {
+        let cases = interleaved(battery_campaigns(36, 5));
+        assert_eq!(cases.len(), 36);
+        let first: Vec<String> = cases
+            .iter()
+            .take(12)
+            .map(|c| match c.effects.len() {
+                2 => "pair".to_string(),
+                _ => c.class.clone(),
+            })
+            .collect();
+        let distinct: std::collections::BTreeSet<&String> = first.iter().collect();
+        assert_eq!(distinct.len(), 12, "{first:?}");
+        let mut indices: Vec<usize> = cases.iter().map(|c| c.index).collect();
+        indices.sort_unstable();
+        assert_eq!(indices, (0..36).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn a_campaign_falls_short_for_each_broken_rule() {
+        let ok = CaseResult {
+            index: 1,
+            class: "light_leak".into(),
+            truth: vec![("light_leak", 0.01)],
+            named: vec![(
+                "light_leak".into(),
+                BTreeMap::from([("lux_per_outdoor_lux".into(), 0.011)]),
+            )],
+            checks: vec![ParameterCheck {
+                effect: "light_leak",
+                truth: 0.01,
+                expected: Some(0.01),
+                fitted: Some(0.011),
+            }],
+            before: 0.2,
+            after: 0.05,
+            simulate_s: 1.0,
+            loop_s: 1.0,
+            error: None,
+        };
+        assert!(shortfalls(&ok).is_empty());
+        let mut off = CaseResult::from_json(&ok.json()).unwrap();
+        off.checks[0].fitted = Some(0.013);
+        off.after = 0.15;
+        off.named.push(("vignetting".into(), BTreeMap::new()));
+        let why = shortfalls(&off).join("; ");
+        assert!(why.contains("light_leak fitted"), "{why}");
+        assert!(why.contains("not halved"), "{why}");
+        assert!(why.contains("vignetting named but absent"), "{why}");
+    }
+
+    #[test]
+    fn shards_are_checked() {
+        assert_eq!(parse_shard("1/3"), Ok((1, 3)));
+        assert!(parse_shard("3/3").is_err());
+        assert!(parse_shard("x").is_err());
     }
 }

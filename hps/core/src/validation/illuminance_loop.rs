@@ -690,7 +690,9 @@ fn select_effects(
             break;
         };
         let best_fit = best.fitted.fit_error;
-        if best_fit.is_nan() || best_fit >= base_fit - MIN_FIT_GAIN {
+        // An effect the frames identified needs no fit-set gain (the lux-meters only confirm).
+        let needs_fit_gain = !best.effect.identified_without_luxmeters();
+        if best_fit.is_nan() || (needs_fit_gain && best_fit >= base_fit - MIN_FIT_GAIN) {
             selection.notes.push(format!(
                 "no remaining effect lowers the fit-set error by more than 0.2 % (best: {} from \
                  {:.2} % to {:.2} %)",

@@ -55,13 +55,17 @@ pub struct Verdict {
 }
 
 impl Verdict {
-    /// The rule for an effect identified and measured without the lux-meters: the hold-out
-    /// error falls relevantly (by [`MIN_RELATIVE_GAIN`] of itself) and the paired test shows
-    /// no significant rise. Its false-discovery control is the identifying evidence's.
+    /// The rule for an effect identified and measured without the lux-meters: the paired
+    /// test shows no significant rise, and the hold-out error falls relevantly (by
+    /// [`MIN_RELATIVE_GAIN`] of itself), unless the effect moves no hold-out reading at all
+    /// (no acting unit: a baffle whose clipped sky the extrapolation already fills well, seen
+    /// in the frames, is there whether or not the lux-meters can tell). Its false-discovery
+    /// control is the identifying evidence's.
     pub fn confirming(self) -> Self {
+        let invisible_to_luxmeters = self.units == 0 && self.gain.abs() < 1e-4;
         Self {
-            accepted: self.gain > 0.0
-                && self.relative_gain >= MIN_RELATIVE_GAIN
+            accepted: (invisible_to_luxmeters
+                || (self.gain > 0.0 && self.relative_gain >= MIN_RELATIVE_GAIN))
                 // A NaN statistic (no moving reading) is no significant rise.
                 && self.t.partial_cmp(&-self.t_critical) != Some(std::cmp::Ordering::Less),
             confirmation: true,
@@ -345,6 +349,9 @@ mod tests {
         assert!(!rise.confirming().accepted);
         let small = judge(&[0.74], 0.11, 0.10);
         assert!(!small.confirming().accepted);
+        let unseen = judge(&[], 0.024, 0.024);
+        assert!(unseen.confirming().accepted, "{:?}", unseen.confirming());
+        assert!(!judge(&[], 0.024, 0.03).confirming().accepted);
     }
 
     /// Captures of `readings` readings: residual r, candidate change δ (so e = r − δ).

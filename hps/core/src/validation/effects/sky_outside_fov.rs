@@ -38,6 +38,12 @@ impl LoopEffect for SkyOutsideFov {
         &["fov_limit_deg"]
     }
 
+    /// The maps show the clipped field ([`crate::validation::sky_geometry::SkyGeometry::median_shown_fov_deg`]):
+    /// no lux-meter is needed to see a baffle.
+    fn identified_without_luxmeters(&self) -> bool {
+        true
+    }
+
     fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
         Some((
             "unseen sky fraction of the daylight-coefficient weight",
@@ -75,7 +81,7 @@ fn fit_unseen_sky(ctx: &FitContext<'_>) -> Option<Fitted> {
     let (lo, hi) = UNSEEN_SKY_FACTOR_RANGE;
     let (k, _) = minimise_1d(&error, lo, hi, 38);
     let hidden = geometry.hidden_sun.iter().flatten().count();
-    if state.value(UNSEEN_SKY_FACTOR).is_some() || (hidden == 0 && (k - 1.0).abs() < 0.01) {
+    if state.value(UNSEEN_SKY_FACTOR).is_some() {
         return None;
     }
     let next = state.with(UNSEEN_SKY_FACTOR, k);
@@ -114,5 +120,7 @@ fn fit_unseen_sky(ctx: &FitContext<'_>) -> Option<Fitted> {
         xy.len()
     );
     let terms = correct_terms(raw, dc, geometry, &next);
-    Some(scored(ctx, next, parameters, evidence, Some(terms)))
+    let mut fitted = scored(ctx, next, parameters, evidence, Some(terms));
+    fitted.identified_apart = true;
+    Some(fitted)
 }
