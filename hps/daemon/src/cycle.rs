@@ -402,32 +402,7 @@ impl Pipeline {
         views: &ViewRequest,
     ) -> Result<CycleProducts, CycleError> {
         let started = Instant::now();
-        // A flagged frame is not merged: a FIFO overflow or a short line means the frame's
-        // pixels are not where the geometry says.
-        for (k, flags) in set.frame_flags.iter().enumerate() {
-            if !flags.is_empty() {
-                return Err(CycleError::FlaggedFrame {
-                    exposure: k,
-                    exposure_us: set
-                        .config
-                        .exposure
-                        .get(k)
-                        .map_or(f64::NAN, |e| e.exposure_us),
-                    flags: flags.clone(),
-                });
-            }
-        }
-        let (raw_width, raw_height) = match set.frames.first() {
-            Some(f) => (f.width, f.height),
-            None => return Err(CycleError::Hdr("the capture holds no frame".into())),
-        };
-        if set.frames.len() != set.config.exposure.len() {
-            return Err(CycleError::Hdr(format!(
-                "{} frames for {} exposures",
-                set.frames.len(),
-                set.config.exposure.len()
-            )));
-        }
+        let (raw_width, raw_height) = check_frames(set)?;
 
         // HDR: as hdr::map_capture, with the geometry kept between cycles.
         let t = Instant::now();
@@ -492,25 +467,11 @@ impl Pipeline {
         };
         let views_ms = ms(t);
 
-        let sun = &terms.sun;
         let mut record = CycleRecord {
             time: set.time.to_rfc3339(),
             sequence: 0,
             source: source.to_string(),
-            sun: SunRecord {
-                spa_altitude_deg: spa.altitude_deg(),
-                spa_azimuth_deg: spa.azimuth_deg,
-                extracted: sun.is_some(),
-                extracted_altitude_deg: sun.as_ref().map(|s| altitude_deg(s.direction)),
-                extracted_azimuth_deg: sun.as_ref().map(|s| azimuth_deg(s.direction)),
-                direct_normal_lux: sun.as_ref().map(|s| s.direct_normal_illuminance_lux),
-                flags: match (sun, &terms.sun_missing) {
-                    (Some(s), _) => s.flags.iter().map(|f| f.name().to_string()).collect(),
-                    (None, Some(why)) => vec![format!("no_sun:{}", why.tag())],
-                    (None, None) => vec!["no_sun:unexplained".to_string()],
-                },
-                missing_reason: terms.sun_missing.as_ref().map(|why| why.to_string()),
-            },
+            sun: sun_record(&spa, &terms),
             illuminance: self
                 .room
                 .sensors
@@ -640,6 +601,56 @@ fn altitude_deg(d: DVec3) -> f64 {
 /// Azimuth from north towards east, [0, 360) (campaign.md conventions).
 fn azimuth_deg(d: DVec3) -> f64 {
     d.x.atan2(d.y).to_degrees().rem_euclid(360.0)
+}
+
+/// The frames as a cycle needs them: none flagged by the capture path (a FIFO overflow or a
+/// short line means the frame's pixels are not where the geometry says), one per exposure.
+/// Returns the raw frame size.
+fn check_frames(set: &CaptureSet) -> Result<(usize, usize), CycleError> {
+    for (k, flags) in set.frame_flags.iter().enumerate() {
+        if !flags.is_empty() {
+            return Err(CycleError::FlaggedFrame {
+                exposure: k,
+                exposure_us: set
+                    .config
+                    .exposure
+                    .get(k)
+                    .map_or(f64::NAN, |e| e.exposure_us),
+                flags: flags.clone(),
+            });
+        }
+    }
+    let (raw_width, raw_height) = match set.frames.first() {
+        Some(f) => (f.width, f.height),
+        None => return Err(CycleError::Hdr("the capture holds no frame".into())),
+    };
+    if set.frames.len() != set.config.exposure.len() {
+        return Err(CycleError::Hdr(format!(
+            "{} frames for {} exposures",
+            set.frames.len(),
+            set.config.exposure.len()
+        )));
+    }
+    Ok((raw_width, raw_height))
+}
+
+/// The cycle record's sun: SPA's, and the extracted one or why there is none.
+fn sun_record(spa: &skylux_hps::sun::SolarPosition, terms: &CaptureTerms) -> SunRecord {
+    let sun = &terms.sun;
+    SunRecord {
+        spa_altitude_deg: spa.altitude_deg(),
+        spa_azimuth_deg: spa.azimuth_deg,
+        extracted: sun.is_some(),
+        extracted_altitude_deg: sun.as_ref().map(|s| altitude_deg(s.direction)),
+        extracted_azimuth_deg: sun.as_ref().map(|s| azimuth_deg(s.direction)),
+        direct_normal_lux: sun.as_ref().map(|s| s.direct_normal_illuminance_lux),
+        flags: match (sun, &terms.sun_missing) {
+            (Some(s), _) => s.flags.iter().map(|f| f.name().to_string()).collect(),
+            (None, Some(why)) => vec![format!("no_sun:{}", why.tag())],
+            (None, None) => vec!["no_sun:unexplained".to_string()],
+        },
+        missing_reason: terms.sun_missing.as_ref().map(|why| why.to_string()),
+    }
 }
 
 #[cfg(test)]

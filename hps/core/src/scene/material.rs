@@ -311,6 +311,72 @@ pub struct Antimatter {
     pub subtracted: Vec<ModifierRef>,
 }
 
+/// `plastic` and `metal`: 5 reals (colour, specularity, roughness).
+fn plastic_or_metal(raw: &RawPrimitive<'_>) -> Result<ModifierKind, SceneError> {
+    let r = &raw.reals;
+    let rgb = |i: usize| DVec3::new(r[i], r[i + 1], r[i + 2]);
+    raw.check_no_strings_or_integers()?;
+    raw.check_real_count()?;
+    non_negative(raw, 0..3, "a reflectance >= 0")?;
+    unit_interval(raw, 3)?;
+    non_negative(raw, 4..5, "a roughness >= 0")?;
+    Ok(if raw.kind == PrimitiveType::Plastic {
+        ModifierKind::Plastic(Plastic {
+            reflectance_rgb: rgb(0),
+            specularity: r[3],
+            roughness: r[4],
+        })
+    } else {
+        ModifierKind::Metal(Metal {
+            reflectance_rgb: rgb(0),
+            specularity: r[3],
+            roughness: r[4],
+        })
+    })
+}
+
+/// `trans`: 7 reals (colour, specularity, roughness, transmissivity, transmitted specularity).
+fn trans(raw: &RawPrimitive<'_>) -> Result<ModifierKind, SceneError> {
+    let r = &raw.reals;
+    let rgb = |i: usize| DVec3::new(r[i], r[i + 1], r[i + 2]);
+    raw.check_no_strings_or_integers()?;
+    raw.check_real_count()?;
+    non_negative(raw, 0..3, "a colour component >= 0")?;
+    unit_interval(raw, 3)?;
+    non_negative(raw, 4..5, "a roughness >= 0")?;
+    unit_interval(raw, 5)?;
+    unit_interval(raw, 6)?;
+    Ok(ModifierKind::Trans(Trans {
+        color_rgb: rgb(0),
+        specularity: r[3],
+        roughness: r[4],
+        transmissivity: r[5],
+        transmitted_specularity: r[6],
+    }))
+}
+
+/// `glass`: 3 transmissivities and an optional refractive index.
+fn glass(raw: &RawPrimitive<'_>) -> Result<ModifierKind, SceneError> {
+    let r = &raw.reals;
+    let rgb = |i: usize| DVec3::new(r[i], r[i + 1], r[i + 2]);
+    raw.check_no_strings_or_integers()?;
+    raw.check_count(
+        ArgumentList::Real,
+        r.len() == 3 || r.len() == 4,
+        "3 or 4 (rtn gtn btn [n])",
+    )?;
+    non_negative(raw, 0..3, "a transmissivity >= 0")?;
+    let refractive_index = match r.get(3) {
+        Some(&n) if n > 0.0 => n,
+        Some(_) => return Err(raw.invalid_real(3, "a refractive index > 0")),
+        None => GLASS_DEFAULT_REFRACTIVE_INDEX,
+    };
+    Ok(ModifierKind::Glass(Glass {
+        transmissivity_rgb: rgb(0),
+        refractive_index,
+    }))
+}
+
 /// Interprets a modifier primitive. `resolve` looks up modifier names referenced in string
 /// arguments (mirror's alternate material) as defined before this primitive; `top_file` is
 /// the top-level scene file being read, `working_directory` where RADIANCE would run (both
@@ -324,60 +390,9 @@ pub(crate) fn build(
     let r = &raw.reals;
     let rgb = |i: usize| DVec3::new(r[i], r[i + 1], r[i + 2]);
     Ok(match raw.kind {
-        PrimitiveType::Plastic | PrimitiveType::Metal => {
-            raw.check_no_strings_or_integers()?;
-            raw.check_real_count()?;
-            non_negative(raw, 0..3, "a reflectance >= 0")?;
-            unit_interval(raw, 3)?;
-            non_negative(raw, 4..5, "a roughness >= 0")?;
-            if raw.kind == PrimitiveType::Plastic {
-                ModifierKind::Plastic(Plastic {
-                    reflectance_rgb: rgb(0),
-                    specularity: r[3],
-                    roughness: r[4],
-                })
-            } else {
-                ModifierKind::Metal(Metal {
-                    reflectance_rgb: rgb(0),
-                    specularity: r[3],
-                    roughness: r[4],
-                })
-            }
-        }
-        PrimitiveType::Trans => {
-            raw.check_no_strings_or_integers()?;
-            raw.check_real_count()?;
-            non_negative(raw, 0..3, "a colour component >= 0")?;
-            unit_interval(raw, 3)?;
-            non_negative(raw, 4..5, "a roughness >= 0")?;
-            unit_interval(raw, 5)?;
-            unit_interval(raw, 6)?;
-            ModifierKind::Trans(Trans {
-                color_rgb: rgb(0),
-                specularity: r[3],
-                roughness: r[4],
-                transmissivity: r[5],
-                transmitted_specularity: r[6],
-            })
-        }
-        PrimitiveType::Glass => {
-            raw.check_no_strings_or_integers()?;
-            raw.check_count(
-                ArgumentList::Real,
-                r.len() == 3 || r.len() == 4,
-                "3 or 4 (rtn gtn btn [n])",
-            )?;
-            non_negative(raw, 0..3, "a transmissivity >= 0")?;
-            let refractive_index = match r.get(3) {
-                Some(&n) if n > 0.0 => n,
-                Some(_) => return Err(raw.invalid_real(3, "a refractive index > 0")),
-                None => GLASS_DEFAULT_REFRACTIVE_INDEX,
-            };
-            ModifierKind::Glass(Glass {
-                transmissivity_rgb: rgb(0),
-                refractive_index,
-            })
-        }
+        PrimitiveType::Plastic | PrimitiveType::Metal => plastic_or_metal(raw)?,
+        PrimitiveType::Trans => trans(raw)?,
+        PrimitiveType::Glass => glass(raw)?,
         PrimitiveType::Mirror => {
             let alternate_material = optional_alternate(raw, resolve)?;
             raw.check_real_count()?;
