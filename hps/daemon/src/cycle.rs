@@ -524,21 +524,9 @@ impl Pipeline {
         terms: &CaptureTerms,
         settings: &Settings,
     ) -> Result<Vec<SensorLux>, CycleError> {
-        let geometry = match &self.geometry {
-            Some((_, g)) => g,
-            None => return Err(CycleError::Model("no geometry".into())),
-        };
-        install_measured_sky(
-            &mut self.room.world,
-            map,
-            terms,
-            geometry,
-            self.room.dc.mf,
-            &self.state,
-        );
-        let result =
-            engine::illuminance(&self.room.world, &self.room.sensors, settings, &|_, _| {});
-        remove_measured_sky(&mut self.room.world);
+        let result = self.under_measured_sky(map, terms, |room, _| {
+            engine::illuminance(&room.world, &room.sensors, settings, &|_, _| {})
+        })?;
         let result = result.map_err(|e| CycleError::Model(format!("Monte-Carlo: {e}")))?;
         Ok(result
             .into_iter()
@@ -559,6 +547,28 @@ impl Pipeline {
         started: Instant,
         deadline_ms: f64,
     ) -> Result<ViewsOutcome, CycleError> {
+        let result = self.under_measured_sky(map, terms, |room, rates| {
+            evaluate_views(
+                &room.world,
+                request.views,
+                request.glare,
+                room.settings,
+                rates,
+                started,
+                deadline_ms,
+            )
+        })?;
+        result.map_err(|e| CycleError::Model(format!("views: {e}")))
+    }
+
+    /// Runs `f` on the room with this capture's measured sky installed (its patches, the
+    /// ground, the extracted sun: `model::install_measured_sky`), and takes the sky out again.
+    fn under_measured_sky<T>(
+        &mut self,
+        map: &LuminanceMap,
+        terms: &CaptureTerms,
+        f: impl FnOnce(&Room, &mut RenderRates) -> T,
+    ) -> Result<T, CycleError> {
         let geometry = match &self.geometry {
             Some((_, g)) => g,
             None => return Err(CycleError::Model("no geometry".into())),
@@ -571,17 +581,9 @@ impl Pipeline {
             self.room.dc.mf,
             &self.state,
         );
-        let result = evaluate_views(
-            &self.room.world,
-            request.views,
-            request.glare,
-            self.room.settings,
-            &mut self.render_rates,
-            started,
-            deadline_ms,
-        );
+        let result = f(&self.room, &mut self.render_rates);
         remove_measured_sky(&mut self.room.world);
-        result.map_err(|e| CycleError::Model(format!("views: {e}")))
+        Ok(result)
     }
 
     /// Where the daylight coefficients live.
