@@ -38,6 +38,10 @@ pub const BLOCKS: &[ExportedBlock] = &[
         verilog: fresh::<skylux_rtl::bayer::BayerGrouper>,
     },
     ExportedBlock {
+        name: "sun_accumulators",
+        verilog: fresh::<skylux_rtl::sun::SunAccumulators>,
+    },
+    ExportedBlock {
         name: "capture_path",
         verilog: fresh::<skylux_rtl::capture::CapturePath>,
     },

@@ -25,10 +25,10 @@ fn main() {
                 .and_then(|i| args.get(i + 1))
                 .map(PathBuf::from),
         ),
-        Some("check") => check(),
+        Some("check") => check(args.get(1).map(String::as_str)),
         Some("formal") => run_formal(&args[1..]),
         _ => Err(
-            "usage: skylux-bitstream verilog [--out DIR] | check | formal [PROOF [bmc|ind DEPTH]]"
+            "usage: skylux-bitstream verilog [--out DIR] | check [BLOCK] | formal [PROOF [bmc|ind DEPTH]]"
                 .to_string(),
         ),
     };
@@ -52,10 +52,14 @@ fn export(out: Option<PathBuf>) -> Result<(), String> {
     Ok(())
 }
 
-fn check() -> Result<(), String> {
+/// Lint, structure, synthesis and fit of every block, or of the one named.
+fn check(only: Option<&str>) -> Result<(), String> {
+    if only.is_some_and(|n| BLOCKS.iter().all(|b| b.name != n)) {
+        return Err(format!("no block named {:?}", only.unwrap_or_default()));
+    }
     println!("| block | LUTs | carry ALUTs | FFs | ALMs (est.) | M10K | DSP | % of 5CSEMA5 ALMs |");
     println!("|---|---|---|---|---|---|---|---|");
-    for block in BLOCKS {
+    for block in BLOCKS.iter().filter(|b| only.is_none_or(|n| n == b.name)) {
         let v = (block.verilog)();
         let fail = |e: xcheck::ToolError| format!("{}: {e}", block.name);
         xcheck::lint(block.name, &v).map_err(fail)?;

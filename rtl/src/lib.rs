@@ -13,6 +13,7 @@ pub mod i2c;
 pub mod raybox;
 pub mod regfile;
 pub mod sequencer;
+pub mod sun;
 
 pub use core::SkyluxCore;
 pub use regfile::RegisterFile;
