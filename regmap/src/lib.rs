@@ -22,6 +22,7 @@ pub mod descriptor;
 mod map;
 pub mod raybox_format;
 pub mod render;
+pub mod sun;
 mod validate;
 pub mod words;
 

@@ -1,17 +1,32 @@
 //! Sun extraction on simulated clear skies with a known sun: the sensor model integrates each
 //! group's footprint (so the disk's limb is imaged as real pixels image it), with noise; the
 //! HDR merge makes the map; the extraction must find the sun within 0.05° and its disk
-//! luminance with an RMSE within 3 % (issue 6), and flag what it cannot measure.
+//! luminance with an RMSE within 3 % (issue 6), and flag what it cannot measure; the fabric's
+//! sun accumulators on the same frames must agree with it within 0.05° and 1 % (issue 22).
 
 use glam::DVec3;
 use skylux_hps::camera::{direction_from_alt_az, CameraModel, DeviceConfig, OrientationConfig};
-use skylux_hps::campaign::{BayerPattern, Readout};
+use skylux_hps::campaign::{BayerPattern, RawFrame, Readout};
 use skylux_hps::hdr::{merge, Exposure, GroupGeometry, LuminanceMap, MapFlag};
-use skylux_hps::sun::{extract_sun, remove_sun, NoSun, SunFlag, SunSearch, SOLAR_DISK_SR};
+use skylux_hps::sun::{
+    extract_sun, fabric_background_cd_m2, remove_sun, sun_from_fabric, FabricSunSearch, NoSun,
+    SunExposure, SunFlag, SunSearch, SOLAR_DISK_SR,
+};
+use skylux_rtl::bayer::golden::{expected_words, BayerConfig, Frame, Phase};
+use skylux_rtl::sun::golden::accumulate;
 use skylux_sim::sensor::{Footprint, FrameRenderer, Noise};
 
 const EXPOSURES_S: [f64; 5] = [1e-6, 2.659_148e-5, 7.071_068e-4, 1.880_302e-2, 0.5];
 const SUN_RADIUS_DEG: f64 = 0.26645; // SOLAR_DISK_SR's disk
+/// Altitude and azimuth of the suns of the accuracy tests, degrees.
+const SUN_POSITIONS: [(f64, f64); 6] = [
+    (70.0, 180.0),
+    (55.0, 120.0),
+    (40.0, 250.0),
+    (32.0, 260.0),
+    (62.0, 300.0),
+    (45.0, 90.0),
+];
 
 fn camera() -> CameraModel {
     let mut d = DeviceConfig::default();
@@ -24,13 +39,21 @@ fn camera() -> CameraModel {
     CameraModel::new(d)
 }
 
-/// A 160x160 raw window centred on where `towards` lands, imaged and merged.
-fn imaged_map(
+/// A 160x160 raw window centred on where `towards` lands: its readout, the five frames and
+/// their merged map.
+struct Imaged {
+    readout: Readout,
+    frames: Vec<RawFrame>,
+    map: LuminanceMap,
+    geometry: GroupGeometry,
+}
+
+fn imaged(
     camera: &CameraModel,
     towards: DVec3,
     field: &(dyn Fn(DVec3) -> f64 + Sync),
     seed: u64,
-) -> (LuminanceMap, GroupGeometry) {
+) -> Imaged {
     let p = camera.project(towards).unwrap();
     let even = |v: f64| ((v as i64 - 80).max(0) as u32) & !1;
     let readout = Readout {
@@ -69,10 +92,24 @@ fn imaged_map(
         })
         .collect();
     let geometry = GroupGeometry::new(camera, &readout, 160, 160);
-    (
-        merge(&exposures, &camera.config, BayerPattern::GRBG, &geometry).unwrap(),
+    let map = merge(&exposures, &camera.config, BayerPattern::GRBG, &geometry).unwrap();
+    Imaged {
+        readout,
+        frames,
+        map,
         geometry,
-    )
+    }
+}
+
+/// The window imaged and merged: the map and its geometry.
+fn imaged_map(
+    camera: &CameraModel,
+    towards: DVec3,
+    field: &(dyn Fn(DVec3) -> f64 + Sync),
+    seed: u64,
+) -> (LuminanceMap, GroupGeometry) {
+    let i = imaged(camera, towards, field, seed);
+    (i.map, i.geometry)
 }
 
 fn clear_sky(sun: DVec3, sun_luminance: f64) -> impl Fn(DVec3) -> f64 + Sync {
@@ -91,14 +128,7 @@ fn clear_sky(sun: DVec3, sun_luminance: f64) -> impl Fn(DVec3) -> f64 + Sync {
 fn finds_the_sun_within_0_05_deg_and_its_luminance_within_3_percent() {
     let camera = camera();
     let mut sq = 0.0;
-    let positions = [
-        (70.0, 180.0),
-        (55.0, 120.0),
-        (40.0, 250.0),
-        (32.0, 260.0),
-        (62.0, 300.0),
-        (45.0, 90.0),
-    ];
+    let positions = SUN_POSITIONS;
     for (k, &(alt, az)) in positions.iter().enumerate() {
         let sun = direction_from_alt_az(alt, az);
         let truth_l = 1.6e9 * (1.0 - 0.1 * k as f64 / positions.len() as f64);
@@ -134,6 +164,91 @@ fn finds_the_sun_within_0_05_deg_and_its_luminance_within_3_percent() {
     let rmse = (sq / positions.len() as f64).sqrt();
     println!("solar luminance RMSE {:.2} %", 100.0 * rmse);
     assert!(rmse <= 0.03, "RMSE {rmse}");
+}
+
+/// The fabric's grouping of a frame, configured from the device as the HPS programs it
+/// (`bayer.*`: black level, valid range, weights to Q2.14).
+fn fabric_words(frame: &RawFrame, device: &DeviceConfig) -> Vec<u32> {
+    let q2_14 = |w: f64| (w * 16384.0).round() as u16;
+    let [r, g, b] = device.response.weights;
+    let config = BayerConfig {
+        phase: Phase::Grbg,
+        black: device.sensor.black_level_dn as u16,
+        valid_min: device.sensor.valid_min_dn as u16,
+        valid_max: device.sensor.valid_max_dn as u16,
+        weight_r: q2_14(r),
+        weight_g: q2_14(g),
+        weight_b: q2_14(b),
+        raw: false,
+    };
+    let frame = Frame {
+        width: frame.width,
+        height: frame.height,
+        samples: frame.samples_dn.clone(),
+    };
+    expected_words(&frame, &config)
+}
+
+/// The sun in the fabric (issue 22 item 2): on the shortest exposure of the same windows, the
+/// fabric's grouping makes the words and the accumulators sum them (golden models, which the
+/// blocks equal bit for bit: `rtl/tests/bayer.rs`, `rtl/tests/sun.rs`); `sun_from_fabric`
+/// turns the sums into a direction and a disk luminance within 0.05° and 1 % of what
+/// `extract_sun` finds in the merged map.
+#[test]
+fn the_fabric_accumulators_find_the_sun_the_map_finds() {
+    let camera = camera();
+    let exposure = SunExposure {
+        exposure_s: EXPOSURES_S[0],
+        gain: 1.0,
+    };
+    for (k, &(alt, az)) in SUN_POSITIONS.iter().enumerate() {
+        let sun = direction_from_alt_az(alt, az);
+        let truth_l = 1.6e9 * (1.0 - 0.1 * k as f64 / SUN_POSITIONS.len() as f64);
+        let im = imaged(&camera, sun, &clear_sky(sun, truth_l), k as u64);
+        let predicted = direction_from_alt_az(alt + 1.0, az - 1.5);
+        let found = extract_sun(
+            &im.map,
+            &im.geometry,
+            &SunSearch {
+                predicted_direction: Some(predicted),
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let search = FabricSunSearch {
+            threshold_cd_m2: 1e7,
+            predicted_direction: predicted,
+            window_half_groups: 24,
+        };
+        let config = search
+            .config(&camera, &im.readout, (80, 80), &exposure)
+            .unwrap();
+        let sums = accumulate(&config, &fabric_words(&im.frames[0], &camera.config));
+        let background = fabric_background_cd_m2(&im.map, &im.geometry, &sums);
+        let fabric =
+            sun_from_fabric(&sums, &search, &camera, &im.readout, &exposure, background).unwrap();
+        let vs_map_deg = fabric.direction.angle_between(found.direction).to_degrees();
+        let vs_truth_deg = fabric.direction.angle_between(sun).to_degrees();
+        let rel = fabric.disk_luminance_cd_m2 / found.disk_luminance_cd_m2 - 1.0;
+        println!(
+            "sun at alt {alt} az {az}: {} groups, {vs_map_deg:.4} deg from the map's sun \
+             ({vs_truth_deg:.4} from the truth), disk luminance {:+.3} % against the map's \
+             ({:+.3} % against the truth)",
+            sums.count,
+            100.0 * rel,
+            100.0 * (fabric.disk_luminance_cd_m2 / truth_l - 1.0)
+        );
+        assert!(sums.count >= 4, "{sums:?}");
+        assert!(fabric.flags.is_empty(), "{:?}", fabric.flags);
+        assert!(
+            vs_map_deg <= 0.05,
+            "direction {vs_map_deg} deg from the map's"
+        );
+        assert!(
+            rel.abs() <= 0.01,
+            "disk luminance {rel:+} against the map's"
+        );
+    }
 }
 
 #[test]

@@ -164,7 +164,6 @@ impl Logic for SunAccumulators {
             & (self.pos_x.val() <= self.x_max.val())
             & (self.pos_y.val() >= self.y_min.val())
             & (self.pos_y.val() <= self.y_max.val())
-            & !self.word.val().get_bit(30)
             & (self.luma.val() >= self.threshold_q14.val());
         self.s1_over.d.next = self.word.val().get_bit(31);
         self.s1_l.d.next = self.luma.val();

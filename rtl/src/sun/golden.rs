@@ -3,78 +3,33 @@
 
 use skylux_regmap::words::grouped;
 
-/// The accumulators' configuration, as the HPS sets it before the sun's exposure.
-#[derive(Copy, Clone, Debug, PartialEq, Eq)]
-pub struct SunConfig {
-    /// Groups per line of the window the grouper emits (the frame's width / 2).
-    pub groups_per_line: u16,
-    /// A group counts when its luminance (2^-14 DN, the grouped word's field) is at least this.
-    pub threshold_q14: u32,
-    /// The search window, inclusive, in group coordinates: the HPS centres it on the sun's
-    /// predicted position, so a bright reflection elsewhere in the field does not pull the
-    /// centroid (the HPS's `extract_sun` picks the component nearest the prediction).
-    pub x_min: u16,
-    pub x_max: u16,
-    pub y_min: u16,
-    pub y_max: u16,
-}
+pub use skylux_regmap::sun::{SunConfig, SunSums};
 
-/// What the accumulators hold after a frame.
-#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
-pub struct SunSums {
-    /// Groups that counted.
-    pub count: u32,
-    /// Of those, groups with a sample above `bayer.valid.MAX`: their luminance is clipped, so
-    /// the disk luminance is a lower bound when this is not zero.
-    pub over_count: u32,
-    /// Σ L, Σ x·L and Σ y·L over the counted groups (L in 2^-14 DN; x, y in groups).
-    pub sum_l: u64,
-    pub sum_xl: u64,
-    pub sum_yl: u64,
-    /// The largest L counted.
-    pub max_l: u32,
-    /// The bounding box of the counted groups (all zero when none counted).
-    pub min_x: u16,
-    pub max_x: u16,
-    pub min_y: u16,
-    pub max_y: u16,
-}
-
-impl SunSums {
-    /// The luminance-weighted centroid in group coordinates (x, y), if any group counted.
-    pub fn centroid(&self) -> Option<(f64, f64)> {
-        (self.sum_l > 0).then(|| {
-            (
-                self.sum_xl as f64 / self.sum_l as f64,
-                self.sum_yl as f64 / self.sum_l as f64,
-            )
-        })
+/// Adds a counted group to the sums.
+fn add(sums: &mut SunSums, x: u16, y: u16, word: u32) {
+    let l = grouped::luma_q14(word);
+    if sums.count == 0 {
+        (sums.min_x, sums.max_x, sums.min_y, sums.max_y) = (x, x, y, y);
     }
-
-    fn add(&mut self, x: u16, y: u16, word: u32) {
-        let l = grouped::luma_q14(word);
-        if self.count == 0 {
-            (self.min_x, self.max_x, self.min_y, self.max_y) = (x, x, y, y);
-        }
-        self.count += 1;
-        self.over_count += u32::from(grouped::over(word));
-        self.sum_l += u64::from(l);
-        self.sum_xl += u64::from(x) * u64::from(l);
-        self.sum_yl += u64::from(y) * u64::from(l);
-        self.max_l = self.max_l.max(l);
-        self.min_x = self.min_x.min(x);
-        self.max_x = self.max_x.max(x);
-        self.min_y = self.min_y.min(y);
-        self.max_y = self.max_y.max(y);
-    }
+    sums.count += 1;
+    sums.over_count += u32::from(grouped::over(word));
+    sums.sum_l += u64::from(l);
+    sums.sum_xl += u64::from(x) * u64::from(l);
+    sums.sum_yl += u64::from(y) * u64::from(l);
+    sums.max_l = sums.max_l.max(l);
+    sums.min_x = sums.min_x.min(x);
+    sums.max_x = sums.max_x.max(x);
+    sums.min_y = sums.min_y.min(y);
+    sums.max_y = sums.max_y.max(y);
 }
 
-/// Whether a group at (`x`, `y`) with `word` counts: inside the window, no sample under the
-/// valid range (a dark sample means the block is not the sun's), luminance at the threshold.
+/// Whether a group at (`x`, `y`) with `word` counts: inside the window and its luminance at
+/// the threshold. The under-range flag does not exclude a group: the disk's blurred limb is
+/// dim in the shortest exposure, and leaving it out would bias the flux low; the threshold
+/// keeps noise out.
 pub fn counts(config: &SunConfig, x: u16, y: u16, word: u32) -> bool {
     (config.x_min..=config.x_max).contains(&x)
         && (config.y_min..=config.y_max).contains(&y)
-        && !grouped::under(word)
         && grouped::luma_q14(word) >= config.threshold_q14
 }
 
@@ -87,7 +42,7 @@ pub fn accumulate(config: &SunConfig, words: &[u32]) -> SunSums {
     for (i, &word) in words.iter().enumerate() {
         let (x, y) = ((i % per_line) as u16, ((i / per_line) % 2048) as u16);
         if counts(config, x, y, word) {
-            sums.add(x, y, word);
+            add(&mut sums, x, y, word);
         }
     }
     sums
@@ -110,8 +65,8 @@ mod tests {
 
     #[test]
     fn a_two_group_sun_by_hand() {
-        // Line 0: 50 (below), 300 at x=1; line 1: 100 at x=2 (at the threshold), and an
-        // under-flagged bright group at x=3, which does not count.
+        // Line 0: 50 (below), 300 at x=1; line 1: 100 at x=2 (at the threshold, over-range),
+        // and an under-flagged group at x=3 that reaches the threshold, which counts.
         let words = [
             grouped::pack(50, false, false),
             grouped::pack(300, false, false),
@@ -123,14 +78,14 @@ mod tests {
             grouped::pack(5000, true, false),
         ];
         let s = accumulate(&config(), &words);
-        assert_eq!(s.count, 2);
+        assert_eq!(s.count, 3);
         assert_eq!(s.over_count, 1);
-        assert_eq!(s.sum_l, 400);
-        assert_eq!(s.sum_xl, 300 + 2 * 100);
-        assert_eq!(s.sum_yl, 100);
-        assert_eq!(s.max_l, 300);
-        assert_eq!((s.min_x, s.max_x, s.min_y, s.max_y), (1, 2, 0, 1));
-        assert_eq!(s.centroid(), Some((500.0 / 400.0, 100.0 / 400.0)));
+        assert_eq!(s.sum_l, 5400);
+        assert_eq!(s.sum_xl, 300 + 2 * 100 + 3 * 5000);
+        assert_eq!(s.sum_yl, 100 + 5000);
+        assert_eq!(s.max_l, 5000);
+        assert_eq!((s.min_x, s.max_x, s.min_y, s.max_y), (1, 3, 0, 1));
+        assert_eq!(s.centroid(), Some((15500.0 / 5400.0, 5100.0 / 5400.0)));
     }
 
     #[test]

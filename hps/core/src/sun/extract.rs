@@ -120,6 +120,45 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
+/// A box of groups, inclusive.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct GroupBox {
+    pub min_x: usize,
+    pub max_x: usize,
+    pub min_y: usize,
+    pub max_y: usize,
+}
+
+/// The circumsolar background: the median luminance of the valid, imaged groups more than
+/// `inner` and at most `outer` groups outside `bbox` (a square ring); 0 when there are none.
+pub fn ring_median_cd_m2(
+    map: &LuminanceMap,
+    geometry: &GroupGeometry,
+    bbox: &GroupBox,
+    inner: usize,
+    outer: usize,
+) -> f64 {
+    let (w, h) = (map.width, map.height);
+    if w == 0 || h == 0 {
+        return 0.0;
+    }
+    let mut ring = vec![];
+    for y in bbox.min_y.saturating_sub(outer)..=(bbox.max_y + outer).min(h - 1) {
+        for x in bbox.min_x.saturating_sub(outer)..=(bbox.max_x + outer).min(w - 1) {
+            let i = y * w + x;
+            let outside_inner = x + inner < bbox.min_x
+                || x > bbox.max_x + inner
+                || y + inner < bbox.min_y
+                || y > bbox.max_y + inner;
+            if outside_inner && geometry.direction[i].is_finite() && map.flags[i] == MapFlag::Valid
+            {
+                ring.push(map.luminance_cd_m2[i] as f64);
+            }
+        }
+    }
+    median(ring)
+}
+
 /// The 8-connected components of sun candidates: groups over-range, or at or above the
 /// threshold (scaled for groups larger than the disk).
 fn bright_components(
@@ -252,22 +291,19 @@ pub fn extract_sun(
         max_y = max_y.max(i / w);
     }
     let d = search.dilation_groups;
-    let ring = d + 3;
+    let bbox = GroupBox {
+        min_x,
+        max_x,
+        min_y,
+        max_y,
+    };
     let mut groups = vec![];
-    let mut annulus = vec![];
-    for y in min_y.saturating_sub(ring)..=(max_y + ring).min(h - 1) {
-        for x in min_x.saturating_sub(ring)..=(max_x + ring).min(w - 1) {
-            let i = y * w + x;
-            let outside =
-                |r: usize| x + r < min_x || x > max_x + r || y + r < min_y || y > max_y + r;
-            if !outside(d) {
-                groups.push(i);
-            } else if seen(i) && map.flags[i] == MapFlag::Valid {
-                annulus.push(map.luminance_cd_m2[i] as f64);
-            }
+    for y in min_y.saturating_sub(d)..=(max_y + d).min(h - 1) {
+        for x in min_x.saturating_sub(d)..=(max_x + d).min(w - 1) {
+            groups.push(y * w + x);
         }
     }
-    let background_cd_m2 = median(annulus);
+    let background_cd_m2 = ring_median_cd_m2(map, geometry, &bbox, d, d + 3);
     let saturated = groups.iter().any(|&i| map.flags[i] == MapFlag::OverRange);
     let (mut flux, mut weighted) = (0.0, DVec3::ZERO);
     let mut peak = 0.0f64;

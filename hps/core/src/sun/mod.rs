@@ -1,8 +1,9 @@
 //! The sun: where it is (NREL SPA, with ΔT and refraction), a short formula to compare, and
-//! its extraction from a measured luminance map.
+//! its extraction from a measured luminance map or from the fabric's accumulators.
 
 mod delta_t;
 pub mod extract;
+pub mod fabric;
 mod michalsky;
 pub mod orientation;
 pub mod position;
@@ -13,6 +14,9 @@ mod tracking_files;
 pub use delta_t::{delta_t_s, DELTA_T_YEARS};
 pub use extract::{
     extract_sun, remove_sun, ExtractedSun, NoSun, SunFlag, SunSearch, SOLAR_DISK_SR,
+};
+pub use fabric::{
+    fabric_background_cd_m2, sun_from_fabric, FabricSun, FabricSunSearch, SunExposure,
 };
 pub use michalsky::solar_position_michalsky;
 pub use orientation::{fit_orientation, OrientationError, OrientationFit, SunObservation};
