@@ -22,7 +22,7 @@ pub mod descriptor;
 mod map;
 pub mod raybox_format;
 pub mod render;
-pub mod sun;
+pub mod sun_values;
 mod validate;
 pub mod words;
 

@@ -15,6 +15,7 @@ pub const MAP: &[Block] = &[
     bayer::BLOCK,
     dma::BLOCK,
     raybox::BLOCK,
+    sun::BLOCK,
 ];
 
 /// The value of `sys.id`: ASCII "SKYL". The HPS refuses to drive anything else.
@@ -22,7 +23,7 @@ pub const DESIGN_ID: u32 = 0x534B_594C;
 /// Major version of the map: the HPS refuses a different major version.
 pub const VERSION_MAJOR: u32 = 0;
 /// Minor version: compatible additions. The HPS accepts a newer minor version.
-pub const VERSION_MINOR: u32 = 2;
+pub const VERSION_MINOR: u32 = 3;
 
 register_block! {
     /// Identification, scratch, time base, interrupts and bus errors.
@@ -471,6 +472,105 @@ register_block! {
         bus_timeout @ 0x024 {
             /// System clocks (0 disables the watchdog).
             CYCLES [0 +: 24] RW = 1_000_000;
+        }
+    }
+}
+
+register_block! {
+    /// The sun accumulators (`skylux_rtl::sun`; values in `crate::sun_values`): over the grouped
+    /// words of the exposure named here, the groups at or above a threshold in a window.
+    /// The sums hold until the next such frame begins; read them after its `FRAME_DONE`,
+    /// `frames` before and after (the same count means one frame's sums).
+    sun @ 0x7000 {
+        /// Which frames to accumulate.
+        ctrl @ 0x000 {
+            /// Accumulate frames of `EXPOSURE_INDEX` (grouped mode only).
+            ENABLE [0 +: 1] RW = 0;
+            /// The exposure (its index in the sequence) that images the sun: the shortest.
+            EXPOSURE_INDEX [4 +: 3] RW = 0;
+        }
+        /// A group counts at or above this luminance.
+        threshold @ 0x004 {
+            /// Grouped-word units (2^-14 DN).
+            Q14 [0 +: 30] RW = 0x3FFF_FFFF;
+        }
+        /// The search window's columns, inclusive.
+        window_x @ 0x008 {
+            /// First group column.
+            MIN [0 +: 11] RW = 0;
+            /// Last group column.
+            MAX [16 +: 11] RW = 2047;
+        }
+        /// The search window's rows, inclusive.
+        window_y @ 0x00C {
+            /// First group row.
+            MIN [0 +: 11] RW = 0;
+            /// Last group row.
+            MAX [16 +: 11] RW = 2047;
+        }
+        /// Groups that counted.
+        count @ 0x010 {
+            /// Groups.
+            GROUPS [0 +: 21] RO = 0;
+        }
+        /// Of those, groups with a sample above `bayer.valid.MAX`.
+        over_count @ 0x014 {
+            /// Groups.
+            GROUPS [0 +: 21] RO = 0;
+        }
+        /// Σ L over the counted groups, low word.
+        sum_l_lo @ 0x018 {
+            /// Bits 0-31, grouped-word units.
+            VALUE [0 +: 32] RO = 0;
+        }
+        /// Σ L, high word.
+        sum_l_hi @ 0x01C {
+            /// Bits 32-63.
+            VALUE [0 +: 32] RO = 0;
+        }
+        /// Σ x·L (x: group column), low word.
+        sum_xl_lo @ 0x020 {
+            /// Bits 0-31.
+            VALUE [0 +: 32] RO = 0;
+        }
+        /// Σ x·L, high word.
+        sum_xl_hi @ 0x024 {
+            /// Bits 32-63.
+            VALUE [0 +: 32] RO = 0;
+        }
+        /// Σ y·L (y: group row), low word.
+        sum_yl_lo @ 0x028 {
+            /// Bits 0-31.
+            VALUE [0 +: 32] RO = 0;
+        }
+        /// Σ y·L, high word.
+        sum_yl_hi @ 0x02C {
+            /// Bits 32-63.
+            VALUE [0 +: 32] RO = 0;
+        }
+        /// The largest L counted.
+        max_l @ 0x030 {
+            /// Grouped-word units.
+            Q14 [0 +: 30] RO = 0;
+        }
+        /// The counted groups' columns.
+        box_x @ 0x034 {
+            /// First.
+            MIN [0 +: 11] RO = 0;
+            /// Last.
+            MAX [16 +: 11] RO = 0;
+        }
+        /// The counted groups' rows.
+        box_y @ 0x038 {
+            /// First.
+            MIN [0 +: 11] RO = 0;
+            /// Last.
+            MAX [16 +: 11] RO = 0;
+        }
+        /// Accumulated frames begun since power-up.
+        frames @ 0x03C {
+            /// Count (wraps).
+            COUNT [0 +: 16] RO = 0;
         }
     }
 }

@@ -20,6 +20,7 @@ const OWNERS: &[(&str, &str, &str)] = &[
     ("bayer", "capture", ""),
     ("dma", "capture", ""),
     ("raybox", "raybox", "raybox_"),
+    ("sun", "capture", ""),
 ];
 
 /// Registers wired by hand (block, register): they go to pins, not to a sub-block.

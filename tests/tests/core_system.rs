@@ -2,15 +2,18 @@
 //! unit, wired from the register map) driven by the HPS drivers through the bus traits, with
 //! an MT9P031 model on the camera pins and SDRAM models with random back-pressure on both
 //! f2sdram ports: configure the sensor, run a 5-exposure sequence, read every frame and
-//! descriptor back, and compare the payloads with the golden Bayer model bit for bit.
+//! descriptor back, and compare the payloads with the golden Bayer model bit for bit, and the
+//! sun accumulators' registers with their golden model over the armed exposure.
 
 use skylux_bus::RegisterAccess;
 use skylux_hps::fpga::frames::CapturedFrame;
 use skylux_hps::fpga::sensor::{I2cTiming, SensorConfig, SensorError};
 use skylux_hps::fpga::sequence::ShieldConfig;
 use skylux_hps::fpga::{CaptureConfig, ExposureSlot, Fabric};
+use skylux_regmap::sun_values::SunConfig;
 use skylux_regmap::{sys, VERSION_MINOR};
 use skylux_rtl::bayer::golden::{expected_words, BayerConfig, Frame, Phase};
+use skylux_rtl::sun::golden::accumulate;
 use skylux_sim::core_rig::{sim_core, CoreRigConfig, SharedCore, SimCoreMemory, SimCoreRegisters};
 use skylux_sim::mt9p031::{Mt9p031, RampSource, CHIP_VERSION};
 
@@ -128,6 +131,8 @@ fn the_whole_core_captures_a_five_exposure_sequence_bit_for_bit() {
     f.capture_configure(&b.capture).unwrap();
     f.set_exposures(&slots()).unwrap();
     f.configure_shield(&SHIELD).unwrap();
+    // The sun accumulators armed on the third exposure, over part of the frame.
+    f.sun_configure(&SUN, SUN_EXPOSURE, true).unwrap();
     let bus = f.bus();
     bus.write_reg(&sys::irq_enable::REG, 0, sys::irq_enable::FRAME_DONE.mask())
         .unwrap();
@@ -141,6 +146,7 @@ fn the_whole_core_captures_a_five_exposure_sequence_bit_for_bit() {
     assert_ne!(sys::irq_status::SEQUENCE_DONE.get(irq), 0);
 
     let frames = read_frames(&mut b, 5);
+    sun_sums_are_the_armed_frames(&mut b.fabric, &frames);
     let rig = b.shared.lock().unwrap();
     assert_eq!(rig.log.frames.len(), 5, "one sensor frame per trigger");
     let mut previous_timestamp = 0;
@@ -239,6 +245,37 @@ fn merge_doubling<F: skylux_hps::hdr::ExposureFrame>(
 
 /// The HDR merge of the fabric's grouped words equals the merge of the raw frames the sensor
 /// sent, when the device's black level, valid range and weights are the fabric's.
+/// The exposure the sun accumulators are armed on, and their settings: a window of part of
+/// the 8 x 4 groups, a threshold in the ramp's range.
+const SUN_EXPOSURE: u8 = 2;
+const SUN: SunConfig = SunConfig {
+    groups_per_line: (WIDTH / 2) as u16,
+    threshold_q14: 80 << 14,
+    x_min: 1,
+    x_max: 6,
+    y_min: 1,
+    y_max: 3,
+};
+
+/// The sums the HPS reads from `sun.*` are the golden model's over the armed exposure's
+/// words as the DMA wrote them (equal to the golden grouping: checked below), one frame.
+fn sun_sums_are_the_armed_frames(f: &mut Fabric<SimCoreRegisters>, frames: &[CapturedFrame]) {
+    let (sums, armed_frames) = f.sun_read().unwrap();
+    let expected = accumulate(&SUN, &frames[usize::from(SUN_EXPOSURE)].words);
+    assert_eq!(sums, expected, "sun.* against the golden model");
+    assert_eq!(armed_frames, 1);
+    let in_window = 6 * 3;
+    assert!(
+        sums.count > 0 && sums.count < in_window,
+        "the threshold must split the window's groups: {sums:?}"
+    );
+    // Another exposure's words would give other sums: the arming picked its frame.
+    assert_ne!(
+        sums,
+        accumulate(&SUN, &frames[usize::from(SUN_EXPOSURE) + 1].words)
+    );
+}
+
 fn hdr_from_words_equals_hdr_from_samples(
     captured: &[CapturedFrame],
     sent: &[skylux_hps::campaign::RawFrame],

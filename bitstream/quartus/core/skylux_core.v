@@ -207,6 +207,27 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
     reg  [31:0] regs$raybox_tests_done_count;
     reg  [7:0] regs$raybox_info_lanes;
     wire  [23:0] regs$raybox_bus_timeout_cycles;
+    wire  regs$sun_ctrl_enable;
+    wire  [2:0] regs$sun_ctrl_exposure_index;
+    wire  [29:0] regs$sun_threshold_q14;
+    wire  [10:0] regs$sun_window_x_min;
+    wire  [10:0] regs$sun_window_x_max;
+    wire  [10:0] regs$sun_window_y_min;
+    wire  [10:0] regs$sun_window_y_max;
+    reg  [20:0] regs$sun_count_groups;
+    reg  [20:0] regs$sun_over_count_groups;
+    reg  [31:0] regs$sun_sum_l_lo_value;
+    reg  [31:0] regs$sun_sum_l_hi_value;
+    reg  [31:0] regs$sun_sum_xl_lo_value;
+    reg  [31:0] regs$sun_sum_xl_hi_value;
+    reg  [31:0] regs$sun_sum_yl_lo_value;
+    reg  [31:0] regs$sun_sum_yl_hi_value;
+    reg  [29:0] regs$sun_max_l_q14;
+    reg  [10:0] regs$sun_box_x_min;
+    reg  [10:0] regs$sun_box_x_max;
+    reg  [10:0] regs$sun_box_y_min;
+    reg  [10:0] regs$sun_box_y_max;
+    reg  [15:0] regs$sun_frames_count;
     reg  sensor$clock;
     reg  sensor$i2c_ctrl_start;
     reg  sensor$i2c_ctrl_read;
@@ -300,6 +321,13 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
     reg  [31:0] capture$dma_slot_stride_bytes;
     reg  [7:0] capture$dma_slots_count;
     reg  [23:0] capture$dma_bus_timeout_cycles;
+    reg  capture$sun_ctrl_enable;
+    reg  [2:0] capture$sun_ctrl_exposure_index;
+    reg  [29:0] capture$sun_threshold_q14;
+    reg  [10:0] capture$sun_window_x_min;
+    reg  [10:0] capture$sun_window_x_max;
+    reg  [10:0] capture$sun_window_y_min;
+    reg  [10:0] capture$sun_window_y_max;
     reg  [2:0] capture$tag_exposure_index;
     reg  [31:0] capture$tag_frame_number;
     reg  [63:0] capture$tag_timestamp;
@@ -321,6 +349,20 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
     wire  capture$dma_status_overflow_set;
     wire  capture$dma_status_bus_timeout_set;
     wire  [31:0] capture$dma_frames_written_count;
+    wire  [20:0] capture$sun_count_groups;
+    wire  [20:0] capture$sun_over_count_groups;
+    wire  [31:0] capture$sun_sum_l_lo_value;
+    wire  [31:0] capture$sun_sum_l_hi_value;
+    wire  [31:0] capture$sun_sum_xl_lo_value;
+    wire  [31:0] capture$sun_sum_xl_hi_value;
+    wire  [31:0] capture$sun_sum_yl_lo_value;
+    wire  [31:0] capture$sun_sum_yl_hi_value;
+    wire  [29:0] capture$sun_max_l_q14;
+    wire  [10:0] capture$sun_box_x_min;
+    wire  [10:0] capture$sun_box_x_max;
+    wire  [10:0] capture$sun_box_y_min;
+    wire  [10:0] capture$sun_box_y_max;
+    wire  [15:0] capture$sun_frames_count;
     wire  capture$irq_frame_done;
     wire  capture$irq_dma_error;
     wire  capture$irq_capture_error;
@@ -529,7 +571,28 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
         .raybox_status_bus_timeout_set(regs$raybox_status_bus_timeout_set),
         .raybox_tests_done_count(regs$raybox_tests_done_count),
         .raybox_info_lanes(regs$raybox_info_lanes),
-        .raybox_bus_timeout_cycles(regs$raybox_bus_timeout_cycles)
+        .raybox_bus_timeout_cycles(regs$raybox_bus_timeout_cycles),
+        .sun_ctrl_enable(regs$sun_ctrl_enable),
+        .sun_ctrl_exposure_index(regs$sun_ctrl_exposure_index),
+        .sun_threshold_q14(regs$sun_threshold_q14),
+        .sun_window_x_min(regs$sun_window_x_min),
+        .sun_window_x_max(regs$sun_window_x_max),
+        .sun_window_y_min(regs$sun_window_y_min),
+        .sun_window_y_max(regs$sun_window_y_max),
+        .sun_count_groups(regs$sun_count_groups),
+        .sun_over_count_groups(regs$sun_over_count_groups),
+        .sun_sum_l_lo_value(regs$sun_sum_l_lo_value),
+        .sun_sum_l_hi_value(regs$sun_sum_l_hi_value),
+        .sun_sum_xl_lo_value(regs$sun_sum_xl_lo_value),
+        .sun_sum_xl_hi_value(regs$sun_sum_xl_hi_value),
+        .sun_sum_yl_lo_value(regs$sun_sum_yl_lo_value),
+        .sun_sum_yl_hi_value(regs$sun_sum_yl_hi_value),
+        .sun_max_l_q14(regs$sun_max_l_q14),
+        .sun_box_x_min(regs$sun_box_x_min),
+        .sun_box_x_max(regs$sun_box_x_max),
+        .sun_box_y_min(regs$sun_box_y_min),
+        .sun_box_y_max(regs$sun_box_y_max),
+        .sun_frames_count(regs$sun_frames_count)
     );
     skylux_core$sensor sensor(
         .clock(sensor$clock),
@@ -627,6 +690,13 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
         .dma_slot_stride_bytes(capture$dma_slot_stride_bytes),
         .dma_slots_count(capture$dma_slots_count),
         .dma_bus_timeout_cycles(capture$dma_bus_timeout_cycles),
+        .sun_ctrl_enable(capture$sun_ctrl_enable),
+        .sun_ctrl_exposure_index(capture$sun_ctrl_exposure_index),
+        .sun_threshold_q14(capture$sun_threshold_q14),
+        .sun_window_x_min(capture$sun_window_x_min),
+        .sun_window_x_max(capture$sun_window_x_max),
+        .sun_window_y_min(capture$sun_window_y_min),
+        .sun_window_y_max(capture$sun_window_y_max),
         .tag_exposure_index(capture$tag_exposure_index),
         .tag_frame_number(capture$tag_frame_number),
         .tag_timestamp(capture$tag_timestamp),
@@ -648,6 +718,20 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
         .dma_status_overflow_set(capture$dma_status_overflow_set),
         .dma_status_bus_timeout_set(capture$dma_status_bus_timeout_set),
         .dma_frames_written_count(capture$dma_frames_written_count),
+        .sun_count_groups(capture$sun_count_groups),
+        .sun_over_count_groups(capture$sun_over_count_groups),
+        .sun_sum_l_lo_value(capture$sun_sum_l_lo_value),
+        .sun_sum_l_hi_value(capture$sun_sum_l_hi_value),
+        .sun_sum_xl_lo_value(capture$sun_sum_xl_lo_value),
+        .sun_sum_xl_hi_value(capture$sun_sum_xl_hi_value),
+        .sun_sum_yl_lo_value(capture$sun_sum_yl_lo_value),
+        .sun_sum_yl_hi_value(capture$sun_sum_yl_hi_value),
+        .sun_max_l_q14(capture$sun_max_l_q14),
+        .sun_box_x_min(capture$sun_box_x_min),
+        .sun_box_x_max(capture$sun_box_x_max),
+        .sun_box_y_min(capture$sun_box_y_min),
+        .sun_box_y_max(capture$sun_box_y_max),
+        .sun_frames_count(capture$sun_frames_count),
         .irq_frame_done(capture$irq_frame_done),
         .irq_dma_error(capture$irq_dma_error),
         .irq_capture_error(capture$irq_capture_error),
@@ -872,12 +956,33 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
         regs$raybox_tests_done_count = raybox$tests_done_count;
         regs$raybox_info_lanes = raybox$info_lanes;
         raybox$bus_timeout_cycles = regs$raybox_bus_timeout_cycles;
+        capture$sun_ctrl_enable = regs$sun_ctrl_enable;
+        capture$sun_ctrl_exposure_index = regs$sun_ctrl_exposure_index;
+        capture$sun_threshold_q14 = regs$sun_threshold_q14;
+        capture$sun_window_x_min = regs$sun_window_x_min;
+        capture$sun_window_x_max = regs$sun_window_x_max;
+        capture$sun_window_y_min = regs$sun_window_y_min;
+        capture$sun_window_y_max = regs$sun_window_y_max;
+        regs$sun_count_groups = capture$sun_count_groups;
+        regs$sun_over_count_groups = capture$sun_over_count_groups;
+        regs$sun_sum_l_lo_value = capture$sun_sum_l_lo_value;
+        regs$sun_sum_l_hi_value = capture$sun_sum_l_hi_value;
+        regs$sun_sum_xl_lo_value = capture$sun_sum_xl_lo_value;
+        regs$sun_sum_xl_hi_value = capture$sun_sum_xl_hi_value;
+        regs$sun_sum_yl_lo_value = capture$sun_sum_yl_lo_value;
+        regs$sun_sum_yl_hi_value = capture$sun_sum_yl_hi_value;
+        regs$sun_max_l_q14 = capture$sun_max_l_q14;
+        regs$sun_box_x_min = capture$sun_box_x_min;
+        regs$sun_box_x_max = capture$sun_box_x_max;
+        regs$sun_box_y_min = capture$sun_box_y_min;
+        regs$sun_box_y_max = capture$sun_box_y_max;
+        regs$sun_frames_count = capture$sun_frames_count;
     end
     
 endmodule // top
 
 
-module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sensor_data,capture_ctrl_enable,capture_ctrl_raw,capture_window_width,capture_window_height,bayer_mode_phase,bayer_black_level,bayer_valid_min,bayer_valid_max,bayer_weight_r_q2_14,bayer_weight_g_q2_14,bayer_weight_b_q2_14,dma_ctrl_enable,dma_ctrl_reset,dma_window_base_addr,dma_window_size_bytes,dma_slot_stride_bytes,dma_slots_count,dma_bus_timeout_cycles,tag_exposure_index,tag_frame_number,tag_timestamp,capture_status_frame_valid,capture_status_line_short_set,capture_status_line_long_set,capture_status_frame_short_set,capture_status_frame_long_set,capture_status_fifo_overflow_set,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,dma_status_busy,dma_status_slot,dma_status_frame_done_set,dma_status_out_of_window_set,dma_status_overflow_set,dma_status_bus_timeout_set,dma_frames_written_count,irq_frame_done,irq_dma_error,irq_capture_error,avm_address,avm_burstcount,avm_write,avm_writedata,avm_byteenable,avm_waitrequest);
+module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sensor_data,capture_ctrl_enable,capture_ctrl_raw,capture_window_width,capture_window_height,bayer_mode_phase,bayer_black_level,bayer_valid_min,bayer_valid_max,bayer_weight_r_q2_14,bayer_weight_g_q2_14,bayer_weight_b_q2_14,dma_ctrl_enable,dma_ctrl_reset,dma_window_base_addr,dma_window_size_bytes,dma_slot_stride_bytes,dma_slots_count,dma_bus_timeout_cycles,sun_ctrl_enable,sun_ctrl_exposure_index,sun_threshold_q14,sun_window_x_min,sun_window_x_max,sun_window_y_min,sun_window_y_max,tag_exposure_index,tag_frame_number,tag_timestamp,capture_status_frame_valid,capture_status_line_short_set,capture_status_line_long_set,capture_status_frame_short_set,capture_status_frame_long_set,capture_status_fifo_overflow_set,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,dma_status_busy,dma_status_slot,dma_status_frame_done_set,dma_status_out_of_window_set,dma_status_overflow_set,dma_status_bus_timeout_set,dma_frames_written_count,sun_count_groups,sun_over_count_groups,sun_sum_l_lo_value,sun_sum_l_hi_value,sun_sum_xl_lo_value,sun_sum_xl_hi_value,sun_sum_yl_lo_value,sun_sum_yl_hi_value,sun_max_l_q14,sun_box_x_min,sun_box_x_max,sun_box_y_min,sun_box_y_max,sun_frames_count,irq_frame_done,irq_dma_error,irq_capture_error,avm_address,avm_burstcount,avm_write,avm_writedata,avm_byteenable,avm_waitrequest);
     
     // Module arguments
     input wire  pixclk;
@@ -903,6 +1008,13 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
     input wire  [31:0] dma_slot_stride_bytes;
     input wire  [7:0] dma_slots_count;
     input wire  [23:0] dma_bus_timeout_cycles;
+    input wire  sun_ctrl_enable;
+    input wire  [2:0] sun_ctrl_exposure_index;
+    input wire  [29:0] sun_threshold_q14;
+    input wire  [10:0] sun_window_x_min;
+    input wire  [10:0] sun_window_x_max;
+    input wire  [10:0] sun_window_y_min;
+    input wire  [10:0] sun_window_y_max;
     input wire  [2:0] tag_exposure_index;
     input wire  [31:0] tag_frame_number;
     input wire  [63:0] tag_timestamp;
@@ -924,6 +1036,20 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
     output reg  dma_status_overflow_set;
     output reg  dma_status_bus_timeout_set;
     output reg  [31:0] dma_frames_written_count;
+    output reg  [20:0] sun_count_groups;
+    output reg  [20:0] sun_over_count_groups;
+    output reg  [31:0] sun_sum_l_lo_value;
+    output reg  [31:0] sun_sum_l_hi_value;
+    output reg  [31:0] sun_sum_xl_lo_value;
+    output reg  [31:0] sun_sum_xl_hi_value;
+    output reg  [31:0] sun_sum_yl_lo_value;
+    output reg  [31:0] sun_sum_yl_hi_value;
+    output reg  [29:0] sun_max_l_q14;
+    output reg  [10:0] sun_box_x_min;
+    output reg  [10:0] sun_box_x_max;
+    output reg  [10:0] sun_box_y_min;
+    output reg  [10:0] sun_box_y_max;
+    output reg  [15:0] sun_frames_count;
     output reg  irq_frame_done;
     output reg  irq_dma_error;
     output reg  irq_capture_error;
@@ -1019,6 +1145,10 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
     wire  [15:0] ingest$capture_fifo_high_water_words;
     wire  [31:0] ingest$capture_frames_count;
     wire  ingest$dma_status_overflow_set;
+    wire  ingest$taken_valid;
+    wire  [31:0] ingest$taken_word;
+    wire  ingest$taken_first;
+    wire  [2:0] ingest$taken_exposure_index;
     reg  writer$clock;
     reg  writer$restart;
     reg  [31:0] writer$window_base;
@@ -1051,6 +1181,28 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
     wire  [63:0] writer$avm_writedata;
     wire  [7:0] writer$avm_byteenable;
     reg  writer$avm_waitrequest;
+    reg  sun$clock;
+    reg  sun$word_valid;
+    reg  [31:0] sun$word;
+    reg  sun$frame_start;
+    reg  sun$armed;
+    reg  [10:0] sun$groups_per_line;
+    reg  [29:0] sun$threshold_q14;
+    reg  [10:0] sun$x_min;
+    reg  [10:0] sun$x_max;
+    reg  [10:0] sun$y_min;
+    reg  [10:0] sun$y_max;
+    wire  [20:0] sun$sun_count;
+    wire  [20:0] sun$over_count;
+    wire  [63:0] sun$sum_l;
+    wire  [63:0] sun$sum_xl;
+    wire  [63:0] sun$sum_yl;
+    wire  [29:0] sun$max_l;
+    wire  [10:0] sun$min_x;
+    wire  [10:0] sun$max_x;
+    wire  [10:0] sun$min_y;
+    wire  [10:0] sun$max_y;
+    wire  [15:0] sun$armed_frames;
     
     // Sub module instances
     skylux_core$capture$capture capture(
@@ -1143,7 +1295,11 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
         .capture_last_frame_lines(ingest$capture_last_frame_lines),
         .capture_fifo_high_water_words(ingest$capture_fifo_high_water_words),
         .capture_frames_count(ingest$capture_frames_count),
-        .dma_status_overflow_set(ingest$dma_status_overflow_set)
+        .dma_status_overflow_set(ingest$dma_status_overflow_set),
+        .taken_valid(ingest$taken_valid),
+        .taken_word(ingest$taken_word),
+        .taken_first(ingest$taken_first),
+        .taken_exposure_index(ingest$taken_exposure_index)
     );
     skylux_core$capture$writer writer(
         .clock(writer$clock),
@@ -1178,6 +1334,30 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
         .avm_writedata(writer$avm_writedata),
         .avm_byteenable(writer$avm_byteenable),
         .avm_waitrequest(writer$avm_waitrequest)
+    );
+    skylux_core$capture$sun sun(
+        .clock(sun$clock),
+        .word_valid(sun$word_valid),
+        .word(sun$word),
+        .frame_start(sun$frame_start),
+        .armed(sun$armed),
+        .groups_per_line(sun$groups_per_line),
+        .threshold_q14(sun$threshold_q14),
+        .x_min(sun$x_min),
+        .x_max(sun$x_max),
+        .y_min(sun$y_min),
+        .y_max(sun$y_max),
+        .sun_count(sun$sun_count),
+        .over_count(sun$over_count),
+        .sum_l(sun$sum_l),
+        .sum_xl(sun$sum_xl),
+        .sum_yl(sun$sum_yl),
+        .max_l(sun$max_l),
+        .min_x(sun$min_x),
+        .max_x(sun$max_x),
+        .min_y(sun$min_y),
+        .max_y(sun$max_y),
+        .armed_frames(sun$armed_frames)
     );
     
     // Update code
@@ -1263,6 +1443,31 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
         irq_frame_done = writer$dma_status_frame_done_set;
         irq_dma_error = writer$dma_status_out_of_window_set | writer$dma_status_bus_timeout_set | ingest$dma_status_overflow_set;
         irq_capture_error = ingest$capture_status_line_short_set | ingest$capture_status_line_long_set | ingest$capture_status_frame_short_set | ingest$capture_status_frame_long_set | ingest$capture_status_fifo_overflow_set | ingest$capture_status_pixclk_stopped_set;
+        sun$clock = clock;
+        sun$word_valid = ingest$taken_valid;
+        sun$word = ingest$taken_word;
+        sun$frame_start = ingest$taken_first;
+        sun$armed = sun_ctrl_enable & ~capture_ctrl_raw & (ingest$taken_exposure_index == sun_ctrl_exposure_index);
+        sun$groups_per_line = capture_window_width[(32'h1)+:(11)];
+        sun$threshold_q14 = sun_threshold_q14;
+        sun$x_min = sun_window_x_min;
+        sun$x_max = sun_window_x_max;
+        sun$y_min = sun_window_y_min;
+        sun$y_max = sun_window_y_max;
+        sun_count_groups = sun$sun_count;
+        sun_over_count_groups = sun$over_count;
+        sun_sum_l_lo_value = sun$sum_l[(32'h0)+:(32)];
+        sun_sum_l_hi_value = sun$sum_l[(32'h20)+:(32)];
+        sun_sum_xl_lo_value = sun$sum_xl[(32'h0)+:(32)];
+        sun_sum_xl_hi_value = sun$sum_xl[(32'h20)+:(32)];
+        sun_sum_yl_lo_value = sun$sum_yl[(32'h0)+:(32)];
+        sun_sum_yl_hi_value = sun$sum_yl[(32'h20)+:(32)];
+        sun_max_l_q14 = sun$max_l;
+        sun_box_x_min = sun$min_x;
+        sun_box_x_max = sun$max_x;
+        sun_box_y_min = sun$min_y;
+        sun_box_y_max = sun$max_y;
+        sun_frames_count = sun$armed_frames;
         avm_address = writer$avm_address;
         avm_burstcount = writer$avm_burstcount;
         avm_write = writer$avm_write;
@@ -4826,7 +5031,7 @@ module skylux_core$capture$grouper$quads$out_top_right(d,q,clock);
 endmodule // skylux_core$capture$grouper$quads$out_top_right
 
 
-module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read,frame_valid_async,heartbeat_async,enable,raw,tag_exposure_index,tag_frame_number,tag_timestamp,writer_idle,frame_closed,beat_room,beat_push,beat_data,frame_open,frame_ended,desc_frame_number,desc_timestamp,desc_info,desc_geometry,desc_words,desc_checksum,capture_status_frame_valid,capture_status_line_short_set,capture_status_line_long_set,capture_status_frame_short_set,capture_status_frame_long_set,capture_status_fifo_overflow_set,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,dma_status_overflow_set);
+module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read,frame_valid_async,heartbeat_async,enable,raw,tag_exposure_index,tag_frame_number,tag_timestamp,writer_idle,frame_closed,beat_room,beat_push,beat_data,frame_open,frame_ended,desc_frame_number,desc_timestamp,desc_info,desc_geometry,desc_words,desc_checksum,capture_status_frame_valid,capture_status_line_short_set,capture_status_line_long_set,capture_status_frame_short_set,capture_status_frame_long_set,capture_status_fifo_overflow_set,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,dma_status_overflow_set,taken_valid,taken_word,taken_first,taken_exposure_index);
     
     // Module arguments
     input wire  clock;
@@ -4866,6 +5071,10 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
     output reg  [15:0] capture_fifo_high_water_words;
     output reg  [31:0] capture_frames_count;
     output reg  dma_status_overflow_set;
+    output reg  taken_valid;
+    output reg  [31:0] taken_word;
+    output reg  taken_first;
+    output reg  [2:0] taken_exposure_index;
     
     // Enums
     localparam IngestState$Idle = 0;
@@ -5191,6 +5400,10 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         info_start = (info_start & ~(1 << (32'h8)) | ((raw) << (32'h8)));
         beat_push = 1'b0;
         beat_data = 32'h0;
+        taken_valid = 1'b0;
+        taken_word = payload;
+        taken_first = words$q == 32'h0;
+        taken_exposure_index = info$q[(32'h0)+:(3)];
         frame_open = 1'b0;
         close_now = 1'b0;
         case (state$q)
@@ -5222,6 +5435,7 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
                     if (is_data) begin
                         if (beat_room) begin
                             fifo_read = 1'b1;
+                            taken_valid = 1'b1;
                             words$d = words$q + 32'h1;
                             checksum$d = checksum$q + payload;
                             if (half_valid$q) begin
@@ -5738,6 +5952,1031 @@ module skylux_core$capture$ingest$words(d,q,clock);
     end
           
 endmodule // skylux_core$capture$ingest$words
+
+
+module skylux_core$capture$sun(clock,word_valid,word,frame_start,armed,groups_per_line,threshold_q14,x_min,x_max,y_min,y_max,sun_count,over_count,sum_l,sum_xl,sum_yl,max_l,min_x,max_x,min_y,max_y,armed_frames);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  word_valid;
+    input wire  [31:0] word;
+    input wire  frame_start;
+    input wire  armed;
+    input wire  [10:0] groups_per_line;
+    input wire  [29:0] threshold_q14;
+    input wire  [10:0] x_min;
+    input wire  [10:0] x_max;
+    input wire  [10:0] y_min;
+    input wire  [10:0] y_max;
+    output reg  [20:0] sun_count;
+    output reg  [20:0] over_count;
+    output reg  [63:0] sum_l;
+    output reg  [63:0] sum_xl;
+    output reg  [63:0] sum_yl;
+    output reg  [29:0] max_l;
+    output reg  [10:0] min_x;
+    output reg  [10:0] max_x;
+    output reg  [10:0] min_y;
+    output reg  [10:0] max_y;
+    output reg  [15:0] armed_frames;
+    
+    // Stub signals
+    reg  [10:0] next_x$d;
+    wire  [10:0] next_x$q;
+    reg  next_x$clock;
+    reg  [10:0] next_y$d;
+    wire  [10:0] next_y$q;
+    reg  next_y$clock;
+    reg  frame_armed$d;
+    wire  frame_armed$q;
+    reg  frame_armed$clock;
+    reg  s1_first$d;
+    wire  s1_first$q;
+    reg  s1_first$clock;
+    reg  s1_counts$d;
+    wire  s1_counts$q;
+    reg  s1_counts$clock;
+    reg  s1_over$d;
+    wire  s1_over$q;
+    reg  s1_over$clock;
+    reg  [29:0] s1_l$d;
+    wire  [29:0] s1_l$q;
+    reg  s1_l$clock;
+    reg  [10:0] s1_x$d;
+    wire  [10:0] s1_x$q;
+    reg  s1_x$clock;
+    reg  [10:0] s1_y$d;
+    wire  [10:0] s1_y$q;
+    reg  s1_y$clock;
+    reg  s2_first$d;
+    wire  s2_first$q;
+    reg  s2_first$clock;
+    reg  s2_counts$d;
+    wire  s2_counts$q;
+    reg  s2_counts$clock;
+    reg  s2_over$d;
+    wire  s2_over$q;
+    reg  s2_over$clock;
+    reg  [29:0] s2_l$d;
+    wire  [29:0] s2_l$q;
+    reg  s2_l$clock;
+    reg  [10:0] s2_x$d;
+    wire  [10:0] s2_x$q;
+    reg  s2_x$clock;
+    reg  [10:0] s2_y$d;
+    wire  [10:0] s2_y$q;
+    reg  s2_y$clock;
+    reg  [31:0] s2_xl_high$d;
+    wire  [31:0] s2_xl_high$q;
+    reg  s2_xl_high$clock;
+    reg  [31:0] s2_xl_low$d;
+    wire  [31:0] s2_xl_low$q;
+    reg  s2_xl_low$clock;
+    reg  [31:0] s2_yl_high$d;
+    wire  [31:0] s2_yl_high$q;
+    reg  s2_yl_high$clock;
+    reg  [31:0] s2_yl_low$d;
+    wire  [31:0] s2_yl_low$q;
+    reg  s2_yl_low$clock;
+    reg  [20:0] acc_count$d;
+    wire  [20:0] acc_count$q;
+    reg  acc_count$clock;
+    reg  [20:0] acc_over$d;
+    wire  [20:0] acc_over$q;
+    reg  acc_over$clock;
+    reg  [63:0] acc_l$d;
+    wire  [63:0] acc_l$q;
+    reg  acc_l$clock;
+    reg  [63:0] acc_xl$d;
+    wire  [63:0] acc_xl$q;
+    reg  acc_xl$clock;
+    reg  [63:0] acc_yl$d;
+    wire  [63:0] acc_yl$q;
+    reg  acc_yl$clock;
+    reg  [29:0] acc_max$d;
+    wire  [29:0] acc_max$q;
+    reg  acc_max$clock;
+    reg  [10:0] acc_min_x$d;
+    wire  [10:0] acc_min_x$q;
+    reg  acc_min_x$clock;
+    reg  [10:0] acc_max_x$d;
+    wire  [10:0] acc_max_x$q;
+    reg  acc_max_x$clock;
+    reg  [10:0] acc_min_y$d;
+    wire  [10:0] acc_min_y$q;
+    reg  acc_min_y$clock;
+    reg  [10:0] acc_max_y$d;
+    wire  [10:0] acc_max_y$q;
+    reg  acc_max_y$clock;
+    reg  [15:0] acc_frames$d;
+    wire  [15:0] acc_frames$q;
+    reg  acc_frames$clock;
+    
+    // Local signals
+    reg  [10:0] pos_x;
+    reg  [10:0] pos_y;
+    reg  armed_now;
+    reg  [29:0] luma;
+    reg  [63:0] xl;
+    reg  [63:0] yl;
+    reg  [20:0] base_count;
+    reg  [20:0] base_over;
+    reg  [63:0] base_l;
+    reg  [63:0] base_xl;
+    reg  [63:0] base_yl;
+    reg  [29:0] base_max;
+    
+    // Sub module instances
+    skylux_core$capture$sun$next_x next_x(
+        .d(next_x$d),
+        .q(next_x$q),
+        .clock(next_x$clock)
+    );
+    skylux_core$capture$sun$next_y next_y(
+        .d(next_y$d),
+        .q(next_y$q),
+        .clock(next_y$clock)
+    );
+    skylux_core$capture$sun$frame_armed frame_armed(
+        .d(frame_armed$d),
+        .q(frame_armed$q),
+        .clock(frame_armed$clock)
+    );
+    skylux_core$capture$sun$s1_first s1_first(
+        .d(s1_first$d),
+        .q(s1_first$q),
+        .clock(s1_first$clock)
+    );
+    skylux_core$capture$sun$s1_counts s1_counts(
+        .d(s1_counts$d),
+        .q(s1_counts$q),
+        .clock(s1_counts$clock)
+    );
+    skylux_core$capture$sun$s1_over s1_over(
+        .d(s1_over$d),
+        .q(s1_over$q),
+        .clock(s1_over$clock)
+    );
+    skylux_core$capture$sun$s1_l s1_l(
+        .d(s1_l$d),
+        .q(s1_l$q),
+        .clock(s1_l$clock)
+    );
+    skylux_core$capture$sun$s1_x s1_x(
+        .d(s1_x$d),
+        .q(s1_x$q),
+        .clock(s1_x$clock)
+    );
+    skylux_core$capture$sun$s1_y s1_y(
+        .d(s1_y$d),
+        .q(s1_y$q),
+        .clock(s1_y$clock)
+    );
+    skylux_core$capture$sun$s2_first s2_first(
+        .d(s2_first$d),
+        .q(s2_first$q),
+        .clock(s2_first$clock)
+    );
+    skylux_core$capture$sun$s2_counts s2_counts(
+        .d(s2_counts$d),
+        .q(s2_counts$q),
+        .clock(s2_counts$clock)
+    );
+    skylux_core$capture$sun$s2_over s2_over(
+        .d(s2_over$d),
+        .q(s2_over$q),
+        .clock(s2_over$clock)
+    );
+    skylux_core$capture$sun$s2_l s2_l(
+        .d(s2_l$d),
+        .q(s2_l$q),
+        .clock(s2_l$clock)
+    );
+    skylux_core$capture$sun$s2_x s2_x(
+        .d(s2_x$d),
+        .q(s2_x$q),
+        .clock(s2_x$clock)
+    );
+    skylux_core$capture$sun$s2_y s2_y(
+        .d(s2_y$d),
+        .q(s2_y$q),
+        .clock(s2_y$clock)
+    );
+    skylux_core$capture$sun$s2_xl_high s2_xl_high(
+        .d(s2_xl_high$d),
+        .q(s2_xl_high$q),
+        .clock(s2_xl_high$clock)
+    );
+    skylux_core$capture$sun$s2_xl_low s2_xl_low(
+        .d(s2_xl_low$d),
+        .q(s2_xl_low$q),
+        .clock(s2_xl_low$clock)
+    );
+    skylux_core$capture$sun$s2_yl_high s2_yl_high(
+        .d(s2_yl_high$d),
+        .q(s2_yl_high$q),
+        .clock(s2_yl_high$clock)
+    );
+    skylux_core$capture$sun$s2_yl_low s2_yl_low(
+        .d(s2_yl_low$d),
+        .q(s2_yl_low$q),
+        .clock(s2_yl_low$clock)
+    );
+    skylux_core$capture$sun$acc_count acc_count(
+        .d(acc_count$d),
+        .q(acc_count$q),
+        .clock(acc_count$clock)
+    );
+    skylux_core$capture$sun$acc_over acc_over(
+        .d(acc_over$d),
+        .q(acc_over$q),
+        .clock(acc_over$clock)
+    );
+    skylux_core$capture$sun$acc_l acc_l(
+        .d(acc_l$d),
+        .q(acc_l$q),
+        .clock(acc_l$clock)
+    );
+    skylux_core$capture$sun$acc_xl acc_xl(
+        .d(acc_xl$d),
+        .q(acc_xl$q),
+        .clock(acc_xl$clock)
+    );
+    skylux_core$capture$sun$acc_yl acc_yl(
+        .d(acc_yl$d),
+        .q(acc_yl$q),
+        .clock(acc_yl$clock)
+    );
+    skylux_core$capture$sun$acc_max acc_max(
+        .d(acc_max$d),
+        .q(acc_max$q),
+        .clock(acc_max$clock)
+    );
+    skylux_core$capture$sun$acc_min_x acc_min_x(
+        .d(acc_min_x$d),
+        .q(acc_min_x$q),
+        .clock(acc_min_x$clock)
+    );
+    skylux_core$capture$sun$acc_max_x acc_max_x(
+        .d(acc_max_x$d),
+        .q(acc_max_x$q),
+        .clock(acc_max_x$clock)
+    );
+    skylux_core$capture$sun$acc_min_y acc_min_y(
+        .d(acc_min_y$d),
+        .q(acc_min_y$q),
+        .clock(acc_min_y$clock)
+    );
+    skylux_core$capture$sun$acc_max_y acc_max_y(
+        .d(acc_max_y$d),
+        .q(acc_max_y$q),
+        .clock(acc_max_y$clock)
+    );
+    skylux_core$capture$sun$acc_frames acc_frames(
+        .d(acc_frames$d),
+        .q(acc_frames$q),
+        .clock(acc_frames$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        next_x$clock = clock;
+        next_y$clock = clock;
+        frame_armed$clock = clock;
+        s1_first$clock = clock;
+        s1_counts$clock = clock;
+        s1_over$clock = clock;
+        s1_l$clock = clock;
+        s1_x$clock = clock;
+        s1_y$clock = clock;
+        s2_first$clock = clock;
+        s2_counts$clock = clock;
+        s2_over$clock = clock;
+        s2_l$clock = clock;
+        s2_x$clock = clock;
+        s2_y$clock = clock;
+        s2_xl_high$clock = clock;
+        s2_xl_low$clock = clock;
+        s2_yl_high$clock = clock;
+        s2_yl_low$clock = clock;
+        acc_count$clock = clock;
+        acc_over$clock = clock;
+        acc_l$clock = clock;
+        acc_xl$clock = clock;
+        acc_yl$clock = clock;
+        acc_max$clock = clock;
+        acc_min_x$clock = clock;
+        acc_max_x$clock = clock;
+        acc_min_y$clock = clock;
+        acc_max_y$clock = clock;
+        acc_frames$clock = clock;
+        next_x$d = next_x$q;
+        next_y$d = next_y$q;
+        frame_armed$d = frame_armed$q;
+        s1_first$d = s1_first$q;
+        s1_counts$d = s1_counts$q;
+        s1_over$d = s1_over$q;
+        s1_l$d = s1_l$q;
+        s1_x$d = s1_x$q;
+        s1_y$d = s1_y$q;
+        s2_first$d = s2_first$q;
+        s2_counts$d = s2_counts$q;
+        s2_over$d = s2_over$q;
+        s2_l$d = s2_l$q;
+        s2_x$d = s2_x$q;
+        s2_y$d = s2_y$q;
+        s2_xl_high$d = s2_xl_high$q;
+        s2_xl_low$d = s2_xl_low$q;
+        s2_yl_high$d = s2_yl_high$q;
+        s2_yl_low$d = s2_yl_low$q;
+        acc_count$d = acc_count$q;
+        acc_over$d = acc_over$q;
+        acc_l$d = acc_l$q;
+        acc_xl$d = acc_xl$q;
+        acc_yl$d = acc_yl$q;
+        acc_max$d = acc_max$q;
+        acc_min_x$d = acc_min_x$q;
+        acc_max_x$d = acc_max_x$q;
+        acc_min_y$d = acc_min_y$q;
+        acc_max_y$d = acc_max_y$q;
+        acc_frames$d = acc_frames$q;
+        pos_x = next_x$q;
+        pos_y = next_y$q;
+        armed_now = frame_armed$q;
+        if (word_valid & frame_start) begin
+            pos_x = 32'h0;
+            pos_y = 32'h0;
+            armed_now = armed;
+            frame_armed$d = armed;
+        end
+        if (word_valid) begin
+            next_x$d = pos_x + 32'h1;
+            next_y$d = pos_y;
+            if ((pos_x + 32'h1) >= groups_per_line) begin
+                next_x$d = 32'h0;
+                next_y$d = pos_y + 32'h1;
+            end
+        end
+        luma = word[(32'h0)+:(30)];
+        s1_first$d = word_valid & frame_start & armed;
+        s1_counts$d = word_valid & armed_now & (pos_x >= x_min) & (pos_x <= x_max) & (pos_y >= y_min) & (pos_y <= y_max) & (luma >= threshold_q14);
+        s1_over$d = word[32'h1f];
+        s1_l$d = luma;
+        s1_x$d = pos_x;
+        s1_y$d = pos_y;
+        s2_first$d = s1_first$q;
+        s2_counts$d = s1_counts$q;
+        s2_over$d = s1_over$q;
+        s2_l$d = s1_l$q;
+        s2_x$d = s1_x$q;
+        s2_y$d = s1_y$q;
+        s2_xl_high$d = ((s1_x$q) & 16'hffff) * ((s1_l$q[(32'hf)+:(15)]) & 16'hffff);
+        s2_xl_low$d = ((s1_x$q) & 16'hffff) * ((s1_l$q[(32'h0)+:(15)]) & 16'hffff);
+        s2_yl_high$d = ((s1_y$q) & 16'hffff) * ((s1_l$q[(32'hf)+:(15)]) & 16'hffff);
+        s2_yl_low$d = ((s1_y$q) & 16'hffff) * ((s1_l$q[(32'h0)+:(15)]) & 16'hffff);
+        xl = (((s2_xl_high$q) & 64'hffffffffffffffff) << 32'hf) + ((s2_xl_low$q) & 64'hffffffffffffffff);
+        yl = (((s2_yl_high$q) & 64'hffffffffffffffff) << 32'hf) + ((s2_yl_low$q) & 64'hffffffffffffffff);
+        base_count = acc_count$q;
+        base_over = acc_over$q;
+        base_l = acc_l$q;
+        base_xl = acc_xl$q;
+        base_yl = acc_yl$q;
+        base_max = acc_max$q;
+        if (s2_first$q) begin
+            base_count = 32'h0;
+            base_over = 32'h0;
+            base_l = 32'h0;
+            base_xl = 32'h0;
+            base_yl = 32'h0;
+            base_max = 32'h0;
+            acc_min_x$d = 32'h0;
+            acc_max_x$d = 32'h0;
+            acc_min_y$d = 32'h0;
+            acc_max_y$d = 32'h0;
+            acc_frames$d = acc_frames$q + 32'h1;
+        end
+        acc_count$d = base_count;
+        acc_over$d = base_over;
+        acc_l$d = base_l;
+        acc_xl$d = base_xl;
+        acc_yl$d = base_yl;
+        acc_max$d = base_max;
+        if (s2_counts$q) begin
+            acc_count$d = base_count + 32'h1;
+            if (s2_over$q) begin
+                acc_over$d = base_over + 32'h1;
+            end
+            acc_l$d = base_l + ((s2_l$q) & 64'hffffffffffffffff);
+            acc_xl$d = base_xl + xl;
+            acc_yl$d = base_yl + yl;
+            if (s2_l$q > base_max) begin
+                acc_max$d = s2_l$q;
+            end
+            if (base_count == 32'h0) begin
+                acc_min_x$d = s2_x$q;
+                acc_max_x$d = s2_x$q;
+                acc_min_y$d = s2_y$q;
+                acc_max_y$d = s2_y$q;
+            end
+            else begin
+                if (s2_x$q < acc_min_x$q) begin
+                    acc_min_x$d = s2_x$q;
+                end
+                if (s2_x$q > acc_max_x$q) begin
+                    acc_max_x$d = s2_x$q;
+                end
+                if (s2_y$q < acc_min_y$q) begin
+                    acc_min_y$d = s2_y$q;
+                end
+                if (s2_y$q > acc_max_y$q) begin
+                    acc_max_y$d = s2_y$q;
+                end
+            end
+        end
+        sun_count = acc_count$q;
+        over_count = acc_over$q;
+        sum_l = acc_l$q;
+        sum_xl = acc_xl$q;
+        sum_yl = acc_yl$q;
+        max_l = acc_max$q;
+        min_x = acc_min_x$q;
+        max_x = acc_max_x$q;
+        min_y = acc_min_y$q;
+        max_y = acc_max_y$q;
+        armed_frames = acc_frames$q;
+    end
+    
+endmodule // skylux_core$capture$sun
+
+
+module skylux_core$capture$sun$acc_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$acc_count
+
+
+module skylux_core$capture$sun$acc_frames(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$acc_frames
+
+
+module skylux_core$capture$sun$acc_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$acc_l
+
+
+module skylux_core$capture$sun$acc_max(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 30'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$acc_max
+
+
+module skylux_core$capture$sun$acc_max_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$acc_max_x
+
+
+module skylux_core$capture$sun$acc_max_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$acc_max_y
+
+
+module skylux_core$capture$sun$acc_min_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$acc_min_x
+
+
+module skylux_core$capture$sun$acc_min_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$acc_min_y
+
+
+module skylux_core$capture$sun$acc_over(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$acc_over
+
+
+module skylux_core$capture$sun$acc_xl(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$acc_xl
+
+
+module skylux_core$capture$sun$acc_yl(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$acc_yl
+
+
+module skylux_core$capture$sun$frame_armed(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$frame_armed
+
+
+module skylux_core$capture$sun$next_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$next_x
+
+
+module skylux_core$capture$sun$next_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$next_y
+
+
+module skylux_core$capture$sun$s1_counts(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s1_counts
+
+
+module skylux_core$capture$sun$s1_first(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s1_first
+
+
+module skylux_core$capture$sun$s1_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 30'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s1_l
+
+
+module skylux_core$capture$sun$s1_over(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s1_over
+
+
+module skylux_core$capture$sun$s1_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s1_x
+
+
+module skylux_core$capture$sun$s1_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s1_y
+
+
+module skylux_core$capture$sun$s2_counts(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s2_counts
+
+
+module skylux_core$capture$sun$s2_first(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s2_first
+
+
+module skylux_core$capture$sun$s2_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [29:0] d;
+    output reg  [29:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 30'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s2_l
+
+
+module skylux_core$capture$sun$s2_over(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s2_over
+
+
+module skylux_core$capture$sun$s2_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s2_x
+
+
+module skylux_core$capture$sun$s2_xl_high(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s2_xl_high
+
+
+module skylux_core$capture$sun$s2_xl_low(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s2_xl_low
+
+
+module skylux_core$capture$sun$s2_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s2_y
+
+
+module skylux_core$capture$sun$s2_yl_high(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s2_yl_high
+
+
+module skylux_core$capture$sun$s2_yl_low(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$sun$s2_yl_low
 
 
 module skylux_core$capture$writer(clock,restart,window_base,window_size,slot_stride,slots,bus_timeout,beat_push,beat_data,frame_open,frame_ended,desc_frame_number,desc_timestamp,desc_info,desc_geometry,desc_words,desc_checksum,writer_idle,frame_closed,beat_room,dma_status_busy,dma_status_slot,dma_status_frame_done_set,dma_status_out_of_window_set,dma_status_bus_timeout_set,dma_frames_written_count,avm_address,avm_burstcount,avm_write,avm_writedata,avm_byteenable,avm_waitrequest);
@@ -11240,7 +12479,7 @@ module skylux_core$raybox$written(d,q,clock);
 endmodule // skylux_core$raybox$written
 
 
-module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_byteenable,avs_readdata,irq,sys_scratch_value,sys_bus_status_unmapped_read,sys_bus_status_unmapped_write,sys_time_lo_cycles,sys_time_hi_cycles,sys_irq_status_frame_done,sys_irq_status_frame_done_set,sys_irq_status_sequence_done,sys_irq_status_sequence_done_set,sys_irq_status_dma_error,sys_irq_status_dma_error_set,sys_irq_status_capture_error,sys_irq_status_capture_error_set,sys_irq_status_i2c_done,sys_irq_status_i2c_done_set,sys_irq_status_raybox_done,sys_irq_status_raybox_done_set,sys_irq_enable_frame_done,sys_irq_enable_sequence_done,sys_irq_enable_dma_error,sys_irq_enable_capture_error,sys_irq_enable_i2c_done,sys_irq_enable_raybox_done,i2c_ctrl_start,i2c_ctrl_read,i2c_target_addr7,i2c_reg_addr_addr,i2c_write_data_data,i2c_read_data_data,i2c_status_busy,i2c_status_done,i2c_status_done_set,i2c_status_nack,i2c_status_nack_set,i2c_status_timeout,i2c_status_timeout_set,i2c_status_bus_stuck,i2c_status_bus_stuck_set,i2c_status_refused,i2c_status_refused_set,i2c_clock_div_half_period,i2c_timeout_cycles,i2c_sensor_pins_reset_n,i2c_sensor_pins_strobe,seq_ctrl_start,seq_ctrl_abort,seq_ctrl_ext_trigger,seq_count_exposures,seq_status_busy,seq_status_index,seq_status_shield_open,seq_status_done,seq_status_done_set,seq_status_shield_limit_hit,seq_status_shield_limit_hit_set,seq_status_i2c_error,seq_status_i2c_error_set,seq_status_refused,seq_status_refused_set,seq_status_aborted,seq_status_aborted_set,seq_shield_limit_cycles,seq_shield_steps_steps,seq_shield_step_period_cycles,seq_frame_number_value,seq_trigger_pulse_cycles,seq_exp_shutter_width_rows$0,seq_exp_shutter_width_rows$1,seq_exp_shutter_width_rows$2,seq_exp_shutter_width_rows$3,seq_exp_shutter_width_rows$4,seq_exp_shutter_width_rows$5,seq_exp_shutter_width_rows$6,seq_exp_shutter_width_rows$7,seq_exp_shutter_delay_value$0,seq_exp_shutter_delay_value$1,seq_exp_shutter_delay_value$2,seq_exp_shutter_delay_value$3,seq_exp_shutter_delay_value$4,seq_exp_shutter_delay_value$5,seq_exp_shutter_delay_value$6,seq_exp_shutter_delay_value$7,seq_exp_gain_code$0,seq_exp_gain_code$1,seq_exp_gain_code$2,seq_exp_gain_code$3,seq_exp_gain_code$4,seq_exp_gain_code$5,seq_exp_gain_code$6,seq_exp_gain_code$7,capture_ctrl_enable,capture_ctrl_raw,capture_window_width,capture_window_height,capture_status_frame_valid,capture_status_line_short,capture_status_line_short_set,capture_status_line_long,capture_status_line_long_set,capture_status_frame_short,capture_status_frame_short_set,capture_status_frame_long,capture_status_frame_long_set,capture_status_fifo_overflow,capture_status_fifo_overflow_set,capture_status_pixclk_stopped,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,bayer_mode_phase,bayer_black_level,bayer_valid_min,bayer_valid_max,bayer_weight_r_q2_14,bayer_weight_g_q2_14,bayer_weight_b_q2_14,dma_ctrl_enable,dma_ctrl_reset,dma_window_base_addr,dma_window_size_bytes,dma_slot_stride_bytes,dma_slots_count,dma_status_busy,dma_status_slot,dma_status_frame_done,dma_status_frame_done_set,dma_status_out_of_window,dma_status_out_of_window_set,dma_status_overflow,dma_status_overflow_set,dma_status_bus_timeout,dma_status_bus_timeout_set,dma_frames_written_count,dma_bus_timeout_cycles,raybox_ctrl_start,raybox_ctrl_abort,raybox_work_base_addr,raybox_work_count_items,raybox_result_base_addr,raybox_window_base_addr,raybox_window_size_bytes,raybox_status_busy,raybox_status_done,raybox_status_done_set,raybox_status_bad_descriptor,raybox_status_bad_descriptor_set,raybox_status_out_of_window,raybox_status_out_of_window_set,raybox_status_bus_timeout,raybox_status_bus_timeout_set,raybox_tests_done_count,raybox_info_lanes,raybox_bus_timeout_cycles);
+module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_byteenable,avs_readdata,irq,sys_scratch_value,sys_bus_status_unmapped_read,sys_bus_status_unmapped_write,sys_time_lo_cycles,sys_time_hi_cycles,sys_irq_status_frame_done,sys_irq_status_frame_done_set,sys_irq_status_sequence_done,sys_irq_status_sequence_done_set,sys_irq_status_dma_error,sys_irq_status_dma_error_set,sys_irq_status_capture_error,sys_irq_status_capture_error_set,sys_irq_status_i2c_done,sys_irq_status_i2c_done_set,sys_irq_status_raybox_done,sys_irq_status_raybox_done_set,sys_irq_enable_frame_done,sys_irq_enable_sequence_done,sys_irq_enable_dma_error,sys_irq_enable_capture_error,sys_irq_enable_i2c_done,sys_irq_enable_raybox_done,i2c_ctrl_start,i2c_ctrl_read,i2c_target_addr7,i2c_reg_addr_addr,i2c_write_data_data,i2c_read_data_data,i2c_status_busy,i2c_status_done,i2c_status_done_set,i2c_status_nack,i2c_status_nack_set,i2c_status_timeout,i2c_status_timeout_set,i2c_status_bus_stuck,i2c_status_bus_stuck_set,i2c_status_refused,i2c_status_refused_set,i2c_clock_div_half_period,i2c_timeout_cycles,i2c_sensor_pins_reset_n,i2c_sensor_pins_strobe,seq_ctrl_start,seq_ctrl_abort,seq_ctrl_ext_trigger,seq_count_exposures,seq_status_busy,seq_status_index,seq_status_shield_open,seq_status_done,seq_status_done_set,seq_status_shield_limit_hit,seq_status_shield_limit_hit_set,seq_status_i2c_error,seq_status_i2c_error_set,seq_status_refused,seq_status_refused_set,seq_status_aborted,seq_status_aborted_set,seq_shield_limit_cycles,seq_shield_steps_steps,seq_shield_step_period_cycles,seq_frame_number_value,seq_trigger_pulse_cycles,seq_exp_shutter_width_rows$0,seq_exp_shutter_width_rows$1,seq_exp_shutter_width_rows$2,seq_exp_shutter_width_rows$3,seq_exp_shutter_width_rows$4,seq_exp_shutter_width_rows$5,seq_exp_shutter_width_rows$6,seq_exp_shutter_width_rows$7,seq_exp_shutter_delay_value$0,seq_exp_shutter_delay_value$1,seq_exp_shutter_delay_value$2,seq_exp_shutter_delay_value$3,seq_exp_shutter_delay_value$4,seq_exp_shutter_delay_value$5,seq_exp_shutter_delay_value$6,seq_exp_shutter_delay_value$7,seq_exp_gain_code$0,seq_exp_gain_code$1,seq_exp_gain_code$2,seq_exp_gain_code$3,seq_exp_gain_code$4,seq_exp_gain_code$5,seq_exp_gain_code$6,seq_exp_gain_code$7,capture_ctrl_enable,capture_ctrl_raw,capture_window_width,capture_window_height,capture_status_frame_valid,capture_status_line_short,capture_status_line_short_set,capture_status_line_long,capture_status_line_long_set,capture_status_frame_short,capture_status_frame_short_set,capture_status_frame_long,capture_status_frame_long_set,capture_status_fifo_overflow,capture_status_fifo_overflow_set,capture_status_pixclk_stopped,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,bayer_mode_phase,bayer_black_level,bayer_valid_min,bayer_valid_max,bayer_weight_r_q2_14,bayer_weight_g_q2_14,bayer_weight_b_q2_14,dma_ctrl_enable,dma_ctrl_reset,dma_window_base_addr,dma_window_size_bytes,dma_slot_stride_bytes,dma_slots_count,dma_status_busy,dma_status_slot,dma_status_frame_done,dma_status_frame_done_set,dma_status_out_of_window,dma_status_out_of_window_set,dma_status_overflow,dma_status_overflow_set,dma_status_bus_timeout,dma_status_bus_timeout_set,dma_frames_written_count,dma_bus_timeout_cycles,raybox_ctrl_start,raybox_ctrl_abort,raybox_work_base_addr,raybox_work_count_items,raybox_result_base_addr,raybox_window_base_addr,raybox_window_size_bytes,raybox_status_busy,raybox_status_done,raybox_status_done_set,raybox_status_bad_descriptor,raybox_status_bad_descriptor_set,raybox_status_out_of_window,raybox_status_out_of_window_set,raybox_status_bus_timeout,raybox_status_bus_timeout_set,raybox_tests_done_count,raybox_info_lanes,raybox_bus_timeout_cycles,sun_ctrl_enable,sun_ctrl_exposure_index,sun_threshold_q14,sun_window_x_min,sun_window_x_max,sun_window_y_min,sun_window_y_max,sun_count_groups,sun_over_count_groups,sun_sum_l_lo_value,sun_sum_l_hi_value,sun_sum_xl_lo_value,sun_sum_xl_hi_value,sun_sum_yl_lo_value,sun_sum_yl_hi_value,sun_max_l_q14,sun_box_x_min,sun_box_x_max,sun_box_y_min,sun_box_y_max,sun_frames_count);
     
     // Module arguments
     input wire  clock;
@@ -11406,6 +12645,27 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
     input wire  [31:0] raybox_tests_done_count;
     input wire  [7:0] raybox_info_lanes;
     output reg  [23:0] raybox_bus_timeout_cycles;
+    output reg  sun_ctrl_enable;
+    output reg  [2:0] sun_ctrl_exposure_index;
+    output reg  [29:0] sun_threshold_q14;
+    output reg  [10:0] sun_window_x_min;
+    output reg  [10:0] sun_window_x_max;
+    output reg  [10:0] sun_window_y_min;
+    output reg  [10:0] sun_window_y_max;
+    input wire  [20:0] sun_count_groups;
+    input wire  [20:0] sun_over_count_groups;
+    input wire  [31:0] sun_sum_l_lo_value;
+    input wire  [31:0] sun_sum_l_hi_value;
+    input wire  [31:0] sun_sum_xl_lo_value;
+    input wire  [31:0] sun_sum_xl_hi_value;
+    input wire  [31:0] sun_sum_yl_lo_value;
+    input wire  [31:0] sun_sum_yl_hi_value;
+    input wire  [29:0] sun_max_l_q14;
+    input wire  [10:0] sun_box_x_min;
+    input wire  [10:0] sun_box_x_max;
+    input wire  [10:0] sun_box_y_min;
+    input wire  [10:0] sun_box_y_max;
+    input wire  [15:0] sun_frames_count;
     
     // Stub signals
     reg  [31:0] rdata$d;
@@ -11624,6 +12884,18 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
     reg  [31:0] r_raybox_bus_timeout$d;
     wire  [31:0] r_raybox_bus_timeout$q;
     reg  r_raybox_bus_timeout$clock;
+    reg  [31:0] r_sun_ctrl$d;
+    wire  [31:0] r_sun_ctrl$q;
+    reg  r_sun_ctrl$clock;
+    reg  [31:0] r_sun_threshold$d;
+    wire  [31:0] r_sun_threshold$q;
+    reg  r_sun_threshold$clock;
+    reg  [31:0] r_sun_window_x$d;
+    wire  [31:0] r_sun_window_x$q;
+    reg  r_sun_window_x$clock;
+    reg  [31:0] r_sun_window_y$d;
+    wire  [31:0] r_sun_window_y$q;
+    reg  r_sun_window_y$clock;
     
     // Local signals
     reg  [31:0] byte_mask;
@@ -11695,6 +12967,10 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
     reg  [31:0] nx_raybox_window_size;
     reg  [31:0] nx_raybox_status;
     reg  [31:0] nx_raybox_bus_timeout;
+    reg  [31:0] nx_sun_ctrl;
+    reg  [31:0] nx_sun_threshold;
+    reg  [31:0] nx_sun_window_x;
+    reg  [31:0] nx_sun_window_y;
     
     // Sub module instances
     skylux_core$regs$rdata rdata(
@@ -12057,6 +13333,26 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         .q(r_raybox_bus_timeout$q),
         .clock(r_raybox_bus_timeout$clock)
     );
+    skylux_core$regs$r_sun_ctrl r_sun_ctrl(
+        .d(r_sun_ctrl$d),
+        .q(r_sun_ctrl$q),
+        .clock(r_sun_ctrl$clock)
+    );
+    skylux_core$regs$r_sun_threshold r_sun_threshold(
+        .d(r_sun_threshold$d),
+        .q(r_sun_threshold$q),
+        .clock(r_sun_threshold$clock)
+    );
+    skylux_core$regs$r_sun_window_x r_sun_window_x(
+        .d(r_sun_window_x$d),
+        .q(r_sun_window_x$q),
+        .clock(r_sun_window_x$clock)
+    );
+    skylux_core$regs$r_sun_window_y r_sun_window_y(
+        .d(r_sun_window_y$d),
+        .q(r_sun_window_y$q),
+        .clock(r_sun_window_y$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -12132,6 +13428,10 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         r_raybox_window_size$clock = clock;
         r_raybox_status$clock = clock;
         r_raybox_bus_timeout$clock = clock;
+        r_sun_ctrl$clock = clock;
+        r_sun_threshold$clock = clock;
+        r_sun_window_x$clock = clock;
+        r_sun_window_y$clock = clock;
         rdata$d = rdata$q;
         error_word$d = error_word$q;
         r_sys_scratch$d = r_sys_scratch$q;
@@ -12204,6 +13504,10 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         r_raybox_window_size$d = r_raybox_window_size$q;
         r_raybox_status$d = r_raybox_status$q;
         r_raybox_bus_timeout$d = r_raybox_bus_timeout$q;
+        r_sun_ctrl$d = r_sun_ctrl$q;
+        r_sun_threshold$d = r_sun_threshold$q;
+        r_sun_window_x$d = r_sun_window_x$q;
+        r_sun_window_y$d = r_sun_window_y$q;
         byte_mask = 32'h0;
         if (avs_byteenable[0]) begin
             byte_mask = byte_mask | (((64'hff) & 32'hffffffff) << (32'h8 * 0));
@@ -12289,6 +13593,10 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         nx_raybox_window_size = r_raybox_window_size$q;
         nx_raybox_status = r_raybox_status$q;
         nx_raybox_bus_timeout = r_raybox_bus_timeout$q;
+        nx_sun_ctrl = r_sun_ctrl$q;
+        nx_sun_threshold = r_sun_threshold$q;
+        nx_sun_window_x = r_sun_window_x$q;
+        nx_sun_window_y = r_sun_window_y$q;
         if (avs_write) begin
             case (avs_address)
                 0:
@@ -12604,6 +13912,58 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
                     begin
                         nx_raybox_bus_timeout = ((r_raybox_bus_timeout$q & (~(byte_mask & 64'hffffff))) | (avs_writedata & (byte_mask & 64'hffffff))) & (~(avs_writedata & (byte_mask & 64'h0)));
                     end
+                7168:
+                    begin
+                        nx_sun_ctrl = ((r_sun_ctrl$q & (~(byte_mask & 64'h71))) | (avs_writedata & (byte_mask & 64'h71))) & (~(avs_writedata & (byte_mask & 64'h0)));
+                    end
+                7169:
+                    begin
+                        nx_sun_threshold = ((r_sun_threshold$q & (~(byte_mask & 64'h3fffffff))) | (avs_writedata & (byte_mask & 64'h3fffffff))) & (~(avs_writedata & (byte_mask & 64'h0)));
+                    end
+                7170:
+                    begin
+                        nx_sun_window_x = ((r_sun_window_x$q & (~(byte_mask & 64'h7ff07ff))) | (avs_writedata & (byte_mask & 64'h7ff07ff))) & (~(avs_writedata & (byte_mask & 64'h0)));
+                    end
+                7171:
+                    begin
+                        nx_sun_window_y = ((r_sun_window_y$q & (~(byte_mask & 64'h7ff07ff))) | (avs_writedata & (byte_mask & 64'h7ff07ff))) & (~(avs_writedata & (byte_mask & 64'h0)));
+                    end
+                7172:
+                    begin
+                    end
+                7173:
+                    begin
+                    end
+                7174:
+                    begin
+                    end
+                7175:
+                    begin
+                    end
+                7176:
+                    begin
+                    end
+                7177:
+                    begin
+                    end
+                7178:
+                    begin
+                    end
+                7179:
+                    begin
+                    end
+                7180:
+                    begin
+                    end
+                7181:
+                    begin
+                    end
+                7182:
+                    begin
+                    end
+                7183:
+                    begin
+                    end
                 default:
                     begin
                         unmapped_write = 1'b1;
@@ -12619,7 +13979,7 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
                     end
                 1:
                     begin
-                        rdata$d = ((64'h2) & 32'hffffffff);
+                        rdata$d = ((64'h3) & 32'hffffffff);
                     end
                 2:
                     begin
@@ -12937,6 +14297,70 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
                     begin
                         rdata$d = (r_raybox_bus_timeout$q & 64'hffffff);
                     end
+                7168:
+                    begin
+                        rdata$d = (r_sun_ctrl$q & 64'h71);
+                    end
+                7169:
+                    begin
+                        rdata$d = (r_sun_threshold$q & 64'h3fffffff);
+                    end
+                7170:
+                    begin
+                        rdata$d = (r_sun_window_x$q & 64'h7ff07ff);
+                    end
+                7171:
+                    begin
+                        rdata$d = (r_sun_window_y$q & 64'h7ff07ff);
+                    end
+                7172:
+                    begin
+                        rdata$d = (((sun_count_groups) & 32'hffffffff));
+                    end
+                7173:
+                    begin
+                        rdata$d = (((sun_over_count_groups) & 32'hffffffff));
+                    end
+                7174:
+                    begin
+                        rdata$d = (sun_sum_l_lo_value);
+                    end
+                7175:
+                    begin
+                        rdata$d = (sun_sum_l_hi_value);
+                    end
+                7176:
+                    begin
+                        rdata$d = (sun_sum_xl_lo_value);
+                    end
+                7177:
+                    begin
+                        rdata$d = (sun_sum_xl_hi_value);
+                    end
+                7178:
+                    begin
+                        rdata$d = (sun_sum_yl_lo_value);
+                    end
+                7179:
+                    begin
+                        rdata$d = (sun_sum_yl_hi_value);
+                    end
+                7180:
+                    begin
+                        rdata$d = (((sun_max_l_q14) & 32'hffffffff));
+                    end
+                7181:
+                    begin
+                        rdata$d = (((sun_box_x_min) & 32'hffffffff)) | (((sun_box_x_max) & 32'hffffffff) << 32'h10);
+                    end
+                7182:
+                    begin
+                        rdata$d = (((sun_box_y_min) & 32'hffffffff)) | (((sun_box_y_max) & 32'hffffffff) << 32'h10);
+                    end
+                7183:
+                    begin
+                        rdata$d = (((sun_frames_count) & 32'hffffffff));
+                    end
                 default:
                     begin
                         rdata$d = ((64'hdeadbeef) & 32'hffffffff);
@@ -13116,6 +14540,17 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         raybox_status_bus_timeout = r_raybox_status$q[32'h13];
         r_raybox_bus_timeout$d = nx_raybox_bus_timeout;
         raybox_bus_timeout_cycles = r_raybox_bus_timeout$q[(32'h0)+:(24)];
+        r_sun_ctrl$d = nx_sun_ctrl;
+        sun_ctrl_enable = r_sun_ctrl$q[32'h0];
+        sun_ctrl_exposure_index = r_sun_ctrl$q[(32'h4)+:(3)];
+        r_sun_threshold$d = nx_sun_threshold;
+        sun_threshold_q14 = r_sun_threshold$q[(32'h0)+:(30)];
+        r_sun_window_x$d = nx_sun_window_x;
+        sun_window_x_min = r_sun_window_x$q[(32'h0)+:(11)];
+        sun_window_x_max = r_sun_window_x$q[(32'h10)+:(11)];
+        r_sun_window_y$d = nx_sun_window_y;
+        sun_window_y_min = r_sun_window_y$q[(32'h0)+:(11)];
+        sun_window_y_max = r_sun_window_y$q[(32'h10)+:(11)];
         avs_readdata = rdata$q;
         irq = |(r_sys_irq_status$q & r_sys_irq_enable$q);
     end
@@ -16378,6 +17813,210 @@ module skylux_core$regs$r_seq_trigger_pulse$dff(d,q,clock);
     end
           
 endmodule // skylux_core$regs$r_seq_trigger_pulse$dff
+
+
+module skylux_core$regs$r_sun_ctrl(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Constant declarations
+    localparam  init = 32'h0;
+    
+    // Stub signals
+    reg  [31:0] dff$d;
+    wire  [31:0] dff$q;
+    reg  dff$clock;
+    
+    // Sub module instances
+    skylux_core$regs$r_sun_ctrl$dff dff(
+        .d(dff$d),
+        .q(dff$q),
+        .clock(dff$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff$clock = clock;
+        q = dff$q ^ init;
+        dff$d = d ^ init;
+    end
+    
+endmodule // skylux_core$regs$r_sun_ctrl
+
+
+module skylux_core$regs$r_sun_ctrl$dff(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$regs$r_sun_ctrl$dff
+
+
+module skylux_core$regs$r_sun_threshold(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Constant declarations
+    localparam  init = 32'h3fffffff;
+    
+    // Stub signals
+    reg  [31:0] dff$d;
+    wire  [31:0] dff$q;
+    reg  dff$clock;
+    
+    // Sub module instances
+    skylux_core$regs$r_sun_threshold$dff dff(
+        .d(dff$d),
+        .q(dff$q),
+        .clock(dff$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff$clock = clock;
+        q = dff$q ^ init;
+        dff$d = d ^ init;
+    end
+    
+endmodule // skylux_core$regs$r_sun_threshold
+
+
+module skylux_core$regs$r_sun_threshold$dff(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$regs$r_sun_threshold$dff
+
+
+module skylux_core$regs$r_sun_window_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Constant declarations
+    localparam  init = 32'h7ff0000;
+    
+    // Stub signals
+    reg  [31:0] dff$d;
+    wire  [31:0] dff$q;
+    reg  dff$clock;
+    
+    // Sub module instances
+    skylux_core$regs$r_sun_window_x$dff dff(
+        .d(dff$d),
+        .q(dff$q),
+        .clock(dff$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff$clock = clock;
+        q = dff$q ^ init;
+        dff$d = d ^ init;
+    end
+    
+endmodule // skylux_core$regs$r_sun_window_x
+
+
+module skylux_core$regs$r_sun_window_x$dff(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$regs$r_sun_window_x$dff
+
+
+module skylux_core$regs$r_sun_window_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Constant declarations
+    localparam  init = 32'h7ff0000;
+    
+    // Stub signals
+    reg  [31:0] dff$d;
+    wire  [31:0] dff$q;
+    reg  dff$clock;
+    
+    // Sub module instances
+    skylux_core$regs$r_sun_window_y$dff dff(
+        .d(dff$d),
+        .q(dff$q),
+        .clock(dff$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff$clock = clock;
+        q = dff$q ^ init;
+        dff$d = d ^ init;
+    end
+    
+endmodule // skylux_core$regs$r_sun_window_y
+
+
+module skylux_core$regs$r_sun_window_y$dff(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$regs$r_sun_window_y$dff
 
 
 module skylux_core$regs$r_sys_bus_status(d,q,clock);

@@ -4,6 +4,7 @@ use super::fifo_entry as entry;
 use super::pixel_capture::PixelCapture;
 use crate::bayer::BayerGrouper;
 use crate::dma::{BurstWriter, FrameIngest};
+use crate::sun::SunAccumulators;
 use rust_hdl::prelude::*;
 
 /// The clock-domain FIFO: rust-hdl's asynchronous FIFO (first-word-fall-through; its pointers
@@ -11,7 +12,8 @@ use rust_hdl::prelude::*;
 pub type CaptureFifo =
     AsynchronousFIFO<Bits<{ entry::BITS }>, { entry::FIFO_ADDRESS_BITS }, { entry::FILL_BITS }, 1>;
 
-/// Capture, Bayer grouper, clock-domain FIFO and frame DMA.
+/// Capture, Bayer grouper, clock-domain FIFO and frame DMA, and the sun accumulators on the
+/// words the DMA takes (`sun.*`).
 ///
 /// Ports are named after the register fields they connect to (`capture_ctrl_enable` is
 /// `capture.ctrl.ENABLE`, `dma_status_frame_done_set` pulses `dma.status.FRAME_DONE`), so the
@@ -49,6 +51,13 @@ pub struct CapturePath {
     pub dma_slot_stride_bytes: Signal<In, Bits<32>>,
     pub dma_slots_count: Signal<In, Bits<8>>,
     pub dma_bus_timeout_cycles: Signal<In, Bits<24>>,
+    pub sun_ctrl_enable: Signal<In, Bit>,
+    pub sun_ctrl_exposure_index: Signal<In, Bits<3>>,
+    pub sun_threshold_q14: Signal<In, Bits<30>>,
+    pub sun_window_x_min: Signal<In, Bits<11>>,
+    pub sun_window_x_max: Signal<In, Bits<11>>,
+    pub sun_window_y_min: Signal<In, Bits<11>>,
+    pub sun_window_y_max: Signal<In, Bits<11>>,
     // Frame tags from the exposure sequencer.
     pub tag_exposure_index: Signal<In, Bits<3>>,
     pub tag_frame_number: Signal<In, Bits<32>>,
@@ -72,6 +81,20 @@ pub struct CapturePath {
     pub dma_status_overflow_set: Signal<Out, Bit>,
     pub dma_status_bus_timeout_set: Signal<Out, Bit>,
     pub dma_frames_written_count: Signal<Out, Bits<32>>,
+    pub sun_count_groups: Signal<Out, Bits<21>>,
+    pub sun_over_count_groups: Signal<Out, Bits<21>>,
+    pub sun_sum_l_lo_value: Signal<Out, Bits<32>>,
+    pub sun_sum_l_hi_value: Signal<Out, Bits<32>>,
+    pub sun_sum_xl_lo_value: Signal<Out, Bits<32>>,
+    pub sun_sum_xl_hi_value: Signal<Out, Bits<32>>,
+    pub sun_sum_yl_lo_value: Signal<Out, Bits<32>>,
+    pub sun_sum_yl_hi_value: Signal<Out, Bits<32>>,
+    pub sun_max_l_q14: Signal<Out, Bits<30>>,
+    pub sun_box_x_min: Signal<Out, Bits<11>>,
+    pub sun_box_x_max: Signal<Out, Bits<11>>,
+    pub sun_box_y_min: Signal<Out, Bits<11>>,
+    pub sun_box_y_max: Signal<Out, Bits<11>>,
+    pub sun_frames_count: Signal<Out, Bits<16>>,
     pub irq_frame_done: Signal<Out, Bit>,
     pub irq_dma_error: Signal<Out, Bit>,
     pub irq_capture_error: Signal<Out, Bit>,
@@ -88,6 +111,7 @@ pub struct CapturePath {
     fifo: CaptureFifo,
     ingest: FrameIngest,
     writer: BurstWriter,
+    sun: SunAccumulators,
 }
 
 impl Logic for CapturePath {
@@ -188,6 +212,35 @@ impl Logic for CapturePath {
             | self.ingest.capture_status_frame_long_set.val()
             | self.ingest.capture_status_fifo_overflow_set.val()
             | self.ingest.capture_status_pixclk_stopped_set.val();
+        // ---- the sun accumulators, on the words of the frames the DMA takes -------------
+        self.sun.clock.next = self.clock.val();
+        self.sun.word_valid.next = self.ingest.taken_valid.val();
+        self.sun.word.next = self.ingest.taken_word.val();
+        self.sun.frame_start.next = self.ingest.taken_first.val();
+        self.sun.armed.next = self.sun_ctrl_enable.val()
+            & !self.capture_ctrl_raw.val()
+            & (self.ingest.taken_exposure_index.val() == self.sun_ctrl_exposure_index.val());
+        self.sun.groups_per_line.next = self.capture_window_width.val().get_bits::<11>(1);
+        self.sun.threshold_q14.next = self.sun_threshold_q14.val();
+        self.sun.x_min.next = self.sun_window_x_min.val();
+        self.sun.x_max.next = self.sun_window_x_max.val();
+        self.sun.y_min.next = self.sun_window_y_min.val();
+        self.sun.y_max.next = self.sun_window_y_max.val();
+        self.sun_count_groups.next = self.sun.sun_count.val();
+        self.sun_over_count_groups.next = self.sun.over_count.val();
+        self.sun_sum_l_lo_value.next = self.sun.sum_l.val().get_bits::<32>(0);
+        self.sun_sum_l_hi_value.next = self.sun.sum_l.val().get_bits::<32>(32);
+        self.sun_sum_xl_lo_value.next = self.sun.sum_xl.val().get_bits::<32>(0);
+        self.sun_sum_xl_hi_value.next = self.sun.sum_xl.val().get_bits::<32>(32);
+        self.sun_sum_yl_lo_value.next = self.sun.sum_yl.val().get_bits::<32>(0);
+        self.sun_sum_yl_hi_value.next = self.sun.sum_yl.val().get_bits::<32>(32);
+        self.sun_max_l_q14.next = self.sun.max_l.val();
+        self.sun_box_x_min.next = self.sun.min_x.val();
+        self.sun_box_x_max.next = self.sun.max_x.val();
+        self.sun_box_y_min.next = self.sun.min_y.val();
+        self.sun_box_y_max.next = self.sun.max_y.val();
+        self.sun_frames_count.next = self.sun.armed_frames.val();
+
         self.avm_address.next = self.writer.avm_address.val();
         self.avm_burstcount.next = self.writer.avm_burstcount.val();
         self.avm_write.next = self.writer.avm_write.val();

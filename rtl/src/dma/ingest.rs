@@ -86,6 +86,12 @@ pub struct FrameIngest {
     pub capture_frames_count: Signal<Out, Bits<32>>,
     /// `dma.status.OVERFLOW`: a frame the engine took lost words in the FIFO.
     pub dma_status_overflow_set: Signal<Out, Bit>,
+    /// A payload word taken into the open frame this cycle (for the sun accumulators), and
+    /// whether it is the frame's first; the frame's exposure index.
+    pub taken_valid: Signal<Out, Bit>,
+    pub taken_word: Signal<Out, Bits<32>>,
+    pub taken_first: Signal<Out, Bit>,
+    pub taken_exposure_index: Signal<Out, Bits<3>>,
 
     state: DFF<IngestState>,
     fv_meta: DFF<Bit>,
@@ -245,6 +251,10 @@ impl Logic for FrameIngest {
         // The 64-bit beats are assembled only when pushed (wide values are slow to simulate).
         self.beat_push.next = false;
         self.beat_data.next = 0.into();
+        self.taken_valid.next = false;
+        self.taken_word.next = self.payload.val();
+        self.taken_first.next = self.words.q.val() == 0;
+        self.taken_exposure_index.next = self.info.q.val().get_bits::<3>(0);
         self.frame_open.next = false;
         self.close_now.next = false;
 
@@ -273,6 +283,7 @@ impl Logic for FrameIngest {
                 if self.is_data.val() {
                     if self.beat_room.val() {
                         self.fifo_read.next = true;
+                        self.taken_valid.next = true;
                         self.words.d.next = self.words.q.val() + 1;
                         self.checksum.d.next = self.checksum.q.val() + self.payload.val();
                         if self.half_valid.q.val() {

@@ -3,7 +3,7 @@
 
 use skylux_regmap::words::grouped;
 
-pub use skylux_regmap::sun::{SunConfig, SunSums};
+pub use skylux_regmap::sun_values::{SunConfig, SunSums};
 
 /// Adds a counted group to the sums.
 fn add(sums: &mut SunSums, x: u16, y: u16, word: u32) {

@@ -14,7 +14,7 @@ use crate::camera::{CameraModel, ImagePoint};
 use crate::campaign::Readout;
 use crate::hdr::{GroupGeometry, LuminanceMap};
 use glam::DVec3;
-use skylux_regmap::sun::{SunConfig, SunSums};
+use skylux_regmap::sun_values::{SunConfig, SunSums};
 use skylux_regmap::words::grouped;
 
 /// Units of the grouped word's luminance field per DN (`words::grouped::LUMA_FRAC_BITS`).
