@@ -71,7 +71,7 @@ fn register_file_verilog_equals_rust_hdl() {
         .map(|(o, _)| o)
         .chain([0x0FF0, 0x8000, 0x1F_FFFC])
         .collect();
-    for _ in 0..400 {
+    for _ in 0..500 {
         let offset = offsets[rng.gen_range(0..offsets.len())];
         host.driver.dut.dma_status_overflow_set.next = rng.gen_bool(0.1);
         host.driver.dut.sys_time_lo_cycles.next = (rng.gen::<u32>() as u64).into();
@@ -85,7 +85,11 @@ fn register_file_verilog_equals_rust_hdl() {
     let trace = host.driver.take_trace();
     let verilog = fresh_verilog::<RegisterFile>();
     let report = xcheck::replay("register_file", &verilog, &trace).unwrap();
-    assert!(report.steps > 2000);
+    assert!(
+        report.steps > 2000,
+        "trace too short: {} steps",
+        report.steps
+    );
     assert!(report.is_clean(), "{}", report.summary());
 
     // The same trace against a subtly wrong Verilog (the unmapped read value off by one bit)

@@ -294,24 +294,17 @@ fn a_driver_on_a_hung_unit_reports_it_and_the_engine_survives() {
     assert!(why.contains("BUS_TIMEOUT"), "{why}");
 }
 
+/// The figure, in CI: no false miss over 1e7 random pairs (also in `skylux bench
+/// raybox --json`); about 15 s of one core.
 #[test]
-fn no_false_misses_over_random_pairs() {
-    let r = pairs::check(200_000, 11);
+fn no_false_misses_over_ten_million_pairs() {
+    let r = pairs::check(10_000_000, 12);
     println!("{r:?}");
     assert_eq!(r.false_misses, 0, "{r:?}");
     assert_eq!(r.late_entries, 0, "{r:?}");
     // The hard cases were drawn, and most pairs went to the unit.
     assert!(r.reference_hits > r.pairs / 10 && r.parallel > 1000 && r.zero_size > 1000);
     assert!(r.fallbacks < r.pairs / 100, "{r:?}");
-}
-
-/// The figure: at least 1e7 pairs (also in `skylux bench raybox --json`).
-#[test]
-#[ignore = "1e7 pairs, about 10 s; run with --ignored"]
-fn no_false_misses_over_ten_million_pairs() {
-    let r = pairs::check(10_000_000, 12);
-    println!("{r:?}");
-    assert_eq!((r.false_misses, r.late_entries), (0, 0), "{r:?}");
 }
 
 const ROOM: &str = concat!(

@@ -42,6 +42,10 @@ pub struct ViewGlare {
     pub dgp: Option<f64>,
     /// Simplified DGP from `ev_lux` alone (Wienold 2009).
     pub dgps: f64,
+    /// `ev_lux` is below DGP's low-light limit (1000 lx; at night, at dusk, in a dark
+    /// corner): `dgp` and `dgps` are then the formulas' floor, not a glare probability.
+    #[serde(default)]
+    pub low_light: bool,
     /// Glare sources found in the picture.
     #[serde(default)]
     pub sources: Option<usize>,
@@ -196,6 +200,7 @@ fn fallback(view: &ViewConfig, sensor_lux: f64, sensor_se: f64, reason: String) 
         ev_stderr_lux: sensor_se,
         dgp: None,
         dgps: metrics::dgps(sensor_lux),
+        low_light: sensor_lux < metrics::LOW_LIGHT_LIMIT_LUX,
         sources: None,
         sensor_ev_lux: sensor_lux,
         sensor_ev_stderr_lux: sensor_se,
@@ -245,6 +250,7 @@ fn rendered(
         ev_stderr_lux: ev_se,
         dgp: Some(report.dgp),
         dgps: metrics::dgps(report.ev_lux),
+        low_light: report.ev_lux < metrics::LOW_LIGHT_LIMIT_LUX,
         sources: Some(report.sources.len()),
         sensor_ev_lux: sensor_lux,
         sensor_ev_stderr_lux: sensor_se,
@@ -275,5 +281,19 @@ mod tests {
         // An overrun cycle has nothing left, not a negative budget.
         let why = render_refusal(10.0, -50.0).unwrap();
         assert!(why.contains(" 0 ms left"), "{why}");
+    }
+
+    #[test]
+    fn night_and_dusk_views_are_flagged_low_light() {
+        let view: ViewConfig = toml::from_str(
+            "name = \"desk\"\nposition_m = [1.0, 1.0, 1.2]\ndirection = [0.0, 1.0, 0.0]\n",
+        )
+        .unwrap();
+        for (ev_lux, low) in [(0.0, true), (999.0, true), (1000.0, false), (5000.0, false)] {
+            let v = fallback(&view, ev_lux, 1.0, "test".into());
+            assert_eq!(v.low_light, low, "{ev_lux} lx");
+            // The value reported at night is the formula's floor, which the flag qualifies.
+            assert!(v.dgps >= 0.184);
+        }
     }
 }

@@ -96,6 +96,7 @@ fn a_view_reports_ev_and_dgp_of_its_render_and_falls_back_to_dgps() {
     assert_eq!(v["sources"].as_u64(), Some(report.sources.len() as u64));
     assert!((dgps - metrics::dgps(ev)).abs() < 1e-12);
     assert!((0.0..=1.0).contains(&dgp) && dgp > 0.159, "{dgp}");
+    assert_eq!(v["low_light"], ev < metrics::LOW_LIGHT_LIMIT_LUX, "{v}");
 
     // No time to render (a 6 ms budget): DGPs from the sensor, and why.
     let extra = format!("{extra}budget_fraction = 0.0001\n");
@@ -108,4 +109,5 @@ fn a_view_reports_ev_and_dgp_of_its_render_and_falls_back_to_dgps() {
     let ev = number(v, "ev_lux");
     assert_eq!(ev, number(v, "sensor_ev_lux"));
     assert!((number(v, "dgps") - metrics::dgps(ev)).abs() < 1e-12);
+    assert_eq!(v["low_light"], ev < metrics::LOW_LIGHT_LIMIT_LUX, "{v}");
 }

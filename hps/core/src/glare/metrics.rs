@@ -42,10 +42,15 @@ pub fn dgps(ev_lux: f64) -> f64 {
     (6.22e-5 * ev_lux + 0.184).min(1.0)
 }
 
+/// Below this vertical eye illuminance DGP needs its low-light correction (Wienold, "Dynamic
+/// daylight glare evaluation", Building Simulation 2009): the uncorrected formula's floor of
+/// 0.159 is not a glare probability there.
+pub const LOW_LIGHT_LIMIT_LUX: f64 = 1000.0;
+
 /// The low-light correction factor of DGP (Wienold, "Dynamic daylight glare evaluation",
 /// Building Simulation 2009): e^(0.024 Ev − 4) / (1 + e^(0.024 Ev − 4)) below 1000 lx, else 1.
 pub fn low_light_factor(ev_lux: f64) -> f64 {
-    if ev_lux < 1000.0 {
+    if ev_lux < LOW_LIGHT_LIMIT_LUX {
         let e = (0.024 * ev_lux - 4.0).exp();
         e / (1.0 + e)
     } else {
