@@ -484,10 +484,14 @@ impl Daemon<'_> {
         let output = &self.config.output;
         let (o, recovery) = Output::open(&output.dir, output.max_maps, output.max_captures)
             .map_err(|e| CycleError::Output(e.to_string()))?;
-        if recovery.partial_bytes_dropped > 0 || recovery.stale_files_removed > 0 {
+        if recovery.repaired_anything() {
             tracing::warn!(
                 partial_bytes_dropped = recovery.partial_bytes_dropped,
                 stale_files_removed = recovery.stale_files_removed,
+                orphan_files_removed = recovery.orphan_files_removed,
+                csv_rows_rebuilt = recovery.csv_rows_rebuilt,
+                latest_rebuilt = recovery.latest_rebuilt,
+                last_record_unreadable = recovery.last_record_unreadable.as_deref(),
                 "output: repaired what an interrupted write left"
             );
         }
