@@ -209,7 +209,9 @@ impl LineLog {
 
     /// Cuts the log back to `len` bytes, durably (start-up repair: errors are reported).
     pub fn cut(&mut self, len: u64) -> Result<(), OutputError> {
-        self.file.set_len(len).map_err(err(&self.path, "truncate"))?;
+        self.file
+            .set_len(len)
+            .map_err(err(&self.path, "truncate"))?;
         self.file.sync_all().map_err(err(&self.path, "fsync"))?;
         self.len = len;
         Ok(())

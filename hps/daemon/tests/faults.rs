@@ -359,12 +359,20 @@ fn check_retention(
     let map_of = |s: &String| format!("maps/{s}.exr");
     let capture_of = |s: &String| format!("captures/{s}");
     let maps_expected: BTreeSet<String> = newest.iter().take(keep).map(map_of).collect();
-    let captures_ready = !matches!(point, Some(WritePoint::CaptureFrames | WritePoint::CaptureRename));
+    let captures_ready = !matches!(
+        point,
+        Some(WritePoint::CaptureFrames | WritePoint::CaptureRename)
+    );
     let mut captures_expected: BTreeSet<String> =
         newest.iter().take(keep).map(capture_of).collect();
     if !captures_ready {
         // Killed inside the capture: the map is in place, the capture is still in the spool.
-        captures_expected = newest.iter().skip(1).take(keep - 1).map(capture_of).collect();
+        captures_expected = newest
+            .iter()
+            .skip(1)
+            .take(keep - 1)
+            .map(capture_of)
+            .collect();
     }
     let (maps, captures) = (listing("maps"), listing("captures"));
     if maps != maps_expected || captures != captures_expected {
@@ -402,7 +410,11 @@ fn sigkill_inside_every_write_loses_and_duplicates_nothing() {
     let captures = format!("max_captures = {KEEP} ");
     let config = config_with(
         tmp.path(),
-        &[SMALL, ("max_maps = 48 ", &keep), ("max_captures = 24 ", &captures)],
+        &[
+            SMALL,
+            ("max_maps = 48 ", &keep),
+            ("max_captures = 24 ", &captures),
+        ],
         "",
     );
     let (mut committed, mut lost) = (BTreeSet::new(), BTreeSet::new());
@@ -411,7 +423,9 @@ fn sigkill_inside_every_write_loses_and_duplicates_nothing() {
     for round in 0..ROUNDS {
         for point in WritePoint::ALL {
             day += 1;
-            let log = tmp.path().join(format!("stderr-{round}-{}.log", point.name()));
+            let log = tmp
+                .path()
+                .join(format!("stderr-{round}-{}.log", point.name()));
             // Round 0 kills in the run's first cycle, round 1 after a completed one.
             let pause = format!("{}:60000:{}", point.name(), round + 1);
             let mut child = SimRun::new(&config, &out)
@@ -448,7 +462,10 @@ fn sigkill_inside_every_write_loses_and_duplicates_nothing() {
                 lost.insert(time.clone());
             }
             if let Err(e) = check_output(&out, &committed, &lost, Some((point, &time))) {
-                panic!("killed at {} ({time}), round {round}: {e}\n{text}", point.name());
+                panic!(
+                    "killed at {} ({time}), round {round}: {e}\n{text}",
+                    point.name()
+                );
             }
         }
     }

@@ -108,7 +108,9 @@ fn last_record(results: &mut LineLog) -> Result<Option<CycleRecord>, String> {
 
 /// Deletes the map, view pictures and capture folder named by `stamp`; how many.
 fn remove_cycle_files(dir: &Path, stamp: &str) -> usize {
-    let mut removed = usize::from(remove_path(&dir.join(MAPS_DIR).join(format!("{stamp}.exr"))));
+    let mut removed = usize::from(remove_path(
+        &dir.join(MAPS_DIR).join(format!("{stamp}.exr")),
+    ));
     removed += usize::from(remove_path(&dir.join(CAPTURES_DIR).join(stamp)));
     let views = dir.join(VIEWS_DIR);
     let prefix = format!("{stamp}-");
@@ -212,15 +214,24 @@ mod tests {
         for csv in [
             // No row of b, one row of b, b's rows then a stray row of a later cycle.
             format!("{CSV_HEADER}{}", rows(&a)),
-            format!("{CSV_HEADER}{}2017-05-08T11:00:00+02:00,S1,3.5,,hdr\n", rows(&a)),
+            format!(
+                "{CSV_HEADER}{}2017-05-08T11:00:00+02:00,S1,3.5,,hdr\n",
+                rows(&a)
+            ),
             format!("{full}2017-05-08T12:00:00+02:00,S1,9,,hdr\n"),
         ] {
             std::fs::write(p.join(CSV_FILE), &csv).unwrap();
             std::fs::write(p.join(LATEST_FILE), latest_bytes(&a)).unwrap();
             let (_, recovery) = Output::open(p, 2, 2).unwrap();
-            assert!(recovery.csv_rows_rebuilt && recovery.latest_rebuilt, "{csv}");
+            assert!(
+                recovery.csv_rows_rebuilt && recovery.latest_rebuilt,
+                "{csv}"
+            );
             assert_eq!(std::fs::read_to_string(p.join(CSV_FILE)).unwrap(), full);
-            assert_eq!(std::fs::read(p.join(LATEST_FILE)).unwrap(), latest_bytes(&b));
+            assert_eq!(
+                std::fs::read(p.join(LATEST_FILE)).unwrap(),
+                latest_bytes(&b)
+            );
             // A second start finds nothing to do.
             let (_, again) = Output::open(p, 2, 2).unwrap();
             assert!(!again.repaired_anything(), "{again:?}");
@@ -268,7 +279,10 @@ mod tests {
         std::fs::write(p.join(RESULTS_FILE), "{\"not\":\"a record\"}\n").unwrap();
         let (_, recovery) = Output::open(p, 1, 1).unwrap();
         let reason = recovery.last_record_unreadable.unwrap();
-        assert!(reason.contains("results.jsonl") && reason.contains("byte 0"), "{reason}");
+        assert!(
+            reason.contains("results.jsonl") && reason.contains("byte 0"),
+            "{reason}"
+        );
         assert!(!p.join(LATEST_FILE).exists());
     }
 }

@@ -95,9 +95,7 @@ fn parse(value: &str) -> Result<Pause, String> {
         .find(|p| p.name() == name)
         .ok_or_else(|| format!("unknown point {name:?}"))?;
     let number = |what: &str, part: Option<&str>, default: Option<u64>| match (part, default) {
-        (Some(s), _) => s
-            .parse::<u64>()
-            .map_err(|e| format!("{what} {s:?}: {e}")),
+        (Some(s), _) => s.parse::<u64>().map_err(|e| format!("{what} {s:?}: {e}")),
         (None, Some(d)) => Ok(d),
         (None, None) => Err(format!("{what} missing")),
     };
