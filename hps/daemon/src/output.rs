@@ -269,6 +269,8 @@ struct Pictures<'a> {
 /// The daemon's output directory.
 pub struct Output {
     pub dir: PathBuf,
+    /// The time of the last record on disk (RFC 3339), if any.
+    last_time: Option<String>,
     results: LineLog,
     csv: LineLog,
     max_maps: usize,
@@ -330,14 +332,21 @@ impl Output {
         recovery.partial_bytes_dropped = a + b;
         let mut output = Self {
             dir: dir.to_path_buf(),
+            last_time: None,
             results,
             csv,
             max_maps,
             max_captures,
         };
-        let views_per_cycle = repair::after_crash(&mut output, pending.as_deref(), &mut recovery)?;
-        output.retain(views_per_cycle);
+        let last = repair::after_crash(&mut output, pending.as_deref(), &mut recovery)?;
+        output.retain(last.as_ref().map_or(0, |r| r.views.len()));
+        output.last_time = last.map(|r| r.time);
         Ok((output, recovery))
+    }
+
+    /// The time of the last record on disk (RFC 3339), if any.
+    pub fn last_time(&self) -> Option<&str> {
+        self.last_time.as_deref()
     }
 
     /// The stamp used in file names: UTC, so that names sort in time order.
@@ -394,6 +403,7 @@ impl Output {
         write_pause::at(WritePoint::Retention, &record.time);
         self.retain(view_pictures.len());
         let _ = std::fs::remove_file(&pending);
+        self.last_time = Some(record.time.clone());
         Ok(())
     }
 
@@ -692,12 +702,14 @@ mod tests {
         let (mut log, _) = LineLog::open(&p, "").unwrap();
         log.append(b"one\n").unwrap();
         // Swap in /dev/full for the write, as a disk filling up mid-cycle would behave.
-        if let Ok(full) = OpenOptions::new().write(true).open("/dev/full") {
-            let good = std::mem::replace(&mut log.file, full);
-            let e = log.append(b"two\n").unwrap_err();
-            assert!(e.is_disk_full(), "{e}");
-            log.file = good;
-        }
+        let full = OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .expect("/dev/full (every Linux has it)");
+        let good = std::mem::replace(&mut log.file, full);
+        let e = log.append(b"two\n").unwrap_err();
+        assert!(e.is_disk_full(), "{e}");
+        log.file = good;
         log.append(b"three\n").unwrap();
         assert_eq!(std::fs::read(&p).unwrap(), b"one\nthree\n");
     }
@@ -759,9 +771,10 @@ mod tests {
             v
         };
         assert_eq!(maps(dir.path()), vec!["20170508T080000Z.exr"]);
-        let Ok(full) = OpenOptions::new().write(true).open("/dev/full") else {
-            return;
-        };
+        let full = OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .expect("/dev/full (every Linux has it)");
         let good = std::mem::replace(&mut out.results.file, full);
         let mut r2 = record("2017-05-08T11:00:00+02:00");
         let e = out

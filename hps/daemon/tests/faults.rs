@@ -83,6 +83,61 @@ fn injected_faults_are_logged_retried_with_backoff_and_survived() {
     assert_eq!(std::fs::read_dir(out.join("captures")).unwrap().count(), 3);
 }
 
+/// The clock steps back two hours after a good cycle: the capture time is not after the last
+/// record's, so the cycle fails, flagged in the log and `/v1/health` with its cause, and
+/// retried until the clock has passed the last record; then a good cycle, in time order.
+#[test]
+fn a_clock_stepping_back_is_flagged_and_followed_by_a_good_cycle() {
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("out");
+    let log = tmp.path().join("stderr.log");
+    let extra = "[[sim.fault]]\nattempt = 2\nkind = \"clock_back\"\n";
+    let config = config_with(tmp.path(), &[SMALL], extra);
+    let mut child = SimRun::new(&config, &out)
+        .cycles(2)
+        .clock(T0, 3600)
+        .serve_after()
+        .start(&log);
+    let results = out.join("results.jsonl");
+    until(Duration::from_secs(40), &log, || {
+        (complete_lines(&results).len() >= 2).then_some(())
+    });
+    let address = std::fs::read_to_string(out.join("api.address")).unwrap();
+    let (code, body) = http_get(address.trim(), "/v1/health");
+    assert_eq!(code, 200, "{body}");
+    let h: serde_json::Value = serde_json::from_str(&body).unwrap();
+    signal(&child, libc::SIGTERM);
+    assert_eq!(wait(&mut child, Duration::from_secs(20)).code(), Some(0));
+    let text = std::fs::read_to_string(&log).unwrap();
+    // Flagged: the log and the health name the cause; the good cycle since cleared the
+    // degraded status.
+    let line = text
+        .lines()
+        .find(|l| l.contains("cycle failed") && l.contains("kind=\"clock\""))
+        .unwrap_or_else(|| panic!("no clock failure logged:\n{text}"));
+    assert!(line.contains("the clock went backwards"), "{line}");
+    assert_eq!(h["last_error"]["kind"], "clock", "{h}");
+    assert!(
+        h["last_error"]["message"]
+            .as_str()
+            .unwrap()
+            .contains("not after the last record's time 2017-05-08T10:00:00+02:00"),
+        "{h}"
+    );
+    assert_eq!(h["status"], "ok", "{h}");
+    assert_eq!(h["cycles_ok"], 2, "{h}");
+    // Two records, in time order, the second after the first.
+    let times: Vec<chrono::DateTime<chrono::FixedOffset>> = complete_lines(&results)
+        .iter()
+        .map(|l| {
+            let v: serde_json::Value = serde_json::from_str(l).unwrap();
+            chrono::DateTime::parse_from_rfc3339(v["time"].as_str().unwrap()).unwrap()
+        })
+        .collect();
+    assert_eq!(times.len(), 2);
+    assert!(times[1] > times[0], "{times:?}");
+}
+
 #[test]
 fn bad_configs_are_refused_with_file_line_and_field() {
     let tmp = tempfile::tempdir().unwrap();
@@ -207,11 +262,11 @@ fn read_only_output_is_retried_and_earlier_results_survive() {
     .map(|n| out.join(n))
     .collect();
     let refs: Vec<&Path> = ro.iter().map(|p| p.as_path()).collect();
-    if !make_read_only(&refs, true) {
-        eprintln!(
-            "SKIPPED: cannot make a directory read-only here (root without chattr +i); the \
-             disk-full path is covered by the injected disk_full fault"
-        );
+    if !skylux_hps::prerequisite::available_or_skip(
+        make_read_only(&refs, true),
+        skylux_hps::prerequisite::REQUIRE_HOST,
+        "cannot make a directory read-only here (root without chattr +i on this file system)",
+    ) {
         return;
     }
     let mut child = run(1, "2017-05-08T14:00:00+02:00");

@@ -65,18 +65,18 @@ fn remove_path(p: &Path) -> bool {
 }
 
 /// The repair after the logs' partial lines are gone: orphans of `pending`, then the last
-/// record's CSV rows and `latest.json`. Returns the last record's number of views (for the
-/// views' retention).
+/// record's CSV rows and `latest.json`. Returns the last record (`None`: none, or it does not
+/// parse).
 pub fn after_crash(
     output: &mut Output,
     pending: Option<&str>,
     recovery: &mut Recovery,
-) -> Result<usize, OutputError> {
+) -> Result<Option<CycleRecord>, OutputError> {
     let last = match last_record(&mut output.results) {
         Ok(last) => last,
         Err(reason) => {
             recovery.last_record_unreadable = Some(reason);
-            return Ok(0);
+            return Ok(None);
         }
     };
     let last_stamp = last.as_ref().map(|r| Output::stamp(&r.time));
@@ -84,11 +84,11 @@ pub fn after_crash(
         recovery.orphan_files_removed = remove_cycle_files(&output.dir, stamp);
     }
     let Some(last) = last else {
-        return Ok(0);
+        return Ok(None);
     };
     recovery.csv_rows_rebuilt = rebuild_csv_rows(&mut output.csv, &last)?;
     recovery.latest_rebuilt = rebuild_latest(&output.dir, &last)?;
-    Ok(last.views.len())
+    Ok(Some(last))
 }
 
 /// The last complete record of `results.jsonl` (`None`: the log is empty), or why it does not
