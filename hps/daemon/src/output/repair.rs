@@ -270,6 +270,44 @@ mod tests {
         }
     }
 
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(32))]
+        /// Whatever a crash or a hand left in the four files the repair reads (the logs, the
+        /// journal, `latest.json`; also mutations of a valid record), opening never panics,
+        /// and what it keeps of the record log is complete lines.
+        #[test]
+        fn any_leftover_is_repaired_or_refused_without_panic(
+            results in proptest::collection::vec(proptest::prelude::any::<u8>(), 0..400),
+            csv in proptest::collection::vec(proptest::prelude::any::<u8>(), 0..400),
+            latest in proptest::collection::vec(proptest::prelude::any::<u8>(), 0..200),
+            pending in "[A-Za-z0-9./]{0,24}",
+            cut in 0usize..400,
+            valid in proptest::prelude::any::<bool>(),
+        ) {
+            let dir = tempfile::tempdir().unwrap();
+            let p = dir.path();
+            std::fs::create_dir_all(p.join(SPOOL_DIR)).unwrap();
+            let results = if valid {
+                // A valid record cut anywhere, then the random bytes.
+                let mut l = line(&record("2017-05-08T10:00:00+02:00", &[1.0, 2.0])).into_bytes();
+                l.truncate(cut.min(l.len()));
+                l.extend_from_slice(&results);
+                l
+            } else {
+                results
+            };
+            std::fs::write(p.join(RESULTS_FILE), &results).unwrap();
+            std::fs::write(p.join(CSV_FILE), &csv).unwrap();
+            std::fs::write(p.join(LATEST_FILE), &latest).unwrap();
+            std::fs::write(p.join(SPOOL_DIR).join(PENDING_FILE), &pending).unwrap();
+            if Output::open(p, 2, 2).is_ok() {
+                let kept = std::fs::read(p.join(RESULTS_FILE)).unwrap();
+                proptest::prop_assert!(kept.is_empty() || kept.ends_with(b"\n"));
+                proptest::prop_assert!(results.starts_with(&kept));
+            }
+        }
+    }
+
     /// A last record that does not parse is reported, and the indexes left alone.
     #[test]
     fn an_unreadable_last_record_is_reported() {
