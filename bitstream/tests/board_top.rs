@@ -198,14 +198,11 @@ fn d5m_pins_match_hardware_facts() {
 
 /// Like `xcheck::require`, for the device-tree compiler (apt: device-tree-compiler).
 fn require_dtc() -> bool {
-    if Command::new("dtc").arg("--version").output().is_ok() {
-        return true;
-    }
-    if std::env::var_os("SKYLUX_REQUIRE_EDA").is_some() {
-        panic!("dtc missing (apt-get install device-tree-compiler; SKYLUX_REQUIRE_EDA is set)");
-    }
-    eprintln!("SKIPPED overlay check: dtc not installed (apt-get install device-tree-compiler)");
-    false
+    skylux_hps::prerequisite::available_or_skip(
+        Command::new("dtc").arg("--version").output().is_ok(),
+        skylux_hps::prerequisite::REQUIRE_EDA,
+        "overlay check: dtc not installed (apt-get install device-tree-compiler)",
+    )
 }
 
 #[test]

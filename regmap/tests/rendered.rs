@@ -58,17 +58,16 @@ fn c_header_compiles_and_agrees() {
     )
     .unwrap();
     let exe = dir.join("check");
-    let Ok(status) = std::process::Command::new("cc")
+    // Never skipped: `cc` is the linker Rust itself uses on Linux, so it is wherever these
+    // tests were built.
+    let status = std::process::Command::new("cc")
         .arg("-Wall")
         .arg("-Werror")
         .arg(&source)
         .arg("-o")
         .arg(&exe)
         .status()
-    else {
-        eprintln!("no C compiler: header compile check not run");
-        return;
-    };
+        .expect("a C compiler (`cc`, the linker Rust uses) to compile the C header");
     assert!(status.success(), "the C header does not compile");
     let out = std::process::Command::new(&exe).output().unwrap();
     let expected = format!(

@@ -26,10 +26,11 @@ fn radiance_or_skip() -> Option<Radiance> {
     match Radiance::find() {
         Ok(r) => Some(r),
         Err(e) => {
-            if std::env::var_os("SKYLUX_REQUIRE_RADIANCE").is_some() {
-                panic!("{e}, and SKYLUX_REQUIRE_RADIANCE is set");
-            }
-            println!("SKIPPED: {e}");
+            skylux_hps::prerequisite::available_or_skip(
+                false,
+                skylux_hps::prerequisite::REQUIRE_RADIANCE,
+                &e.to_string(),
+            );
             None
         }
     }

@@ -17,6 +17,7 @@ pub mod numerics;
 pub mod output;
 pub mod photometry;
 pub mod picture;
+pub mod prerequisite;
 pub mod scene;
 pub mod sky;
 pub mod sun;

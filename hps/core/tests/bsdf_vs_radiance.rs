@@ -783,12 +783,13 @@ fn generated_tensor_tree4_and_custom_klems_bases_match_radiance() {
     let Some((bin, lib)) = common::radiance::radiance_or_skip() else {
         return;
     };
-    if !bin.join("bsdf2ttree").is_file() || !common::radiance::pyradiance_bsdf_or_skip() {
-        assert!(
-            std::env::var_os("SKYLUX_REQUIRE_RADIANCE").is_none(),
-            "bsdf2ttree missing"
-        );
-        println!("SKIPPED: bsdf2ttree not found");
+    if !common::radiance::pyradiance_bsdf_or_skip()
+        || !skylux_hps::prerequisite::available_or_skip(
+            bin.join("bsdf2ttree").is_file(),
+            skylux_hps::prerequisite::REQUIRE_RADIANCE,
+            "RADIANCE bsdf2ttree not found (pip install pyradiance)",
+        )
+    {
         return;
     }
     let dir = tempfile::tempdir().unwrap();

@@ -138,10 +138,11 @@ fn directions() -> Vec<DVec3> {
 #[test]
 fn gensky_skies_against_ours() {
     let Some((bin, lib)) = radiance() else {
-        if std::env::var_os("SKYLUX_REQUIRE_RADIANCE").is_some() {
-            panic!("RADIANCE not found and SKYLUX_REQUIRE_RADIANCE is set; pip install pyradiance");
-        }
-        eprintln!("SKIPPED: RADIANCE not found (pip install pyradiance)");
+        skylux_hps::prerequisite::available_or_skip(
+            false,
+            skylux_hps::prerequisite::REQUIRE_RADIANCE,
+            "RADIANCE not found (pip install pyradiance)",
+        );
         return;
     };
     let dir = tempfile::tempdir().unwrap();

@@ -37,14 +37,11 @@ const GRID: HemisphereGrid = HemisphereGrid {
 
 fn tools() -> Option<(PathBuf, Option<PathBuf>)> {
     let found = radiance().filter(|(bin, _)| bin.join("gendaylit").is_file());
-    if found.is_none() {
-        if std::env::var_os("SKYLUX_REQUIRE_RADIANCE").is_some() {
-            panic!(
-                "gendaylit not found and SKYLUX_REQUIRE_RADIANCE is set; pip install pyradiance"
-            );
-        }
-        eprintln!("SKIPPED: RADIANCE gendaylit not found (pip install pyradiance)");
-    }
+    skylux_hps::prerequisite::available_or_skip(
+        found.is_some(),
+        skylux_hps::prerequisite::REQUIRE_RADIANCE,
+        "RADIANCE gendaylit not found (pip install pyradiance)",
+    );
     found
 }
 

@@ -26,10 +26,11 @@ fn rtrace_sees_the_map_through_the_sky_description() {
     );
 
     let Some((bin, lib)) = radiance() else {
-        if std::env::var_os("SKYLUX_REQUIRE_RADIANCE").is_some() {
-            panic!("RADIANCE not found and SKYLUX_REQUIRE_RADIANCE is set; pip install pyradiance");
-        }
-        eprintln!("SKIPPED: RADIANCE not found (pip install pyradiance)");
+        skylux_hps::prerequisite::available_or_skip(
+            false,
+            skylux_hps::prerequisite::REQUIRE_RADIANCE,
+            "RADIANCE not found (pip install pyradiance)",
+        );
         return;
     };
     // A smooth, strongly anisotropic sky: brighter towards the south-east and the zenith.

@@ -25,14 +25,11 @@ const ROOM: &str = concat!(
 
 fn radiance_or_skip() -> Option<(PathBuf, Option<PathBuf>)> {
     let found = radiance();
-    if found.is_none() {
-        if std::env::var_os("SKYLUX_REQUIRE_RADIANCE").is_some() {
-            panic!(
-                "RADIANCE not found and SKYLUX_REQUIRE_RADIANCE is set (pip install pyradiance)"
-            );
-        }
-        println!("SKIPPED: RADIANCE not found (pip install pyradiance)");
-    }
+    skylux_hps::prerequisite::available_or_skip(
+        found.is_some(),
+        skylux_hps::prerequisite::REQUIRE_RADIANCE,
+        "RADIANCE not found (pip install pyradiance)",
+    );
     found
 }
 

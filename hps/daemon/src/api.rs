@@ -32,6 +32,9 @@ pub struct ApiState {
     /// Time to write the last successful cycle's results, ms.
     pub last_output_ms: f64,
     pub started_unix_s: f64,
+    /// A configuration refused on SIGHUP (the daemon runs on the previous one), until a
+    /// good one is loaded.
+    pub config_error: Option<ErrorReport>,
 }
 
 /// The last error, for `/v1/health`.
@@ -54,6 +57,9 @@ struct Health<'a> {
     cycles_ok: u64,
     cycles_failed: u64,
     latest_time: Option<&'a str>,
+    /// A configuration refused on SIGHUP, with its file, line and field.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    config_error: Option<&'a ErrorReport>,
 }
 
 #[derive(Serialize)]
@@ -112,7 +118,7 @@ pub fn respond(method: &str, url: &str, state: &ApiState) -> Response {
         },
         "/v1/health" => {
             let h = Health {
-                status: if state.consecutive_failures == 0 {
+                status: if state.consecutive_failures == 0 && state.config_error.is_none() {
                     "ok"
                 } else {
                     "degraded"
@@ -122,6 +128,7 @@ pub fn respond(method: &str, url: &str, state: &ApiState) -> Response {
                 cycles_ok: state.cycles_ok,
                 cycles_failed: state.cycles_failed,
                 latest_time: state.latest.as_ref().map(|r| r.time.as_str()),
+                config_error: state.config_error.as_ref(),
             };
             (200, JSON, serde_json::to_string(&h).unwrap_or_default())
         }
@@ -302,6 +309,22 @@ mod tests {
             serde_json::from_str(&respond("GET", "/v1/health", &degraded).2).unwrap();
         assert_eq!(v["status"], "degraded");
         assert_eq!(v["last_error"]["kind"], "i2c_nack");
+        // A refused reload alone degrades the health, and says why.
+        let refused = ApiState {
+            config_error: Some(ErrorReport {
+                kind: "config".into(),
+                message: "skyluxd.toml:3: capture.period_s".into(),
+                time: "t".into(),
+            }),
+            ..ApiState::default()
+        };
+        let v: serde_json::Value =
+            serde_json::from_str(&respond("GET", "/v1/health", &refused).2).unwrap();
+        assert_eq!(v["status"], "degraded");
+        assert_eq!(
+            v["config_error"]["message"],
+            "skyluxd.toml:3: capture.period_s"
+        );
         let m = respond("GET", "/v1/metrics", &degraded).2;
         assert!(m.contains("skyluxd_consecutive_failures 2"), "{m}");
         assert!(

@@ -435,7 +435,13 @@ pub enum FaultKind {
     FlaggedFrame,
     /// The output disk is full when the results are written (ENOSPC).
     DiskFull,
+    /// The simulated clock steps back [`CLOCK_BACK_S`] before the attempt (a host fault:
+    /// an RTC reset or a bad time server).
+    ClockBack,
 }
+
+/// How far a `clock_back` fault steps the simulated clock back, seconds.
+pub const CLOCK_BACK_S: i64 = 7200;
 
 impl FaultKind {
     pub fn name(self) -> &'static str {
@@ -445,6 +451,7 @@ impl FaultKind {
             Self::DmaTimeout => "dma_timeout",
             Self::FlaggedFrame => "flagged_frame",
             Self::DiskFull => "disk_full",
+            Self::ClockBack => "clock_back",
         }
     }
 }

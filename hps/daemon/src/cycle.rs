@@ -78,6 +78,8 @@ pub enum CycleError {
     Output(String),
     #[error("disk full: {0}")]
     DiskFull(String),
+    #[error("clock: {0}")]
+    Clock(String),
 }
 
 impl CycleError {
@@ -91,6 +93,7 @@ impl CycleError {
             Self::Model(_) => "model",
             Self::Output(_) => "output",
             Self::DiskFull(_) => "disk_full",
+            Self::Clock(_) => "clock",
         }
     }
 }

@@ -384,16 +384,7 @@ impl Daemon<'_> {
                 break;
             }
             if self.signals.reload.swap(false, Ordering::Relaxed) {
-                let next_sequence = self.counts.ok + 1;
-                if let Some(s) = reload_config(
-                    self.options,
-                    &mut self.config,
-                    &mut self.kind,
-                    &stop,
-                    next_sequence,
-                ) {
-                    self.source = s;
-                }
+                self.reload();
             }
             if self.options.cycles.is_some_and(|n| self.counts.ok >= n) {
                 if self.options.serve_after {
@@ -422,6 +413,35 @@ impl Daemon<'_> {
         }
     }
 
+    /// SIGHUP: [`reload_config`], its outcome shown in `/v1/health` (a refused file until a
+    /// good one is loaded).
+    fn reload(&mut self) {
+        let next_sequence = self.counts.ok + 1;
+        let outcome = reload_config(
+            self.options,
+            &mut self.config,
+            &mut self.kind,
+            &self.signals.stop,
+            next_sequence,
+        );
+        let mut s = self.state.lock().unwrap_or_else(|p| p.into_inner());
+        match outcome {
+            Ok(source) => {
+                s.config_error = None;
+                if let Some(source) = source {
+                    self.source = source;
+                }
+            }
+            Err(message) => {
+                s.config_error = Some(ErrorReport {
+                    kind: "config".into(),
+                    message,
+                    time: self.clock.now().to_rfc3339(),
+                })
+            }
+        }
+    }
+
     fn sleep(&mut self, d: Duration) {
         sleep_interruptible(d, &self.signals.stop, &self.notifier, &mut self.last_ping);
     }
@@ -430,8 +450,9 @@ impl Daemon<'_> {
     /// during the capture.
     fn attempt_cycle(&mut self) -> bool {
         self.counts.attempts += 1;
+        self.sim_clock_fault();
         let at = self.clock.now();
-        if let Err(e) = self.open_output() {
+        if let Err(e) = self.open_output().and_then(|_| self.check_clock(at)) {
             self.failed(&e, at);
             return true;
         }
@@ -476,6 +497,39 @@ impl Daemon<'_> {
         true
     }
 
+    /// `[[sim.fault]] kind = "clock_back"`: the simulated clock steps back before this attempt.
+    fn sim_clock_fault(&mut self) {
+        let fault = SimSource::fault_for(&self.config.sim.faults, self.counts.attempts);
+        if let (Some(FaultKind::ClockBack), Clock::Sim { now, .. }) = (fault, &mut self.clock) {
+            *now -= chrono::TimeDelta::seconds(crate::config::CLOCK_BACK_S);
+            tracing::warn!(
+                now = %now.to_rfc3339(),
+                "sim: the clock steps back {} s (injected)",
+                crate::config::CLOCK_BACK_S
+            );
+        }
+    }
+
+    /// A capture time not after the last record's means the clock went backwards: the
+    /// record could not be placed (results are in time order, files are named by time), and
+    /// the sun would be computed for the wrong time. The cycle fails, flagged, until the
+    /// clock is past the last record again.
+    fn check_clock(&self, at: DateTime<FixedOffset>) -> Result<(), CycleError> {
+        let last = self.output.as_ref().and_then(|o| o.last_time());
+        let Some(last) = last.and_then(|t| DateTime::parse_from_rfc3339(t).ok()) else {
+            return Ok(());
+        };
+        if at > last {
+            return Ok(());
+        }
+        Err(CycleError::Clock(format!(
+            "the clock went backwards: {} is not after the last record's time {}; no record \
+             until it is",
+            at.to_rfc3339(),
+            last.to_rfc3339()
+        )))
+    }
+
     /// The output directory, opened (and repaired) if it is not yet.
     fn open_output(&mut self) -> Result<(), CycleError> {
         if self.output.is_some() {
@@ -484,10 +538,14 @@ impl Daemon<'_> {
         let output = &self.config.output;
         let (o, recovery) = Output::open(&output.dir, output.max_maps, output.max_captures)
             .map_err(|e| CycleError::Output(e.to_string()))?;
-        if recovery.partial_bytes_dropped > 0 || recovery.stale_files_removed > 0 {
+        if recovery.repaired_anything() {
             tracing::warn!(
                 partial_bytes_dropped = recovery.partial_bytes_dropped,
                 stale_files_removed = recovery.stale_files_removed,
+                orphan_files_removed = recovery.orphan_files_removed,
+                csv_rows_rebuilt = recovery.csv_rows_rebuilt,
+                latest_rebuilt = recovery.latest_rebuilt,
+                last_record_unreadable = recovery.last_record_unreadable.as_deref(),
                 "output: repaired what an interrupted write left"
             );
         }
@@ -739,22 +797,21 @@ fn make_source(
 /// configuration kept. A good one is applied from the next cycle: the schedule, retry,
 /// output retention, camera exposures and gain, `[sim]` and `[fabric]`; what is bound at
 /// start (site, room and its daylight coefficients, API address, output directory, hardware
-/// windows) keeps its running value, with a warning naming it. Returns the rebuilt source.
+/// windows) keeps its running value, with a warning naming it. Returns the rebuilt source,
+/// or why the file was refused (logged).
 fn reload_config(
     options: &Options,
     config: &mut Config,
     kind: &mut SourceKind,
     stop: &Arc<AtomicBool>,
     next_sequence: u64,
-) -> Option<Box<dyn CaptureSource>> {
+) -> Result<Option<Box<dyn CaptureSource>>, String> {
     let mut new = match Config::load(&options.config, &options.overrides) {
         Ok(c) => c,
         Err(e) => {
-            tracing::error!(
-                kind = "config",
-                "SIGHUP: reload refused, the running configuration is kept: {e}"
-            );
-            return None;
+            let message = format!("reload refused, the running configuration is kept: {e}");
+            tracing::error!(kind = "config", "SIGHUP: {message}");
+            return Err(message);
         }
     };
     let mut kept = Vec::new();
@@ -801,12 +858,12 @@ fn reload_config(
         match make_source(kind, &new, stop.clone()) {
             Ok(s) => rebuilt = Some(s),
             Err(e) => {
-                tracing::error!(
-                    kind = "config",
-                    "SIGHUP: reload refused, the capture source cannot take it ({e}); the \
-                     running configuration is kept"
+                let message = format!(
+                    "reload refused, the capture source cannot take it ({e}); the running \
+                     configuration is kept"
                 );
-                return None;
+                tracing::error!(kind = "config", "SIGHUP: {message}");
+                return Err(message);
             }
         }
     }
@@ -817,7 +874,7 @@ fn reload_config(
         source_rebuilt = rebuilt.is_some(),
         "SIGHUP: configuration reloaded, applied from the next cycle"
     );
-    rebuilt
+    Ok(rebuilt)
 }
 
 /// On the board: map the register window and the DMA buffer, then drop root. The fabric is

@@ -134,12 +134,17 @@ mod tests {
         use std::os::linux::net::SocketAddrExt;
         let name = format!("skyluxd-test-{}", std::process::id());
         let addr = std::os::unix::net::SocketAddr::from_abstract_name(name.as_bytes()).unwrap();
-        let Ok(listener) = UnixDatagram::bind_addr(&addr) else {
-            // Abstract sockets need a network namespace that allows them (qemu-user forwards
-            // the call; some sandboxes refuse it). Path sockets are tested above.
-            eprintln!("SKIPPED: abstract unix sockets unavailable here");
+        let bound = UnixDatagram::bind_addr(&addr);
+        // Abstract sockets need a network namespace that allows them (some sandboxes refuse
+        // it). Path sockets are tested above.
+        if !skylux_hps::prerequisite::available_or_skip(
+            bound.is_ok(),
+            skylux_hps::prerequisite::REQUIRE_HOST,
+            "abstract unix sockets unavailable here",
+        ) {
             return;
-        };
+        }
+        let listener = bound.unwrap();
         Notifier::new(Some(&format!("@{name}")), None).stopping();
         let mut buf = [0u8; 64];
         let k = listener.recv(&mut buf).unwrap();

@@ -1,16 +1,31 @@
 //! Results on disk, written so that a crash, a power cut or a full disk never costs an
-//! earlier result.
+//! earlier result, and never leaves half of a cycle behind.
+//!
+//! A cycle is written in this order: the EXR map and view pictures, the capture folder, the
+//! record's line in `results.jsonl` (the commit point), its rows in `illuminance.csv`,
+//! `latest.json`, then retention. Before the first of these, the cycle's stamp is written to
+//! `spool/cycle.pending`.
 //!
 //! - `results.jsonl` and `illuminance.csv` are append-only logs. A cycle's lines are appended
 //!   with one `write` and an `fsync`. If the write fails (ENOSPC), the file is truncated back
-//!   to its length before the cycle, so no partial line stays behind; a crash in the middle
-//!   of the write can leave one partial last line, which [`Output::open`] truncates away on
-//!   the next start. Both logs are rolled back together, so they always hold the same cycles.
+//!   to its length before the cycle, so no partial line stays behind; both logs are rolled
+//!   back together.
 //! - `latest.json`, the EXR maps and the kept captures are written to a temporary name,
 //!   fsynced, then renamed over the final name (rename is atomic on POSIX file systems),
-//!   and the directory is fsynced. A crash before the rename leaves the previous file; the
-//!   stale temporary is removed on the next start.
-//! - Maps and captures beyond their retention limit are deleted, oldest first.
+//!   and the directory is fsynced.
+//! - A crash anywhere in a cycle is repaired by [`Output::open`] on the next start
+//!   (`repair.rs`): a partial last line is truncated, stale temporaries and the spool are
+//!   removed, the files of a cycle that never reached its record are deleted, and the CSV
+//!   rows and `latest.json` are rebuilt from the last record when the crash came after it.
+//!   Every completed cycle's record is then present exactly once and whole.
+//! - Maps and captures beyond their retention limit are deleted, oldest first, after each
+//!   cycle and at start.
+//!
+//! `write_pause.rs` holds the test-only pauses that let the crash test kill the daemon inside
+//! each of these writes.
+
+mod repair;
+pub mod write_pause;
 
 use crate::cycle::CycleRecord;
 use skylux_hps::camera::DeviceConfig;
@@ -36,6 +51,7 @@ pub const VIEWS_DIR: &str = "views";
 /// Partial captures and scratch files; emptied on start.
 pub const SPOOL_DIR: &str = "spool";
 use skylux_hps::output::atomic::TMP_SUFFIX;
+use write_pause::WritePoint;
 
 /// Why the output could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -101,29 +117,14 @@ impl LineLog {
             .map_err(err(path, "open"))?;
         let mut len = file.metadata().map_err(err(path, "stat"))?.len();
         let mut dropped = 0;
-        if len > 0 {
-            // Find the last newline by reading backwards in blocks.
-            let mut end = len;
-            let mut keep = 0;
-            let mut buf = vec![0u8; 4096];
-            'search: while end > 0 {
-                let start = end.saturating_sub(buf.len() as u64);
-                let n = (end - start) as usize;
-                file.seek(SeekFrom::Start(start))
-                    .map_err(err(path, "seek"))?;
-                file.read_exact(&mut buf[..n]).map_err(err(path, "read"))?;
-                if let Some(i) = buf[..n].iter().rposition(|&b| b == b'\n') {
-                    keep = start + i as u64 + 1;
-                    break 'search;
-                }
-                end = start;
-            }
-            if keep < len {
-                file.set_len(keep).map_err(err(path, "truncate"))?;
-                file.sync_all().map_err(err(path, "fsync"))?;
-                dropped = len - keep;
-                len = keep;
-            }
+        let keep = last_newline_before(&mut file, len)
+            .map_err(err(path, "read"))?
+            .map_or(0, |i| i + 1);
+        if keep < len {
+            file.set_len(keep).map_err(err(path, "truncate"))?;
+            file.sync_all().map_err(err(path, "fsync"))?;
+            dropped = len - keep;
+            len = keep;
         }
         let mut log = Self {
             path: path.to_path_buf(),
@@ -151,10 +152,26 @@ impl LineLog {
     /// Appends complete lines with one write and an fsync; on failure the file is cut back
     /// to its previous length.
     pub fn append(&mut self, bytes: &[u8]) -> Result<(), OutputError> {
+        self.append_at(bytes, None)
+    }
+
+    /// [`append`](Self::append), split in two around the test-only pause at `point` when one
+    /// is armed there (`write_pause`); `time` is the cycle's, for the pause's log line.
+    fn append_at(
+        &mut self,
+        bytes: &[u8],
+        pause: Option<(WritePoint, &str)>,
+    ) -> Result<(), OutputError> {
         let before = self.len;
+        let pause = pause.filter(|(point, _)| write_pause::is_armed(*point));
+        let split = pause.map_or(bytes.len(), |(point, _)| point.split(bytes));
         let result = (|| {
             self.file.seek(SeekFrom::Start(before))?;
-            self.file.write_all(bytes)?;
+            self.file.write_all(&bytes[..split])?;
+            if let Some((point, time)) = pause {
+                write_pause::at(point, time);
+            }
+            self.file.write_all(&bytes[split..])?;
             self.file.sync_data()
         })();
         match result {
@@ -169,6 +186,37 @@ impl LineLog {
         }
     }
 
+    /// The last `max` complete lines (newline included), oldest first, each with the offset
+    /// where it starts; fewer when the log has fewer.
+    pub fn tail_lines(&mut self, max: usize) -> Result<Vec<(u64, Vec<u8>)>, OutputError> {
+        let mut lines = Vec::new();
+        let mut end = self.len;
+        while lines.len() < max && end > 0 {
+            let start = last_newline_before(&mut self.file, end - 1)
+                .map_err(err(&self.path, "read"))?
+                .map_or(0, |i| i + 1);
+            let mut line = vec![0u8; (end - start) as usize];
+            self.file
+                .seek(SeekFrom::Start(start))
+                .and_then(|_| self.file.read_exact(&mut line))
+                .map_err(err(&self.path, "read"))?;
+            lines.push((start, line));
+            end = start;
+        }
+        lines.reverse();
+        Ok(lines)
+    }
+
+    /// Cuts the log back to `len` bytes, durably (start-up repair: errors are reported).
+    pub fn cut(&mut self, len: u64) -> Result<(), OutputError> {
+        self.file
+            .set_len(len)
+            .map_err(err(&self.path, "truncate"))?;
+        self.file.sync_all().map_err(err(&self.path, "fsync"))?;
+        self.len = len;
+        Ok(())
+    }
+
     /// Cuts the log back to `len` bytes (best effort: if even this fails, the next start's
     /// recovery drops the partial line).
     pub fn rollback(&mut self, len: u64) {
@@ -177,6 +225,23 @@ impl LineLog {
             self.len = len;
         }
     }
+}
+
+/// The offset of the last newline in `file[..end]`, read backwards in blocks.
+fn last_newline_before(file: &mut File, end: u64) -> std::io::Result<Option<u64>> {
+    let mut end = end;
+    let mut buf = vec![0u8; 4096];
+    while end > 0 {
+        let start = end.saturating_sub(buf.len() as u64);
+        let n = (end - start) as usize;
+        file.seek(SeekFrom::Start(start))?;
+        file.read_exact(&mut buf[..n])?;
+        if let Some(i) = buf[..n].iter().rposition(|&b| b == b'\n') {
+            return Ok(Some(start + i as u64));
+        }
+        end = start;
+    }
+    Ok(None)
 }
 
 /// Injected output faults (`--sim` fault schedule).
@@ -204,6 +269,8 @@ struct Pictures<'a> {
 /// The daemon's output directory.
 pub struct Output {
     pub dir: PathBuf,
+    /// The time of the last record on disk (RFC 3339), if any.
+    last_time: Option<String>,
     results: LineLog,
     csv: LineLog,
     max_maps: usize,
@@ -213,12 +280,36 @@ pub struct Output {
 /// What [`Output::open`] found and repaired.
 #[derive(Debug, Default)]
 pub struct Recovery {
+    /// Partial last lines of the two logs, bytes.
     pub partial_bytes_dropped: u64,
+    /// Temporaries and spool entries.
     pub stale_files_removed: usize,
+    /// Maps, view pictures and capture folders of a cycle that crashed before its record.
+    pub orphan_files_removed: usize,
+    /// The last record's CSV rows were rewritten (the crash came between record and rows).
+    pub csv_rows_rebuilt: bool,
+    /// `latest.json` was rewritten from the last record.
+    pub latest_rebuilt: bool,
+    /// Why the last record could not be read back (its CSV rows and `latest.json` are then
+    /// left as they are).
+    pub last_record_unreadable: Option<String>,
+}
+
+impl Recovery {
+    /// Whether anything was repaired.
+    pub fn repaired_anything(&self) -> bool {
+        self.partial_bytes_dropped > 0
+            || self.stale_files_removed > 0
+            || self.orphan_files_removed > 0
+            || self.csv_rows_rebuilt
+            || self.latest_rebuilt
+            || self.last_record_unreadable.is_some()
+    }
 }
 
 impl Output {
-    /// Opens the directory, creating what is missing, and repairs what a crash left.
+    /// Opens the directory, creating what is missing, repairs what a crash left
+    /// (`repair.rs`) and applies retention.
     pub fn open(
         dir: &Path,
         max_maps: usize,
@@ -234,46 +325,28 @@ impl Output {
             std::fs::create_dir_all(&d).map_err(err(&d, "create directory"))?;
         }
         let mut recovery = Recovery::default();
-        // Stale temporaries and partial captures from a crash.
-        for d in [dir.to_path_buf(), dir.join(MAPS_DIR), dir.join(VIEWS_DIR)] {
-            for entry in std::fs::read_dir(&d).map_err(err(&d, "list"))?.flatten() {
-                let name = entry.file_name().to_string_lossy().into_owned();
-                if name.starts_with('.')
-                    && name.ends_with(TMP_SUFFIX)
-                    && std::fs::remove_file(entry.path()).is_ok()
-                {
-                    recovery.stale_files_removed += 1;
-                }
-            }
-        }
-        let spool = dir.join(SPOOL_DIR);
-        for entry in std::fs::read_dir(&spool)
-            .map_err(err(&spool, "list"))?
-            .flatten()
-        {
-            let p = entry.path();
-            let removed = if p.is_dir() {
-                std::fs::remove_dir_all(&p)
-            } else {
-                std::fs::remove_file(&p)
-            };
-            if removed.is_ok() {
-                recovery.stale_files_removed += 1;
-            }
-        }
+        let pending = repair::pending_stamp(dir);
+        repair::remove_leftovers(dir, &mut recovery)?;
         let (results, a) = LineLog::open(&dir.join(RESULTS_FILE), "")?;
         let (csv, b) = LineLog::open(&dir.join(CSV_FILE), CSV_HEADER)?;
         recovery.partial_bytes_dropped = a + b;
-        Ok((
-            Self {
-                dir: dir.to_path_buf(),
-                results,
-                csv,
-                max_maps,
-                max_captures,
-            },
-            recovery,
-        ))
+        let mut output = Self {
+            dir: dir.to_path_buf(),
+            last_time: None,
+            results,
+            csv,
+            max_maps,
+            max_captures,
+        };
+        let last = repair::after_crash(&mut output, pending.as_deref(), &mut recovery)?;
+        output.retain(last.as_ref().map_or(0, |r| r.views.len()));
+        output.last_time = last.map(|r| r.time);
+        Ok((output, recovery))
+    }
+
+    /// The time of the last record on disk (RFC 3339), if any.
+    pub fn last_time(&self) -> Option<&str> {
+        self.last_time.as_deref()
     }
 
     /// The stamp used in file names: UTC, so that names sort in time order.
@@ -304,6 +377,9 @@ impl Output {
             return Err(err(&self.dir, "write (injected fault)")(e));
         }
         let stamp = Self::stamp(&record.time);
+        // The journal: the next start deletes this stamp's files unless its record made it.
+        let pending = self.dir.join(SPOOL_DIR).join(repair::PENDING_FILE);
+        write_atomic(&pending, format!("{stamp}\n").as_bytes())?;
         // What this cycle created, removed again if a later step fails.
         let mut created: Vec<PathBuf> = Vec::new();
         let pictures = Pictures {
@@ -320,14 +396,24 @@ impl Output {
                     std::fs::remove_file(&p)
                 };
             }
+            let _ = std::fs::remove_file(&pending);
             return result;
         }
         // Retention only after the cycle is safely on disk: a failed cycle deletes nothing.
+        write_pause::at(WritePoint::Retention, &record.time);
+        self.retain(view_pictures.len());
+        let _ = std::fs::remove_file(&pending);
+        self.last_time = Some(record.time.clone());
+        Ok(())
+    }
+
+    /// Deletes the oldest maps, view pictures and captures beyond their limits.
+    fn retain(&self, views_per_cycle: usize) {
         if self.max_maps > 0 {
             prune(&self.dir.join(MAPS_DIR), self.max_maps, |n| {
                 n.ends_with(".exr")
             });
-            let per_cycle = view_pictures.len().max(1);
+            let per_cycle = views_per_cycle.max(1);
             prune(&self.dir.join(VIEWS_DIR), self.max_maps * per_cycle, |n| {
                 n.ends_with(".exr")
             });
@@ -337,7 +423,6 @@ impl Output {
                 !n.starts_with('.')
             });
         }
-        Ok(())
     }
 
     fn write_cycle_files(
@@ -351,17 +436,18 @@ impl Output {
     ) -> Result<(), OutputError> {
         if self.max_maps > 0 {
             let rel = format!("{MAPS_DIR}/{stamp}.exr");
-            self.write_whole(&rel, "EXR map", created, &|tmp| {
+            self.write_whole(&rel, "EXR map", &record.time, created, &|tmp| {
                 write_exr(tmp, pictures.map, device, &capture_readout(capture))
                     .map_err(|e| e.to_string())
             })?;
             record.map = Some(rel);
+            let time = record.time.clone();
             for (i, picture) in pictures.views {
                 let Some(view) = record.views.get_mut(*i) else {
                     continue;
                 };
                 let rel = format!("{VIEWS_DIR}/{stamp}-{}.exr", view.view);
-                self.write_whole(&rel, "view picture", created, &|tmp| {
+                self.write_whole(&rel, "view picture", &time, created, &|tmp| {
                     skylux_hps::picture::exr::write_exr(tmp, picture).map_err(|e| e.to_string())
                 })?;
                 view.image = Some(rel);
@@ -370,31 +456,42 @@ impl Output {
         if let (Some((config, frames)), true) = (capture, self.max_captures > 0) {
             let rel = format!("{CAPTURES_DIR}/{stamp}");
             let existed = self.dir.join(&rel).exists();
-            self.write_capture(stamp, config, frames)?;
+            self.write_capture(stamp, &record.time, config, frames)?;
             if !existed {
                 created.push(self.dir.join(&rel));
             }
             record.capture = Some(rel);
         }
+        self.write_logs(record)
+    }
+
+    /// The record's line (the commit point), its CSV rows, then `latest.json`; on failure
+    /// both logs are cut back to their length before the cycle.
+    fn write_logs(&mut self, record: &CycleRecord) -> Result<(), OutputError> {
         let mut json = serde_json::to_vec(record).map_err(|e| OutputError {
             path: self.dir.join(RESULTS_FILE),
             what: "serialise",
             source: std::io::Error::other(e.to_string()),
         })?;
         json.push(b'\n');
-        let mut csv = String::new();
-        for s in &record.illuminance {
-            csv.push_str(&format!("{},{},{},,hdr\n", record.time, s.sensor, s.lux));
-        }
+        let time = record.time.as_str();
         let (results_len, csv_len) = (self.results.len(), self.csv.len());
-        self.results.append(&json)?;
-        if let Err(e) = self.csv.append(csv.as_bytes()) {
+        self.results
+            .append_at(&json, Some((WritePoint::Jsonl, time)))?;
+        let rows = csv_rows(record);
+        if let Err(e) = self
+            .csv
+            .append_at(rows.as_bytes(), Some((WritePoint::Csv, time)))
+        {
             self.results.rollback(results_len);
             return Err(e);
         }
-        let mut latest = serde_json::to_vec_pretty(record).unwrap_or_default();
-        latest.push(b'\n');
-        if let Err(e) = write_atomic(&self.dir.join(LATEST_FILE), &latest) {
+        let latest_path = self.dir.join(LATEST_FILE);
+        let written = write_atomic_with(&latest_path, &latest_bytes(record), || {
+            write_pause::at(WritePoint::Latest, time);
+            Ok(())
+        });
+        if let Err(e) = written {
             self.results.rollback(results_len);
             self.csv.rollback(csv_len);
             return Err(e);
@@ -409,6 +506,7 @@ impl Output {
         &self,
         rel: &str,
         what: &'static str,
+        time: &str,
         created: &mut Vec<PathBuf>,
         write: &dyn Fn(&Path) -> Result<(), String>,
     ) -> Result<(), OutputError> {
@@ -427,6 +525,7 @@ impl Output {
             })
             .and_then(|_| {
                 fsync_file(&tmp)
+                    .map(|_| write_pause::at(WritePoint::Map, time))
                     .and_then(|_| std::fs::rename(&tmp, &path))
                     .and_then(|_| fsync_dir(&dir))
                     .map_err(|e| {
@@ -445,6 +544,7 @@ impl Output {
     fn write_capture(
         &self,
         stamp: &str,
+        time: &str,
         config: &skylux_hps::campaign::CaptureConfig,
         frames: &[RawFrame],
     ) -> Result<(), OutputError> {
@@ -452,16 +552,20 @@ impl Output {
         let target = self.dir.join(CAPTURES_DIR).join(stamp);
         let result = (|| -> std::io::Result<()> {
             std::fs::create_dir_all(&partial)?;
-            for (e, f) in config.exposure.iter().zip(frames) {
+            for (i, (e, f)) in config.exposure.iter().zip(frames).enumerate() {
                 let p = partial.join(&e.file);
                 std::fs::write(&p, f.to_pgm())?;
                 fsync_file(&p)?;
+                if i == 0 {
+                    write_pause::at(WritePoint::CaptureFrames, time);
+                }
             }
             let text = toml::to_string(config).map_err(std::io::Error::other)?;
             let p = partial.join("capture.toml");
             std::fs::write(&p, text)?;
             fsync_file(&p)?;
             fsync_dir(&partial)?;
+            write_pause::at(WritePoint::CaptureRename, time);
             if target.exists() {
                 std::fs::remove_dir_all(&target)?;
             }
@@ -473,6 +577,22 @@ impl Output {
             err(&target, "capture folder")(e)
         })
     }
+}
+
+/// The CSV rows of a record (one per sensor), as `illuminance.csv` holds them.
+fn csv_rows(record: &CycleRecord) -> String {
+    record
+        .illuminance
+        .iter()
+        .map(|s| format!("{},{},{},,hdr\n", record.time, s.sensor, s.lux))
+        .collect()
+}
+
+/// `latest.json`'s bytes for a record.
+fn latest_bytes(record: &CycleRecord) -> Vec<u8> {
+    let mut latest = serde_json::to_vec_pretty(record).unwrap_or_default();
+    latest.push(b'\n');
+    latest
 }
 
 fn capture_readout(
@@ -582,17 +702,19 @@ mod tests {
         let (mut log, _) = LineLog::open(&p, "").unwrap();
         log.append(b"one\n").unwrap();
         // Swap in /dev/full for the write, as a disk filling up mid-cycle would behave.
-        if let Ok(full) = OpenOptions::new().write(true).open("/dev/full") {
-            let good = std::mem::replace(&mut log.file, full);
-            let e = log.append(b"two\n").unwrap_err();
-            assert!(e.is_disk_full(), "{e}");
-            log.file = good;
-        }
+        let full = OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .expect("/dev/full (every Linux has it)");
+        let good = std::mem::replace(&mut log.file, full);
+        let e = log.append(b"two\n").unwrap_err();
+        assert!(e.is_disk_full(), "{e}");
+        log.file = good;
         log.append(b"three\n").unwrap();
         assert_eq!(std::fs::read(&p).unwrap(), b"one\nthree\n");
     }
 
-    fn record(time: &str) -> CycleRecord {
+    pub(super) fn record(time: &str) -> CycleRecord {
         CycleRecord {
             time: time.into(),
             sequence: 1,
@@ -649,9 +771,10 @@ mod tests {
             v
         };
         assert_eq!(maps(dir.path()), vec!["20170508T080000Z.exr"]);
-        let Ok(full) = OpenOptions::new().write(true).open("/dev/full") else {
-            return;
-        };
+        let full = OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .expect("/dev/full (every Linux has it)");
         let good = std::mem::replace(&mut out.results.file, full);
         let mut r2 = record("2017-05-08T11:00:00+02:00");
         let e = out

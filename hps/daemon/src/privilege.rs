@@ -119,8 +119,11 @@ mod tests {
     /// `child_drops_to_nobody`), so the test runner keeps its root.
     #[test]
     fn drop_in_child_when_root() {
-        if unsafe { libc::geteuid() } != 0 {
-            eprintln!("SKIPPED: not root, nothing to drop");
+        if !skylux_hps::prerequisite::available_or_skip(
+            unsafe { libc::geteuid() } == 0,
+            skylux_hps::prerequisite::REQUIRE_HOST,
+            "not root: the privilege drop cannot be tried",
+        ) {
             return;
         }
         let exe = std::env::current_exe().unwrap();
@@ -128,6 +131,7 @@ mod tests {
         cmd.args([
             "--exact",
             "privilege::tests::child_drops_to_nobody",
+            "--ignored",
             "--nocapture",
         ])
         .env("SKYLUXD_DROP_CHILD", "1");
@@ -141,11 +145,14 @@ mod tests {
         assert!(text.contains("dropped to uid"), "{text}");
     }
 
+    /// Run only by `drop_in_child_when_root`, in its child (it gives up root for good).
     #[test]
+    #[ignore = "the child half of drop_in_child_when_root"]
     fn child_drops_to_nobody() {
-        if std::env::var_os("SKYLUXD_DROP_CHILD").is_none() {
-            return;
-        }
+        assert!(
+            std::env::var_os("SKYLUXD_DROP_CHILD").is_some(),
+            "run by drop_in_child_when_root only: it drops this process's root"
+        );
         match drop_root("nobody", None).unwrap() {
             Dropped::To { uid, .. } => {
                 assert_ne!(uid, 0);

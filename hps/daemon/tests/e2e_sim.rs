@@ -1,12 +1,13 @@
 //! End to end: `skyluxd --sim --cycles 3 --config hps/skyluxd.toml` runs three cycles,
 //! serves `/v1/latest` and `/v1/health` over HTTP, exits 0 on SIGTERM, and its illuminance
-//! equals the offline pipeline's (the device model, `skylux_hps::model`) on the same frames.
+//! equals the offline pipeline's (the device model, `skylux_hps::model`) on the same frames,
+//! with the daylight coefficients recomputed offline from the room (never the daemon's cache).
 
 mod common;
 
 use common::*;
 use skylux_hps::campaign::Campaign;
-use skylux_hps::engine::{DaylightCoefficients, Settings, World};
+use skylux_hps::engine::{daylight_coefficients, Settings, World};
 use skylux_hps::model::{capture_terms, load_captures, predict, ModelState, Room};
 use std::time::Duration;
 
@@ -95,8 +96,9 @@ fn three_cycles_serve_http_and_match_the_offline_pipeline() {
 }
 
 /// Runs the offline pipeline on the captures the daemon kept in `out` (a campaign around
-/// them, the room with the daemon's cached daylight coefficients, the loop's functions) and
-/// compares every sensor of every record to 1e-9 relative. Returns the values compared.
+/// them, the room and its daylight coefficients computed here from the scene, the loop's
+/// functions) and compares every sensor of every record to 1e-9 relative: a wrong matrix in
+/// the daemon (or a wrong cache) would disagree. Returns the values compared.
 fn compare_with_offline(
     tmp: &std::path::Path,
     out: &std::path::Path,
@@ -126,23 +128,26 @@ fn compare_with_offline(
     let (device, _) =
         skylux_hps::camera::DeviceConfig::read(&hps.join("daemon/device.toml")).unwrap();
     let captures = load_captures(&campaign, &device, &|_, _| {}).unwrap();
-    let dc_path = std::fs::read_dir(out.join("cache"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .find(|p| p.extension().is_some_and(|e| e == "dc"))
-        .expect("the cached daylight coefficients");
     let scene = skylux_hps::scene::load(room_dir.join("scene.rad")).unwrap();
+    let world = World::new(&scene).unwrap();
+    let sensors = skylux_hps::scene::load_sensors(room_dir.join("sensors.pts")).unwrap();
+    // hps/skyluxd.toml: mf = 1, ambient_bounces = 12 (converged), seed = 1.
+    let settings = Settings {
+        ambient_bounces: skylux_hps::engine::integrator::CONVERGED_AMBIENT_BOUNCES,
+        samples_per_sensor: dc_samples,
+        seed: 1,
+        ..Settings::default()
+    };
+    let mut dc = daylight_coefficients(&world, &sensors, 1, &settings, &|_, _| {}).unwrap();
+    // The daemon keeps its matrix in RADIANCE's matrix format, FORMAT=float: float32.
+    for c in &mut dc.lux_per_cd_m2 {
+        *c = f64::from(*c as f32);
+    }
     let mut room = Room {
-        world: World::new(&scene).unwrap(),
-        sensors: skylux_hps::scene::load_sensors(room_dir.join("sensors.pts")).unwrap(),
-        dc: DaylightCoefficients::read(&dc_path).unwrap(),
-        // hps/skyluxd.toml: ambient_bounces = 12 (converged), seed = 1.
-        settings: Settings {
-            ambient_bounces: skylux_hps::engine::integrator::CONVERGED_AMBIENT_BOUNCES,
-            samples_per_sensor: dc_samples,
-            seed: 1,
-            ..Settings::default()
-        },
+        world,
+        sensors,
+        dc,
+        settings,
     };
     let terms = capture_terms(&mut room, &captures, &device, &|_, _| {}).unwrap();
     let mut compared = 0;

@@ -1,11 +1,13 @@
 //! Faults: each injected fault is logged with a clear message and retried with back-off, the
 //! daemon keeps running, and no earlier result is lost or corrupted. A bad configuration is
 //! refused with the file, line and field. A daemon killed with SIGKILL, again and again, in
-//! the middle of its work, leaves every earlier result intact.
+//! the middle of each of its writes, loses, duplicates and corrupts no record.
 
 mod common;
 
 use common::*;
+use skyluxd::output::write_pause::WritePoint;
+use std::collections::BTreeSet;
 use std::path::Path;
 use std::time::Duration;
 
@@ -79,6 +81,61 @@ fn injected_faults_are_logged_retried_with_backoff_and_survived() {
     assert_eq!(csv.lines().count(), 1 + 15);
     assert_eq!(std::fs::read_dir(out.join("maps")).unwrap().count(), 3);
     assert_eq!(std::fs::read_dir(out.join("captures")).unwrap().count(), 3);
+}
+
+/// The clock steps back two hours after a good cycle: the capture time is not after the last
+/// record's, so the cycle fails, flagged in the log and `/v1/health` with its cause, and
+/// retried until the clock has passed the last record; then a good cycle, in time order.
+#[test]
+fn a_clock_stepping_back_is_flagged_and_followed_by_a_good_cycle() {
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("out");
+    let log = tmp.path().join("stderr.log");
+    let extra = "[[sim.fault]]\nattempt = 2\nkind = \"clock_back\"\n";
+    let config = config_with(tmp.path(), &[SMALL], extra);
+    let mut child = SimRun::new(&config, &out)
+        .cycles(2)
+        .clock(T0, 3600)
+        .serve_after()
+        .start(&log);
+    let results = out.join("results.jsonl");
+    until(Duration::from_secs(40), &log, || {
+        (complete_lines(&results).len() >= 2).then_some(())
+    });
+    let address = std::fs::read_to_string(out.join("api.address")).unwrap();
+    let (code, body) = http_get(address.trim(), "/v1/health");
+    assert_eq!(code, 200, "{body}");
+    let h: serde_json::Value = serde_json::from_str(&body).unwrap();
+    signal(&child, libc::SIGTERM);
+    assert_eq!(wait(&mut child, Duration::from_secs(20)).code(), Some(0));
+    let text = std::fs::read_to_string(&log).unwrap();
+    // Flagged: the log and the health name the cause; the good cycle since cleared the
+    // degraded status.
+    let line = text
+        .lines()
+        .find(|l| l.contains("cycle failed") && l.contains("kind=\"clock\""))
+        .unwrap_or_else(|| panic!("no clock failure logged:\n{text}"));
+    assert!(line.contains("the clock went backwards"), "{line}");
+    assert_eq!(h["last_error"]["kind"], "clock", "{h}");
+    assert!(
+        h["last_error"]["message"]
+            .as_str()
+            .unwrap()
+            .contains("not after the last record's time 2017-05-08T10:00:00+02:00"),
+        "{h}"
+    );
+    assert_eq!(h["status"], "ok", "{h}");
+    assert_eq!(h["cycles_ok"], 2, "{h}");
+    // Two records, in time order, the second after the first.
+    let times: Vec<chrono::DateTime<chrono::FixedOffset>> = complete_lines(&results)
+        .iter()
+        .map(|l| {
+            let v: serde_json::Value = serde_json::from_str(l).unwrap();
+            chrono::DateTime::parse_from_rfc3339(v["time"].as_str().unwrap()).unwrap()
+        })
+        .collect();
+    assert_eq!(times.len(), 2);
+    assert!(times[1] > times[0], "{times:?}");
 }
 
 #[test]
@@ -205,11 +262,11 @@ fn read_only_output_is_retried_and_earlier_results_survive() {
     .map(|n| out.join(n))
     .collect();
     let refs: Vec<&Path> = ro.iter().map(|p| p.as_path()).collect();
-    if !make_read_only(&refs, true) {
-        eprintln!(
-            "SKIPPED: cannot make a directory read-only here (root without chattr +i); the \
-             disk-full path is covered by the injected disk_full fault"
-        );
+    if !skylux_hps::prerequisite::available_or_skip(
+        make_read_only(&refs, true),
+        skylux_hps::prerequisite::REQUIRE_HOST,
+        "cannot make a directory read-only here (root without chattr +i on this file system)",
+    ) {
         return;
     }
     let mut child = run(1, "2017-05-08T14:00:00+02:00");
@@ -242,80 +299,253 @@ fn read_only_output_is_retried_and_earlier_results_survive() {
         .starts_with(&csv_before));
 }
 
+/// Retention in the crash test: small, so that it deletes in almost every cycle.
+const KEEP: usize = 2;
+
+/// What the output directory must hold after a run was killed at `point` inside the cycle
+/// of `in_flight` (or after a clean run: `None`): every record of `committed` exactly once
+/// and whole, none of `lost`; the CSV rows, `latest.json`, maps and captures consistent with
+/// the records (the earlier kills repaired by this run's start); retention held.
+fn check_output(
+    out: &Path,
+    committed: &BTreeSet<String>,
+    lost: &BTreeSet<String>,
+    kill: Option<(WritePoint, &str)>,
+) -> Result<(), String> {
+    let records = records(out)?;
+    let times: Vec<&str> = records.iter().map(|r| r.time.as_str()).collect();
+    let unique: BTreeSet<String> = times.iter().map(|t| t.to_string()).collect();
+    if unique.len() != times.len() {
+        return Err(format!("a record is duplicated: {times:?}"));
+    }
+    if &unique != committed {
+        return Err(format!("records {unique:?}, expected {committed:?}"));
+    }
+    if let Some(t) = lost.iter().find(|t| unique.contains(*t)) {
+        return Err(format!("{t}: killed before its commit, yet recorded"));
+    }
+    let point = kill.map(|(p, _)| p);
+    check_csv(out, &records, point)?;
+    check_latest(out, &records, point)?;
+    check_retention(out, &records, kill)
+}
+
+/// The complete records of `results.jsonl`; a partial last line only while a kill at the
+/// record's own write is unrepaired.
+fn records(out: &Path) -> Result<Vec<skyluxd::cycle::CycleRecord>, String> {
+    complete_lines(&out.join("results.jsonl"))
+        .iter()
+        .map(|l| serde_json::from_str(l).map_err(|e| format!("a record does not parse: {e}: {l}")))
+        .collect()
+}
+
+/// Every record's rows, in order, exactly once; the last one's first row only when the kill
+/// came between its rows.
+fn check_csv(
+    out: &Path,
+    records: &[skyluxd::cycle::CycleRecord],
+    point: Option<WritePoint>,
+) -> Result<(), String> {
+    let text = std::fs::read_to_string(out.join("illuminance.csv")).map_err(|e| e.to_string())?;
+    let mut expected = String::from(skyluxd::output::CSV_HEADER);
+    for (i, r) in records.iter().enumerate() {
+        let cut = point == Some(WritePoint::Csv) && i + 1 == records.len();
+        for s in r.illuminance.iter().take(if cut { 1 } else { usize::MAX }) {
+            expected.push_str(&format!("{},{},{},,hdr\n", r.time, s.sensor, s.lux));
+        }
+    }
+    (text == expected)
+        .then_some(())
+        .ok_or_else(|| format!("illuminance.csv:\n{text}\nexpected:\n{expected}"))
+}
+
+/// `latest.json` parses and is the last record, or the one before while the kill sits
+/// between the record and the new `latest.json`.
+fn check_latest(
+    out: &Path,
+    records: &[skyluxd::cycle::CycleRecord],
+    point: Option<WritePoint>,
+) -> Result<(), String> {
+    let stale = matches!(point, Some(WritePoint::Csv | WritePoint::Latest));
+    let want = records.len().checked_sub(if stale { 2 } else { 1 });
+    let latest = std::fs::read_to_string(out.join("latest.json")).ok();
+    let latest: Option<skyluxd::cycle::CycleRecord> = latest
+        .map(|t| serde_json::from_str(&t).map_err(|e| format!("latest.json: {e}")))
+        .transpose()?;
+    match (want.map(|i| &records[i]), latest) {
+        (None, None) => Ok(()),
+        (Some(w), Some(l)) if *w == l => Ok(()),
+        (w, l) => Err(format!(
+            "latest.json is {:?}, expected {:?}",
+            l.map(|l| l.time),
+            w.map(|w| &w.time)
+        )),
+    }
+}
+
+/// The maps and captures are exactly those of the newest `KEEP` records (plus the killed
+/// cycle's own once they are in place, and one more while retention has not run), nothing
+/// is left in the spool after a clean run.
+fn check_retention(
+    out: &Path,
+    records: &[skyluxd::cycle::CycleRecord],
+    kill: Option<(WritePoint, &str)>,
+) -> Result<(), String> {
+    let listing = |dir: &str| -> BTreeSet<String> {
+        std::fs::read_dir(out.join(dir))
+            .map(|l| {
+                l.flatten()
+                    .map(|e| format!("{dir}/{}", e.file_name().to_string_lossy()))
+                    .filter(|n| !n.contains("/."))
+                    .collect()
+            })
+            .unwrap_or_default()
+    };
+    let stamp = |t: &str| skyluxd::output::Output::stamp(t);
+    // The cycles whose files must be on disk, newest first: the killed one (once its files
+    // are in place and its record is not yet written), then the records.
+    let mut newest: Vec<String> = records.iter().rev().map(|r| stamp(&r.time)).collect();
+    let point = kill.map(|(p, _)| p);
+    if let Some((_, t)) = kill.filter(|(p, _)| !p.after_commit() && *p != WritePoint::Map) {
+        newest.insert(0, stamp(t));
+    }
+    // Retention runs after the commit: one more of each until it has.
+    let keep = KEEP + usize::from(point.is_some_and(|p| p != WritePoint::Map));
+    let map_of = |s: &String| format!("maps/{s}.exr");
+    let capture_of = |s: &String| format!("captures/{s}");
+    let maps_expected: BTreeSet<String> = newest.iter().take(keep).map(map_of).collect();
+    let captures_ready = !matches!(
+        point,
+        Some(WritePoint::CaptureFrames | WritePoint::CaptureRename)
+    );
+    let mut captures_expected: BTreeSet<String> =
+        newest.iter().take(keep).map(capture_of).collect();
+    if !captures_ready {
+        // Killed inside the capture: the map is in place, the capture is still in the spool.
+        captures_expected = newest
+            .iter()
+            .skip(1)
+            .take(keep - 1)
+            .map(capture_of)
+            .collect();
+    }
+    let (maps, captures) = (listing("maps"), listing("captures"));
+    if maps != maps_expected || captures != captures_expected {
+        return Err(format!(
+            "maps {maps:?} captures {captures:?}, expected {maps_expected:?} and \
+             {captures_expected:?}"
+        ));
+    }
+    if kill.is_none() && std::fs::read_dir(out.join("spool")).map_or(0, |d| d.count()) > 0 {
+        return Err("the spool is not empty after a clean run".into());
+    }
+    Ok(())
+}
+
+/// The value of `key=` in a log line (quotes removed).
+fn log_field<'a>(line: &'a str, key: &str) -> Option<&'a str> {
+    let start = line.find(&format!(" {key}="))? + key.len() + 2;
+    let rest = &line[start..];
+    let end = rest.find(' ').unwrap_or(rest.len());
+    Some(rest[..end].trim_matches('"'))
+}
+
+/// Kills `skyluxd` with SIGKILL inside each of its writes (the test-only pause of
+/// `output/write_pause.rs` holds it there), in the first cycle of a run and after a completed
+/// one, and restarts it: each restart repairs what the kill left, so that every completed
+/// cycle's record is present exactly once and whole, a cycle killed before its record's
+/// line is complete leaves nothing, `latest.json` parses and follows the records, and
+/// retention holds.
 #[test]
-fn sigkill_in_a_loop_never_corrupts_earlier_results() {
+fn sigkill_inside_every_write_loses_and_duplicates_nothing() {
+    const ROUNDS: u64 = 2;
     let tmp = tempfile::tempdir().unwrap();
     let out = tmp.path().join("out");
-    let results = out.join("results.jsonl");
-    let csv = out.join("illuminance.csv");
-    let config = config_with(tmp.path(), &[SMALL], "");
-    let mut earlier: Vec<u8> = Vec::new();
-    let mut earlier_csv: Vec<u8> = Vec::new();
-    let mut kills_with_partial = 0;
-    for round in 0..5u64 {
-        let log = tmp.path().join(format!("stderr-{round}.log"));
-        let start_time = format!("2017-05-{:02}T10:00:00+02:00", 8 + round);
-        let mut child = SimRun::new(&config, &out)
-            .clock(&start_time, 600)
-            .start(&log);
-        // Let it complete at least one new cycle, then kill it at a varying moment of the
-        // next one (the writes are a few ms of a cycle; some rounds land in them).
-        let n = complete_lines(&results).len();
-        until(Duration::from_secs(45), &log, || {
-            (complete_lines(&results).len() > n).then_some(())
-        });
-        std::thread::sleep(Duration::from_millis(37 * round));
-        signal(&child, libc::SIGKILL);
-        let status = wait(&mut child, Duration::from_secs(10));
-        assert_eq!(
-            std::os::unix::process::ExitStatusExt::signal(&status),
-            Some(libc::SIGKILL)
-        );
-
-        // Every earlier result is still there, byte for byte; every complete line parses.
-        let now = std::fs::read(&results).unwrap();
-        assert!(
-            now.starts_with(&earlier),
-            "round {round}: an earlier result changed"
-        );
-        let now_csv = std::fs::read(&csv).unwrap();
-        assert!(
-            now_csv.starts_with(&earlier_csv),
-            "round {round}: the CSV changed"
-        );
-        if now.last().is_some_and(|&b| b != b'\n') {
-            kills_with_partial += 1;
+    let keep = format!("max_maps = {KEEP} ");
+    let captures = format!("max_captures = {KEEP} ");
+    let config = config_with(
+        tmp.path(),
+        &[
+            SMALL,
+            ("max_maps = 48 ", &keep),
+            ("max_captures = 24 ", &captures),
+        ],
+        "",
+    );
+    let (mut committed, mut lost) = (BTreeSet::new(), BTreeSet::new());
+    let (mut kills, mut mid_write) = (0, 0);
+    let mut day = 0;
+    for round in 0..ROUNDS {
+        for point in WritePoint::ALL {
+            day += 1;
+            let log = tmp
+                .path()
+                .join(format!("stderr-{round}-{}.log", point.name()));
+            // Round 0 kills in the run's first cycle, round 1 after a completed one.
+            let pause = format!("{}:60000:{}", point.name(), round + 1);
+            let mut child = SimRun::new(&config, &out)
+                .clock(&format!("2017-05-{day:02}T10:00:00+02:00"), 600)
+                .env(skyluxd::output::write_pause::VARIABLE, &pause)
+                .start(&log);
+            // A ceiling for qemu-arm (the first run also computes the room's matrix).
+            let inside = until(Duration::from_secs(60), &log, || {
+                let text = std::fs::read_to_string(&log).unwrap_or_default();
+                text.lines()
+                    .find(|l| l.contains("test write pause: inside the write"))
+                    .map(String::from)
+            });
+            signal(&child, libc::SIGKILL);
+            let status = wait(&mut child, Duration::from_secs(10));
+            assert_eq!(
+                std::os::unix::process::ExitStatusExt::signal(&status),
+                Some(libc::SIGKILL)
+            );
+            kills += 1;
+            let text = std::fs::read_to_string(&log).unwrap();
+            assert!(!text.contains("panicked"), "{text}");
+            // Inside the write: the pause never resumed.
+            if !text.contains("test write pause: resumed") {
+                mid_write += 1;
+            }
+            for l in text.lines().filter(|l| l.contains("cycle done")) {
+                committed.insert(log_field(l, "time").unwrap().to_string());
+            }
+            let time = log_field(&inside, "time").unwrap().to_string();
+            assert_eq!(log_field(&inside, "point"), Some(point.name()), "{inside}");
+            if point.after_commit() {
+                committed.insert(time.clone());
+            } else {
+                lost.insert(time.clone());
+            }
+            if let Err(e) = check_output(&out, &committed, &lost, Some((point, &time))) {
+                panic!(
+                    "killed at {} ({time}), round {round}: {e}\n{text}",
+                    point.name()
+                );
+            }
         }
-        for l in complete_lines(&results) {
-            serde_json::from_str::<serde_json::Value>(&l).expect("a complete JSON line");
-        }
-        // latest.json is replaced by rename: absent (killed before the first one) or whole.
-        if let Ok(latest) = std::fs::read_to_string(out.join("latest.json")) {
-            serde_json::from_str::<serde_json::Value>(&latest).expect("latest.json is whole");
-        }
-        // What the next start keeps: the complete lines.
-        earlier = complete_lines(&results).concat().into_bytes();
-        let csv_text = String::from_utf8(now_csv).unwrap();
-        earlier_csv = csv_text
-            .split_inclusive('\n')
-            .filter(|l| l.ends_with('\n'))
-            .collect::<String>()
-            .into_bytes();
     }
-    // A last, clean run repairs any partial line and appends after the earlier results.
+    // A last, clean run repairs the last kill and completes one cycle.
     let log = tmp.path().join("stderr-final.log");
     let mut child = SimRun::new(&config, &out)
         .cycles(1)
-        .clock("2017-05-20T10:00:00+02:00", 600)
+        .clock("2017-06-01T10:00:00+02:00", 600)
         .start(&log);
-    assert_eq!(wait(&mut child, Duration::from_secs(40)).code(), Some(0));
-    let text = std::fs::read_to_string(&results).unwrap();
-    assert!(text.as_bytes().starts_with(&earlier));
-    assert!(text.ends_with('\n'));
-    let lines: Vec<&str> = text.lines().collect();
-    assert!(lines.len() >= 6, "{} lines", lines.len());
-    for l in &lines {
-        serde_json::from_str::<serde_json::Value>(l).expect("every line parses after repair");
+    assert_eq!(wait(&mut child, Duration::from_secs(60)).code(), Some(0));
+    let text = std::fs::read_to_string(&log).unwrap();
+    assert!(text.contains("output: repaired"), "{text}");
+    committed.insert("2017-06-01T10:00:00+02:00".to_string());
+    if let Err(e) = check_output(&out, &committed, &lost, None) {
+        panic!("after the clean run: {e}\n{text}");
     }
-    eprintln!("{kills_with_partial} of 5 kills left a partial line (repaired on restart)");
+    // By construction every kill landed inside a write; the counts are the report's figures.
+    assert_eq!(mid_write, kills);
+    assert!(kills >= 14 && !lost.is_empty() && committed.len() > lost.len());
+    eprintln!(
+        "{kills} kills, {mid_write} inside a write ({} points x {ROUNDS} rounds); {} records \
+         kept exactly once, {} killed cycles left nothing",
+        WritePoint::ALL.len(),
+        committed.len(),
+        lost.len()
+    );
 }

@@ -49,6 +49,20 @@ fn sighup_refuses_a_bad_config_and_applies_a_good_one_at_the_next_cycle() {
     });
     assert!(line.contains("skyluxd.toml:"), "{line}");
     assert!(line.contains("capture.period_s"), "{line}");
+    // Flagged in /v1/health with the same cause, while the cycles go on.
+    let address = std::fs::read_to_string(out.join("api.address")).unwrap();
+    let health = || -> serde_json::Value {
+        let (code, body) = http_get(address.trim(), "/v1/health");
+        assert_eq!(code, 200, "{body}");
+        serde_json::from_str(&body).unwrap()
+    };
+    let h = health();
+    assert_eq!(h["status"], "degraded", "{h}");
+    let cause = h["config_error"]["message"].as_str().unwrap_or_default();
+    assert!(
+        cause.contains("skyluxd.toml:") && cause.contains("capture.period_s"),
+        "{h}"
+    );
     let n = complete_lines(&results).len();
     until(Duration::from_secs(60), &log, || {
         (complete_lines(&results).len() > n).then_some(())
@@ -83,6 +97,10 @@ fn sighup_refuses_a_bad_config_and_applies_a_good_one_at_the_next_cycle() {
             .any(|r| r["sequence"].as_u64() == Some(next))
             .then_some(())
     });
+    // The good file cleared the flag, and a good cycle followed.
+    let h = health();
+    assert_eq!(h["status"], "ok", "{h}");
+    assert!(h.get("config_error").is_none(), "{h}");
     signal(&child, libc::SIGTERM);
     let status = wait(&mut child, Duration::from_secs(30));
     assert_eq!(

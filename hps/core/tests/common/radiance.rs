@@ -125,12 +125,11 @@ pub fn rtrace_luminance(
 /// set (as CI sets it), so a missing RADIANCE can never pass there.
 pub fn radiance_or_skip() -> Option<(PathBuf, Option<PathBuf>)> {
     let found = radiance();
-    if found.is_none() {
-        if std::env::var_os("SKYLUX_REQUIRE_RADIANCE").is_some() {
-            panic!("RADIANCE (rtrace, gensky, oconv) not found and SKYLUX_REQUIRE_RADIANCE is set; install it with `pip install pyradiance`");
-        }
-        println!("SKIPPED: RADIANCE not found (pip install pyradiance)");
-    }
+    skylux_hps::prerequisite::available_or_skip(
+        found.is_some(),
+        skylux_hps::prerequisite::REQUIRE_RADIANCE,
+        "RADIANCE (rtrace, gensky, oconv) not found (pip install pyradiance)",
+    );
     found
 }
 
@@ -379,11 +378,9 @@ pub fn pyradiance_bsdf_or_skip() -> bool {
         .stderr(Stdio::null())
         .status()
         .is_ok_and(|s| s.success());
-    if !ok {
-        if std::env::var_os("SKYLUX_REQUIRE_RADIANCE").is_some() {
-            panic!("python3 cannot import pyradiance.bsdf and SKYLUX_REQUIRE_RADIANCE is set; pip install pyradiance");
-        }
-        println!("SKIPPED: pyradiance.bsdf not importable (pip install pyradiance)");
-    }
-    ok
+    skylux_hps::prerequisite::available_or_skip(
+        ok,
+        skylux_hps::prerequisite::REQUIRE_RADIANCE,
+        "python3 cannot import pyradiance.bsdf (pip install pyradiance)",
+    )
 }

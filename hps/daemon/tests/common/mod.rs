@@ -46,6 +46,7 @@ pub struct SimRun {
     cycles: Option<u64>,
     clock: Option<(String, u64)>,
     serve_after: bool,
+    env: Vec<(String, String)>,
 }
 
 impl SimRun {
@@ -56,6 +57,7 @@ impl SimRun {
             cycles: None,
             clock: None,
             serve_after: false,
+            env: Vec::new(),
         }
     }
     /// Stop after `n` successful cycles.
@@ -70,6 +72,11 @@ impl SimRun {
     }
     pub fn serve_after(mut self) -> Self {
         self.serve_after = true;
+        self
+    }
+    /// An environment variable for the daemon (e.g. `SKYLUX_TEST_WRITE_PAUSE`).
+    pub fn env(mut self, key: &str, value: &str) -> Self {
+        self.env.push((key.to_string(), value.to_string()));
         self
     }
     pub fn args(&self) -> Vec<String> {
@@ -100,15 +107,25 @@ impl SimRun {
     }
     /// Starts it, stderr into `log`.
     pub fn start(&self, log: &Path) -> Child {
-        start(&self.args(), log)
+        start_with_env(&self.args(), &self.env, log)
     }
 }
 
 /// Starts skyluxd with `args`, stderr captured into `dir/stderr.log`.
 pub fn start<S: AsRef<std::ffi::OsStr>>(args: &[S], log: &Path) -> Child {
+    start_with_env(args, &[], log)
+}
+
+/// [`start`] with environment variables added.
+pub fn start_with_env<S: AsRef<std::ffi::OsStr>>(
+    args: &[S],
+    env: &[(String, String)],
+    log: &Path,
+) -> Child {
     let exe = Path::new(env!("CARGO_BIN_EXE_skyluxd"));
     let mut cmd = skyluxd::spawn::command_for(exe);
     cmd.args(args)
+        .envs(env.iter().map(|(k, v)| (k, v)))
         .stdout(Stdio::null())
         .stderr(std::fs::File::create(log).unwrap());
     cmd.spawn().expect("skyluxd starts")
