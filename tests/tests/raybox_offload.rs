@@ -295,7 +295,7 @@ fn a_driver_on_a_hung_unit_reports_it_and_the_engine_survives() {
 }
 
 /// The figure, in CI: no false miss over 1e7 random pairs (also in `skylux bench
-/// raybox --json`); about 15 s of one core.
+/// raybox --json`); about 8 s of one core.
 #[test]
 fn no_false_misses_over_ten_million_pairs() {
     let r = pairs::check(10_000_000, 12);
