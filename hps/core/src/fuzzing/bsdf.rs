@@ -5,9 +5,9 @@ use crate::bsdf::{Band, Bsdf, Scattering};
 use glam::DVec3;
 
 pub(super) fn bsdf_xml(bytes: &[u8]) {
-    match Bsdf::from_xml(&super::text(bytes), "fuzz.xml", Band::Visible) {
+    match Bsdf::from_xml(&super::checks::text(bytes), "fuzz.xml", Band::Visible) {
         Ok(bsdf) => exercise(&bsdf),
-        Err(e) => super::assert_names(&e.to_string(), "fuzz.xml"),
+        Err(e) => super::checks::assert_names(&e.to_string(), "fuzz.xml"),
     }
 }
 

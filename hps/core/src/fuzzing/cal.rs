@@ -7,10 +7,10 @@ use crate::cal::{CalProgram, Evaluator, RayValues};
 const MAX_NAMES: usize = 24;
 
 pub(super) fn cal(bytes: &[u8]) {
-    let text = super::text(bytes);
+    let text = super::checks::text(bytes);
     let mut program = CalProgram::new();
     if let Err(e) = program.load_str("fuzz.cal", &text) {
-        super::assert_names(&e.to_string(), "fuzz.cal");
+        super::checks::assert_names(&e.to_string(), "fuzz.cal");
         return;
     }
     let mut evaluator = Evaluator::new(&program);

@@ -27,40 +27,40 @@ pub(super) fn campaign(bytes: &[u8]) {
 }
 
 fn campaign_toml(bytes: &[u8]) {
-    if let Err(e) = CampaignConfig::parse(&super::text(bytes), Path::new("campaign.toml")) {
-        super::assert_names(&e.to_string(), "campaign.toml");
+    if let Err(e) = CampaignConfig::parse(&super::checks::text(bytes), Path::new("campaign.toml")) {
+        super::checks::assert_names(&e.to_string(), "campaign.toml");
     }
 }
 
 fn capture_toml(bytes: &[u8]) {
-    if let Err(e) = CaptureConfig::parse(&super::text(bytes), Path::new("capture.toml")) {
-        super::assert_names(&e.to_string(), "capture.toml");
+    if let Err(e) = CaptureConfig::parse(&super::checks::text(bytes), Path::new("capture.toml")) {
+        super::checks::assert_names(&e.to_string(), "capture.toml");
     }
 }
 
 fn pgm(bytes: &[u8]) {
     match RawFrame::parse(bytes, Path::new("e0.pgm")) {
         Ok(f) => assert_eq!(f.samples_dn.len(), f.width * f.height),
-        Err(e) => super::assert_names(&e.to_string(), "e0.pgm"),
+        Err(e) => super::checks::assert_names(&e.to_string(), "e0.pgm"),
     }
 }
 
 fn luxmeters_csv(bytes: &[u8]) {
-    if let Err(e) = parse_luxmeters(Path::new("luxmeters.csv"), &super::text(bytes)) {
-        super::assert_names(&e.to_string(), "luxmeters.csv");
+    if let Err(e) = parse_luxmeters(Path::new("luxmeters.csv"), &super::checks::text(bytes)) {
+        super::checks::assert_names(&e.to_string(), "luxmeters.csv");
     }
 }
 
 fn pyranometer_csv(bytes: &[u8]) {
-    if let Err(e) = parse_pyranometer_csv("pyranometer.csv", &super::text(bytes)) {
-        super::assert_names(&e.to_string(), "pyranometer.csv");
+    if let Err(e) = parse_pyranometer_csv("pyranometer.csv", &super::checks::text(bytes)) {
+        super::checks::assert_names(&e.to_string(), "pyranometer.csv");
     }
 }
 
 /// A station's one-minute record, stamped at the interval's end.
 fn irradiance_csv(bytes: &[u8]) {
     let options = ReadOptions::new(StampConvention::IntervalEnd, TimeDelta::minutes(1));
-    if let Err(e) = parse_irradiance_csv("station.csv", &super::text(bytes), &options) {
-        super::assert_names(&e.to_string(), "station.csv");
+    if let Err(e) = parse_irradiance_csv("station.csv", &super::checks::text(bytes), &options) {
+        super::checks::assert_names(&e.to_string(), "station.csv");
     }
 }

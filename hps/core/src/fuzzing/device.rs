@@ -4,7 +4,7 @@ use crate::camera::DeviceConfig;
 use std::path::Path;
 
 pub(super) fn device_toml(bytes: &[u8]) {
-    if let Err(e) = DeviceConfig::parse(&super::text(bytes), Path::new("device.toml")) {
-        super::assert_names(&e.to_string(), "device.toml");
+    if let Err(e) = DeviceConfig::parse(&super::checks::text(bytes), Path::new("device.toml")) {
+        super::checks::assert_names(&e.to_string(), "device.toml");
     }
 }

@@ -9,6 +9,7 @@
 mod bsdf;
 mod cal;
 mod campaign;
+mod checks;
 mod device;
 mod pictures;
 mod scene;
@@ -32,19 +33,6 @@ pub const TARGETS: &[(&str, Harness)] = &[
 /// The harness named `name`, if this crate has one.
 pub fn harness(name: &str) -> Option<Harness> {
     TARGETS.iter().find(|(n, _)| *n == name).map(|(_, h)| *h)
-}
-
-/// Bytes as the text readers see them: invalid UTF-8 replaced, as `from_utf8_lossy` does.
-fn text(bytes: &[u8]) -> std::borrow::Cow<'_, str> {
-    String::from_utf8_lossy(bytes)
-}
-
-/// Asserts that an error message names the input, as every reader's errors must.
-fn assert_names(message: &str, label: &str) {
-    assert!(
-        message.contains(label),
-        "the error does not name `{label}`: {message}"
-    );
 }
 
 /// Runs every file of `fuzz/corpus/TARGET/` and `fuzz/regressions/TARGET/` under

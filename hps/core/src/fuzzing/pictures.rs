@@ -14,14 +14,14 @@ pub(super) fn exr(bytes: &[u8]) {
             let pixels = map.width * map.height;
             assert!(map.luminance_cd_m2.len() == pixels && map.flags.len() == pixels);
         }
-        Err(e) => super::assert_names(&e.to_string(), "fuzz.exr"),
+        Err(e) => super::checks::assert_names(&e.to_string(), "fuzz.exr"),
     }
     match parse_exr_luminance(path, bytes) {
         Ok(p) => assert_eq!(
             p.luminance_cd_m2.len() as u64,
             p.width_px as u64 * p.height_px as u64
         ),
-        Err(e) => super::assert_names(&e.to_string(), "fuzz.exr"),
+        Err(e) => super::checks::assert_names(&e.to_string(), "fuzz.exr"),
     }
 }
 
@@ -31,6 +31,6 @@ pub(super) fn rgbe(bytes: &[u8]) {
             p.pixels.len() as u64,
             p.width_px as u64 * p.height_px as u64
         ),
-        Err(e) => super::assert_names(&e.to_string(), "fuzz.hdr"),
+        Err(e) => super::checks::assert_names(&e.to_string(), "fuzz.hdr"),
     }
 }

@@ -9,6 +9,6 @@ pub(super) fn pts(bytes: &[u8]) {
                 assert!(s.position_m.is_finite() && unit, "{}: {:?}", s.name, s);
             }
         }
-        Err(e) => super::assert_names(&e.to_string(), "fuzz.pts"),
+        Err(e) => super::checks::assert_names(&e.to_string(), "fuzz.pts"),
     }
 }
