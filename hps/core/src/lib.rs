@@ -9,6 +9,7 @@ pub mod campaign;
 pub mod compare;
 pub mod engine;
 pub mod fpga;
+pub mod fuzzing;
 pub mod glare;
 pub mod hdr;
 pub mod io;

@@ -17,6 +17,7 @@
 //! | [`daemon`] | the loop: schedule, back-off, signals, watchdog |
 //! | [`notify`] | sd_notify over `$NOTIFY_SOCKET` |
 //! | [`hardware`], [`privilege`] | map the two windows, then drop root |
+//! | [`fuzzing`] | fuzz harnesses of `skyluxd.toml` and the API's requests (FUZZING.md) |
 //! | [`drivers`] | embedded-hal drivers: the shield stepper, the MT9P031 on HPS I2C |
 
 pub mod api;
@@ -26,6 +27,7 @@ pub mod cycle;
 pub mod daemon;
 pub mod drivers;
 pub mod fabric_source;
+pub mod fuzzing;
 pub mod hardware;
 pub mod notify;
 pub mod output;

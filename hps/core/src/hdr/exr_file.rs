@@ -78,6 +78,25 @@ pub fn write_exr(
 pub fn read_exr(
     path: &Path,
 ) -> std::result::Result<(LuminanceMap, DeviceConfig, Readout), MapFileError> {
+    let file = std::fs::File::open(path).map_err(|e| MapFileError::Exr {
+        path: path.into(),
+        message: format!("cannot open: {e}"),
+    })?;
+    decode_exr(path, std::io::BufReader::new(file))
+}
+
+/// [`read_exr`] of a file's bytes in memory; `path` names it in errors.
+pub fn parse_exr(
+    path: &Path,
+    bytes: &[u8],
+) -> std::result::Result<(LuminanceMap, DeviceConfig, Readout), MapFileError> {
+    decode_exr(path, std::io::Cursor::new(bytes))
+}
+
+fn decode_exr(
+    path: &Path,
+    source: impl std::io::Read + std::io::Seek,
+) -> std::result::Result<(LuminanceMap, DeviceConfig, Readout), MapFileError> {
     let exr_error = |e: exr::error::Error| MapFileError::Exr {
         path: path.into(),
         message: e.to_string(),
@@ -92,7 +111,7 @@ pub fn read_exr(
         .all_channels()
         .first_valid_layer()
         .all_attributes()
-        .from_file(path)
+        .from_buffered(source)
         .map_err(exr_error)?;
     let attribute = |name: &str| match image.layer_data.attributes.other.get(&Text::from(name)) {
         Some(AttributeValue::Text(t)) => Ok(t.to_string()),

@@ -8,7 +8,9 @@ mod merge;
 mod radiance_sky;
 
 pub use capture::{map_capture, CaptureMap, CaptureMapError};
-pub use exr_file::{read_exr, write_exr, MapFileError, DEVICE_ATTRIBUTE, READOUT_ATTRIBUTE};
+pub use exr_file::{
+    parse_exr, read_exr, write_exr, MapFileError, DEVICE_ATTRIBUTE, READOUT_ATTRIBUTE,
+};
 pub use geometry::{GeometryCache, GroupGeometry};
 pub use merge::{
     merge, Exposure, ExposureFrame, GroupParams, GroupedFrame, HdrError, LuminanceMap, MapFlag,

@@ -54,6 +54,25 @@ pub struct ExrLuminance {
 /// Reads the `Y` channel (luminance, cd/m²) and the `skylux.view` attribute of an OpenEXR
 /// file's first layer.
 pub fn read_exr_luminance(path: &Path) -> Result<ExrLuminance, super::rgbe::PictureReadError> {
+    let file = std::fs::File::open(path).map_err(|e| super::rgbe::PictureReadError {
+        path: path.into(),
+        message: format!("cannot open: {e}"),
+    })?;
+    decode_exr_luminance(path, std::io::BufReader::new(file))
+}
+
+/// [`read_exr_luminance`] of a file's bytes in memory; `path` names it in errors.
+pub fn parse_exr_luminance(
+    path: &Path,
+    bytes: &[u8],
+) -> Result<ExrLuminance, super::rgbe::PictureReadError> {
+    decode_exr_luminance(path, std::io::Cursor::new(bytes))
+}
+
+fn decode_exr_luminance(
+    path: &Path,
+    source: impl std::io::Read + std::io::Seek,
+) -> Result<ExrLuminance, super::rgbe::PictureReadError> {
     use exr::prelude::*;
     let fail = |message: String| super::rgbe::PictureReadError {
         path: path.into(),
@@ -65,7 +84,7 @@ pub fn read_exr_luminance(path: &Path) -> Result<ExrLuminance, super::rgbe::Pict
         .all_channels()
         .first_valid_layer()
         .all_attributes()
-        .from_file(path)
+        .from_buffered(source)
         .map_err(|e| fail(format!("not a readable OpenEXR file: {e}")))?;
     let layer = image.layer_data;
     let (w, h) = (layer.size.width(), layer.size.height());
