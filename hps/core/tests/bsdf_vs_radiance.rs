@@ -682,29 +682,12 @@ fn edit_strategy() -> impl proptest::strategy::Strategy<Value = Edit> {
     ]
 }
 
-/// Reading, evaluating, integrating and sampling a mutated file: no panic, bounded time.
+/// Reading, evaluating, integrating and sampling a mutated file: no panic, bounded time. The
+/// fuzz harness of BSDF XML does the reading and the exercise (`skylux_hps::fuzzing`).
 fn exercise(text: &str) {
     let start = std::time::Instant::now();
-    if let Ok(bsdf) = Bsdf::from_xml(text, "mutated.xml", Band::Visible) {
-        let directions = [
-            DVec3::Z,
-            -DVec3::Z,
-            DVec3::new(0.6, 0.0, 0.8),
-            DVec3::new(-0.3, 0.4, -0.866_025_403_784_438_6),
-            DVec3::X,
-        ];
-        for i in directions {
-            for o in directions {
-                let _ = bsdf.eval(i, o);
-            }
-            let _ = bsdf.hemispherical(i, Scattering::Reflection)
-                + bsdf.hemispherical(i, Scattering::Transmission);
-            let d = bsdf.distribution(i);
-            for k in 0..4 {
-                let _ = d.sample([k as f64 / 4.0, 0.5, 0.999]);
-            }
-        }
-    }
+    let harness = skylux_hps::fuzzing::harness("bsdf_xml").expect("the BSDF XML harness");
+    harness(text.as_bytes());
     assert!(
         start.elapsed().as_secs_f64() < 5.0,
         "took {:?}",
