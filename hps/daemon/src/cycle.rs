@@ -209,6 +209,42 @@ pub struct CycleRecord {
     pub plausibility: Vec<String>,
 }
 
+impl CycleRecord {
+    /// A small valid record: no sun, one sensor at 123.5 lx. For the tests and the API's fuzz
+    /// harness, which need a record without running a cycle.
+    pub fn minimal(time: &str, source: &str) -> Self {
+        CycleRecord {
+            time: time.into(),
+            sequence: 1,
+            source: source.into(),
+            sun: SunRecord {
+                spa_altitude_deg: 40.0,
+                spa_azimuth_deg: 180.0,
+                extracted: false,
+                extracted_altitude_deg: None,
+                extracted_azimuth_deg: None,
+                direct_normal_lux: None,
+                flags: vec!["no_sun:below_threshold".into()],
+                missing_reason: Some("no sun extracted: no direct sun in the map".into()),
+            },
+            illuminance: vec![SensorLux {
+                sensor: "S1".into(),
+                lux: 123.5,
+                stderr_lux: None,
+            }],
+            monte_carlo: None,
+            views: vec![],
+            outdoor_horizontal_lux: 1e5,
+            saturated_fraction: 0.0,
+            map: None,
+            capture: None,
+            durations_ms: Default::default(),
+            truth_outdoor_horizontal_lux: None,
+            plausibility: vec![],
+        }
+    }
+}
+
 /// What the cycle hands to the output stage besides the record.
 pub struct CycleProducts {
     pub record: CycleRecord,

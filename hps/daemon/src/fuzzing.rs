@@ -4,7 +4,7 @@
 
 use crate::api::{respond, ApiState};
 use crate::config::{Config, Overrides};
-use crate::cycle::{CycleRecord, SensorLux, SunRecord};
+use crate::cycle::CycleRecord;
 use std::path::Path;
 use std::sync::OnceLock;
 
@@ -48,33 +48,8 @@ fn with_record() -> &'static ApiState {
     static STATE: OnceLock<ApiState> = OnceLock::new();
     STATE.get_or_init(|| ApiState {
         latest: Some(CycleRecord {
-            time: "2017-05-08T10:00:00+02:00".into(),
             sequence: 2,
-            source: "fuzz".into(),
-            sun: SunRecord {
-                spa_altitude_deg: 40.0,
-                spa_azimuth_deg: 180.0,
-                extracted: false,
-                extracted_altitude_deg: None,
-                extracted_azimuth_deg: None,
-                direct_normal_lux: None,
-                flags: vec!["no_sun:below_threshold".into()],
-                missing_reason: Some("no direct sun in the map".into()),
-            },
-            illuminance: vec![SensorLux {
-                sensor: "S1".into(),
-                lux: 123.5,
-                stderr_lux: None,
-            }],
-            monte_carlo: None,
-            views: vec![],
-            outdoor_horizontal_lux: 1e5,
-            saturated_fraction: 0.0,
-            map: None,
-            capture: None,
-            durations_ms: Default::default(),
-            truth_outdoor_horizontal_lux: None,
-            plausibility: vec![],
+            ..CycleRecord::minimal("2017-05-08T10:00:00+02:00", "fuzz")
         }),
         cycles_ok: 1,
         cycles_failed: 1,

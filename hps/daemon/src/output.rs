@@ -715,35 +715,7 @@ mod tests {
     }
 
     pub(super) fn record(time: &str) -> CycleRecord {
-        CycleRecord {
-            time: time.into(),
-            sequence: 1,
-            source: "test".into(),
-            sun: crate::cycle::SunRecord {
-                spa_altitude_deg: 40.0,
-                spa_azimuth_deg: 180.0,
-                extracted: false,
-                extracted_altitude_deg: None,
-                extracted_azimuth_deg: None,
-                direct_normal_lux: None,
-                flags: vec!["no_sun:below_threshold".into()],
-                missing_reason: Some("no sun extracted: no direct sun in the map".into()),
-            },
-            illuminance: vec![crate::cycle::SensorLux {
-                sensor: "S1".into(),
-                lux: 123.5,
-                stderr_lux: None,
-            }],
-            monte_carlo: None,
-            views: vec![],
-            outdoor_horizontal_lux: 1e5,
-            saturated_fraction: 0.0,
-            map: None,
-            capture: None,
-            durations_ms: Default::default(),
-            truth_outdoor_horizontal_lux: None,
-            plausibility: vec![],
-        }
+        CycleRecord::minimal(time, "test")
     }
 
     /// A cycle whose log write fails leaves no map behind and deletes no earlier map.
