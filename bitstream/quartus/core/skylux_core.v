@@ -5981,15 +5981,14 @@ module skylux_core$capture$sun(clock,word_valid,word,frame_start,armed,groups_pe
     output reg  [15:0] armed_frames;
     
     // Stub signals
-    reg  [10:0] next_x$d;
-    wire  [10:0] next_x$q;
-    reg  next_x$clock;
-    reg  [10:0] next_y$d;
-    wire  [10:0] next_y$q;
-    reg  next_y$clock;
-    reg  frame_armed$d;
-    wire  frame_armed$q;
-    reg  frame_armed$clock;
+    reg  position$clock;
+    reg  position$word_valid;
+    reg  position$frame_start;
+    reg  position$armed;
+    reg  [10:0] position$groups_per_line;
+    wire  [10:0] position$pos_x;
+    wire  [10:0] position$pos_y;
+    wire  position$armed_now;
     reg  s1_first$d;
     wire  s1_first$q;
     reg  s1_first$clock;
@@ -6073,9 +6072,6 @@ module skylux_core$capture$sun(clock,word_valid,word,frame_start,armed,groups_pe
     reg  acc_frames$clock;
     
     // Local signals
-    reg  [10:0] pos_x;
-    reg  [10:0] pos_y;
-    reg  armed_now;
     reg  [29:0] luma;
     reg  [63:0] xl;
     reg  [63:0] yl;
@@ -6087,20 +6083,15 @@ module skylux_core$capture$sun(clock,word_valid,word,frame_start,armed,groups_pe
     reg  [29:0] base_max;
     
     // Sub module instances
-    skylux_core$capture$sun$next_x next_x(
-        .d(next_x$d),
-        .q(next_x$q),
-        .clock(next_x$clock)
-    );
-    skylux_core$capture$sun$next_y next_y(
-        .d(next_y$d),
-        .q(next_y$q),
-        .clock(next_y$clock)
-    );
-    skylux_core$capture$sun$frame_armed frame_armed(
-        .d(frame_armed$d),
-        .q(frame_armed$q),
-        .clock(frame_armed$clock)
+    skylux_core$capture$sun$position position(
+        .clock(position$clock),
+        .word_valid(position$word_valid),
+        .frame_start(position$frame_start),
+        .armed(position$armed),
+        .groups_per_line(position$groups_per_line),
+        .pos_x(position$pos_x),
+        .pos_y(position$pos_y),
+        .armed_now(position$armed_now)
     );
     skylux_core$capture$sun$s1_first s1_first(
         .d(s1_first$d),
@@ -6240,9 +6231,6 @@ module skylux_core$capture$sun(clock,word_valid,word,frame_start,armed,groups_pe
     
     // Update code
     always @(*) begin
-        next_x$clock = clock;
-        next_y$clock = clock;
-        frame_armed$clock = clock;
         s1_first$clock = clock;
         s1_counts$clock = clock;
         s1_over$clock = clock;
@@ -6270,9 +6258,6 @@ module skylux_core$capture$sun(clock,word_valid,word,frame_start,armed,groups_pe
         acc_min_y$clock = clock;
         acc_max_y$clock = clock;
         acc_frames$clock = clock;
-        next_x$d = next_x$q;
-        next_y$d = next_y$q;
-        frame_armed$d = frame_armed$q;
         s1_first$d = s1_first$q;
         s1_counts$d = s1_counts$q;
         s1_over$d = s1_over$q;
@@ -6300,30 +6285,18 @@ module skylux_core$capture$sun(clock,word_valid,word,frame_start,armed,groups_pe
         acc_min_y$d = acc_min_y$q;
         acc_max_y$d = acc_max_y$q;
         acc_frames$d = acc_frames$q;
-        pos_x = next_x$q;
-        pos_y = next_y$q;
-        armed_now = frame_armed$q;
-        if (word_valid & frame_start) begin
-            pos_x = 32'h0;
-            pos_y = 32'h0;
-            armed_now = armed;
-            frame_armed$d = armed;
-        end
-        if (word_valid) begin
-            next_x$d = pos_x + 32'h1;
-            next_y$d = pos_y;
-            if ((pos_x + 32'h1) >= groups_per_line) begin
-                next_x$d = 32'h0;
-                next_y$d = pos_y + 32'h1;
-            end
-        end
+        position$clock = clock;
+        position$word_valid = word_valid;
+        position$frame_start = frame_start;
+        position$armed = armed;
+        position$groups_per_line = groups_per_line;
         luma = word[(32'h0)+:(30)];
         s1_first$d = word_valid & frame_start & armed;
-        s1_counts$d = word_valid & armed_now & (pos_x >= x_min) & (pos_x <= x_max) & (pos_y >= y_min) & (pos_y <= y_max) & (luma >= threshold_q14);
+        s1_counts$d = word_valid & position$armed_now & (position$pos_x >= x_min) & (position$pos_x <= x_max) & (position$pos_y >= y_min) & (position$pos_y <= y_max) & (luma >= threshold_q14);
         s1_over$d = word[32'h1f];
         s1_l$d = luma;
-        s1_x$d = pos_x;
-        s1_y$d = pos_y;
+        s1_x$d = position$pos_x;
+        s1_y$d = position$pos_y;
         s2_first$d = s1_first$q;
         s2_counts$d = s1_counts$q;
         s2_over$d = s1_over$q;
@@ -6618,7 +6591,77 @@ module skylux_core$capture$sun$acc_yl(d,q,clock);
 endmodule // skylux_core$capture$sun$acc_yl
 
 
-module skylux_core$capture$sun$frame_armed(d,q,clock);
+module skylux_core$capture$sun$position(clock,word_valid,frame_start,armed,groups_per_line,pos_x,pos_y,armed_now);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  word_valid;
+    input wire  frame_start;
+    input wire  armed;
+    input wire  [10:0] groups_per_line;
+    output reg  [10:0] pos_x;
+    output reg  [10:0] pos_y;
+    output reg  armed_now;
+    
+    // Stub signals
+    reg  [10:0] next_x$d;
+    wire  [10:0] next_x$q;
+    reg  next_x$clock;
+    reg  [10:0] next_y$d;
+    wire  [10:0] next_y$q;
+    reg  next_y$clock;
+    reg  frame_armed$d;
+    wire  frame_armed$q;
+    reg  frame_armed$clock;
+    
+    // Sub module instances
+    skylux_core$capture$sun$position$next_x next_x(
+        .d(next_x$d),
+        .q(next_x$q),
+        .clock(next_x$clock)
+    );
+    skylux_core$capture$sun$position$next_y next_y(
+        .d(next_y$d),
+        .q(next_y$q),
+        .clock(next_y$clock)
+    );
+    skylux_core$capture$sun$position$frame_armed frame_armed(
+        .d(frame_armed$d),
+        .q(frame_armed$q),
+        .clock(frame_armed$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        next_x$clock = clock;
+        next_y$clock = clock;
+        frame_armed$clock = clock;
+        next_x$d = next_x$q;
+        next_y$d = next_y$q;
+        frame_armed$d = frame_armed$q;
+        pos_x = next_x$q;
+        pos_y = next_y$q;
+        armed_now = frame_armed$q;
+        if (word_valid & frame_start) begin
+            pos_x = 32'h0;
+            pos_y = 32'h0;
+            armed_now = armed;
+            frame_armed$d = armed;
+        end
+        if (word_valid) begin
+            next_x$d = pos_x + 32'h1;
+            next_y$d = pos_y;
+            if ((pos_x + 32'h1) >= groups_per_line) begin
+                next_x$d = 32'h0;
+                next_y$d = pos_y + 32'h1;
+            end
+        end
+    end
+    
+endmodule // skylux_core$capture$sun$position
+
+
+module skylux_core$capture$sun$position$frame_armed(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -6634,10 +6677,10 @@ module skylux_core$capture$sun$frame_armed(d,q,clock);
        q <= d;
     end
           
-endmodule // skylux_core$capture$sun$frame_armed
+endmodule // skylux_core$capture$sun$position$frame_armed
 
 
-module skylux_core$capture$sun$next_x(d,q,clock);
+module skylux_core$capture$sun$position$next_x(d,q,clock);
     
     // Module arguments
     input wire  [10:0] d;
@@ -6653,10 +6696,10 @@ module skylux_core$capture$sun$next_x(d,q,clock);
        q <= d;
     end
           
-endmodule // skylux_core$capture$sun$next_x
+endmodule // skylux_core$capture$sun$position$next_x
 
 
-module skylux_core$capture$sun$next_y(d,q,clock);
+module skylux_core$capture$sun$position$next_y(d,q,clock);
     
     // Module arguments
     input wire  [10:0] d;
@@ -6672,7 +6715,7 @@ module skylux_core$capture$sun$next_y(d,q,clock);
        q <= d;
     end
           
-endmodule // skylux_core$capture$sun$next_y
+endmodule // skylux_core$capture$sun$position$next_y
 
 
 module skylux_core$capture$sun$s1_counts(d,q,clock);

@@ -2,6 +2,7 @@
 //! Σ y·L, the largest L and the bounding box of the groups at or above a threshold inside a
 //! search window ([`super::golden`] is the specification).
 
+use super::position::SunPosition;
 use rust_hdl::prelude::*;
 
 /// Cycles from a word at the inputs to the outputs that include it.
@@ -46,10 +47,8 @@ pub struct SunAccumulators {
     /// Armed frames begun since power-up (wraps): tells the HPS the sums are a new frame's.
     pub armed_frames: Signal<Out, Bits<16>>,
 
-    // Position of the next word and whether the current frame is armed.
-    next_x: DFF<Bits<11>>,
-    next_y: DFF<Bits<11>>,
-    frame_armed: DFF<Bit>,
+    // Where the current word lies, and whether its frame is armed.
+    position: SunPosition,
     // Stage 1.
     s1_first: DFF<Bit>,
     s1_counts: DFF<Bit>,
@@ -81,10 +80,7 @@ pub struct SunAccumulators {
     acc_max_y: DFF<Bits<11>>,
     acc_frames: DFF<Bits<16>>,
 
-    // The current word's position, frame state and luminance.
-    pos_x: Signal<Local, Bits<11>>,
-    pos_y: Signal<Local, Bits<11>>,
-    armed_now: Signal<Local, Bit>,
+    // The current word's luminance.
     luma: Signal<Local, Bits<30>>,
     // The products assembled to 64 bits.
     xl: Signal<Local, Bits<64>>,
@@ -102,73 +98,33 @@ impl Logic for SunAccumulators {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self,
-            clock,
-            next_x,
-            next_y,
-            frame_armed,
-            s1_first,
-            s1_counts,
-            s1_over,
-            s1_l,
-            s1_x,
-            s1_y,
-            s2_first,
-            s2_counts,
-            s2_over,
-            s2_l,
-            s2_x,
-            s2_y,
-            s2_xl_high,
-            s2_xl_low,
-            s2_yl_high,
-            s2_yl_low,
-            acc_count,
-            acc_over,
-            acc_l,
-            acc_xl,
-            acc_yl,
-            acc_max,
-            acc_min_x,
-            acc_max_x,
-            acc_min_y,
-            acc_max_y,
+            self, clock, s1_first, s1_counts, s1_over, s1_l, s1_x, s1_y, s2_first, s2_counts,
+            s2_over, s2_l, s2_x, s2_y, s2_xl_high, s2_xl_low, s2_yl_high, s2_yl_low, acc_count,
+            acc_over, acc_l, acc_xl, acc_yl, acc_max, acc_min_x, acc_max_x, acc_min_y, acc_max_y,
             acc_frames
         );
 
         // ---- position: a frame's first word is group (0, 0) --------------------------
-        self.pos_x.next = self.next_x.q.val();
-        self.pos_y.next = self.next_y.q.val();
-        self.armed_now.next = self.frame_armed.q.val();
-        if self.word_valid.val() & self.frame_start.val() {
-            self.pos_x.next = 0.into();
-            self.pos_y.next = 0.into();
-            self.armed_now.next = self.armed.val();
-            self.frame_armed.d.next = self.armed.val();
-        }
-        if self.word_valid.val() {
-            self.next_x.d.next = self.pos_x.val() + 1;
-            self.next_y.d.next = self.pos_y.val();
-            if (self.pos_x.val() + 1) >= self.groups_per_line.val() {
-                self.next_x.d.next = 0.into();
-                self.next_y.d.next = self.pos_y.val() + 1;
-            }
-        }
+        self.position.clock.next = self.clock.val();
+        self.position.word_valid.next = self.word_valid.val();
+        self.position.frame_start.next = self.frame_start.val();
+        self.position.armed.next = self.armed.val();
+        self.position.groups_per_line.next = self.groups_per_line.val();
 
         // ---- stage 1: does the word count ---------------------------------------------
         self.luma.next = self.word.val().get_bits::<30>(0);
         self.s1_first.d.next = self.word_valid.val() & self.frame_start.val() & self.armed.val();
         self.s1_counts.d.next = self.word_valid.val()
-            & self.armed_now.val()
-            & (self.pos_x.val() >= self.x_min.val())
-            & (self.pos_x.val() <= self.x_max.val())
-            & (self.pos_y.val() >= self.y_min.val())
-            & (self.pos_y.val() <= self.y_max.val())
+            & self.position.armed_now.val()
+            & (self.position.pos_x.val() >= self.x_min.val())
+            & (self.position.pos_x.val() <= self.x_max.val())
+            & (self.position.pos_y.val() >= self.y_min.val())
+            & (self.position.pos_y.val() <= self.y_max.val())
             & (self.luma.val() >= self.threshold_q14.val());
         self.s1_over.d.next = self.word.val().get_bit(31);
         self.s1_l.d.next = self.luma.val();
-        self.s1_x.d.next = self.pos_x.val();
-        self.s1_y.d.next = self.pos_y.val();
+        self.s1_x.d.next = self.position.pos_x.val();
+        self.s1_y.d.next = self.position.pos_y.val();
 
         // ---- stage 2: x·L and y·L as products of the 15-bit halves of L ---------------
         self.s2_first.d.next = self.s1_first.q.val();
