@@ -103,9 +103,13 @@ fn a_clock_stepping_back_is_flagged_and_followed_by_a_good_cycle() {
         (complete_lines(&results).len() >= 2).then_some(())
     });
     let address = std::fs::read_to_string(out.join("api.address")).unwrap();
-    let (code, body) = http_get(address.trim(), "/v1/health");
-    assert_eq!(code, 200, "{body}");
-    let h: serde_json::Value = serde_json::from_str(&body).unwrap();
+    // The record is made durable before the health counters move: poll until they do.
+    let h: serde_json::Value = until(Duration::from_secs(20), &log, || {
+        let (code, body) = http_get(address.trim(), "/v1/health");
+        assert_eq!(code, 200, "{body}");
+        let h: serde_json::Value = serde_json::from_str(&body).unwrap();
+        (h["cycles_ok"].as_u64() >= Some(2)).then_some(h)
+    });
     signal(&child, libc::SIGTERM);
     assert_eq!(wait(&mut child, Duration::from_secs(20)).code(), Some(0));
     let text = std::fs::read_to_string(&log).unwrap();
