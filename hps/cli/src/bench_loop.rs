@@ -42,6 +42,11 @@ pub struct LoopBenchArgs {
     /// folder, removed).
     #[arg(long)]
     keep: Option<PathBuf>,
+    /// With `--keep`: where DIR/NNN-CLASS/campaign already holds a campaign (a battery run
+    /// kept before), run the loop on it instead of simulating it again, so a change to the
+    /// loop is re-judged on the same data in seconds per campaign rather than minutes.
+    #[arg(long, requires = "keep")]
+    reuse: bool,
     /// Print one JSON object instead of the tables.
     #[arg(long)]
     json: bool,
@@ -542,6 +547,10 @@ fn run_case(
     };
     let start = Instant::now();
     let simulated = (|| -> anyhow::Result<Campaign> {
+        let kept = dir.join("campaign");
+        if args.reuse && kept.join("campaign.toml").is_file() {
+            return Ok(Campaign::open(&kept)?);
+        }
         let room = dir.join("room");
         case.write_room(&room)?;
         let mut spec = case.spec(room)?;

@@ -19,7 +19,9 @@ pub use fabric::{
     fabric_background_cd_m2, sun_from_fabric, FabricSun, FabricSunSearch, SunExposure,
 };
 pub use michalsky::solar_position_michalsky;
-pub use orientation::{fit_orientation, OrientationError, OrientationFit, SunObservation};
+pub use orientation::{
+    fit_azimuth, fit_orientation, OrientationError, OrientationFit, SunObservation,
+};
 pub use position::{
     angle_between_deg, parse_time_utc, refraction_deg, solar_position, solar_position_with_delta_t,
     sun_direction, Atmosphere, Site, SolarPosition, REFRACTION_CUTOFF_ELEVATION_DEG,

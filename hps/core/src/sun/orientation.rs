@@ -80,6 +80,90 @@ pub fn fit_orientation(
     })
 }
 
+/// How far from the declared azimuth [`fit_azimuth`] searches, degrees: a compass read
+/// beside a steel frame, or a mount turned on its bracket, is off by degrees, not by tens of
+/// them (the battery's orientation errors are 2-10°, `sim/src/battery.rs`).
+pub const AZIMUTH_SEARCH_DEG: f64 = 45.0;
+
+/// Fits the camera's azimuth alone (its tilt and roll held as declared): a camera levelled on
+/// its mount but turned about the vertical, the error a compass leaves. One sighting gives
+/// two equations for this one unknown, so a day with the sun seen once or twice, or a few
+/// sightings close together (where [`fit_orientation`]'s three angles are undetermined),
+/// still fits it, and its residual tells whether a turn about the vertical explains them.
+pub fn fit_azimuth(
+    device: &DeviceConfig,
+    sightings: &[SunObservation],
+) -> Result<OrientationFit, OrientationError> {
+    if sightings.is_empty() {
+        return Err(OrientationError::TooFew(0));
+    }
+    for (i, s) in sightings.iter().enumerate() {
+        if !s.sun_direction.is_finite() || s.sun_direction.length() < 1e-12 {
+            return Err(OrientationError::BadDirection(i));
+        }
+    }
+    let turned = |delta_deg: f64| {
+        let mut d = device.clone();
+        d.orientation.axis_azimuth_deg =
+            (device.orientation.axis_azimuth_deg + delta_deg).rem_euclid(360.0);
+        d
+    };
+    // The angle between each sighting, seen by the camera turned by `delta_deg`, and SPA.
+    let residuals = |delta_deg: f64| -> Result<Vec<f64>, OrientationError> {
+        let camera = crate::camera::CameraModel::new(turned(delta_deg));
+        sightings
+            .iter()
+            .enumerate()
+            .map(|(i, s)| {
+                let seen = camera
+                    .unproject(s.image_point)
+                    .ok_or(OrientationError::OutsideLens(
+                        i,
+                        s.image_point.x_px,
+                        s.image_point.y_px,
+                    ))?;
+                Ok(angle_deg(seen, s.sun_direction.normalize()))
+            })
+            .collect()
+    };
+    let cost = |delta_deg: f64| -> Result<f64, OrientationError> {
+        Ok(residuals(delta_deg)?.iter().map(|r| r * r).sum())
+    };
+    // A scan at 0.25° finds the basin (the cost is smooth, one minimum within the search for
+    // sightings inside the lens), a golden-section search the minimum to 1e-6°.
+    let step = 0.25;
+    let mut best = (0.0, cost(0.0)?);
+    let n = (AZIMUTH_SEARCH_DEG / step) as i32;
+    for k in -n..=n {
+        let delta = k as f64 * step;
+        let c = cost(delta)?;
+        if c < best.1 {
+            best = (delta, c);
+        }
+    }
+    let (mut a, mut b) = (best.0 - step, best.0 + step);
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    while b - a > 1e-6 {
+        let (x1, x2) = (b - g * (b - a), a + g * (b - a));
+        if cost(x1)? < cost(x2)? {
+            b = x2;
+        } else {
+            a = x1;
+        }
+    }
+    let delta = 0.5 * (a + b);
+    let residuals_deg = residuals(delta)?;
+    let rms =
+        (residuals_deg.iter().map(|r| r * r).sum::<f64>() / residuals_deg.len() as f64).sqrt();
+    let max = residuals_deg.iter().cloned().fold(0.0, f64::max);
+    Ok(OrientationFit {
+        orientation: turned(delta).orientation,
+        residuals_deg,
+        residual_rms_deg: rms,
+        residual_max_deg: max,
+    })
+}
+
 fn angle_deg(a: DVec3, b: DVec3) -> f64 {
     a.cross(b).length().atan2(a.dot(b)).to_degrees()
 }
@@ -235,6 +319,46 @@ mod tests {
             assert!(fit.residual_max_deg < 1e-9);
         }
         let _ = direction_from_alt_az(0.0, 0.0);
+    }
+
+    /// A camera turned about the vertical is recovered from a single sighting, and a sighting
+    /// no turn explains (the sun seen higher than SPA puts it) keeps a residual.
+    #[test]
+    fn one_sighting_fits_the_azimuth_of_a_levelled_camera() {
+        for turn_deg in [-9.85, -3.0, 0.4, 6.41] {
+            let truth = DeviceConfig {
+                orientation: OrientationConfig {
+                    axis_azimuth_deg: 195.0 + turn_deg,
+                    axis_altitude_deg: 18.0,
+                    roll_deg: 0.0,
+                },
+                ..DeviceConfig::default()
+            };
+            let mut declared = truth.clone();
+            declared.orientation.axis_azimuth_deg = 195.0;
+            let sun = direction_from_alt_az(22.7, 160.0);
+            let p = CameraModel::new(truth.clone()).project(sun).unwrap();
+            let one = [SunObservation {
+                image_point: p,
+                sun_direction: sun,
+            }];
+            let fit = fit_azimuth(&declared, &one).unwrap();
+            let err = fit.orientation.axis_azimuth_deg - truth.orientation.axis_azimuth_deg;
+            assert!(err.abs() < 1e-4, "turn {turn_deg}: fitted off by {err}°");
+            assert!(fit.residual_max_deg < 1e-4, "{fit:?}");
+            assert_eq!(fit.orientation.axis_altitude_deg, 18.0);
+            // The same image point, but SPA's sun 5° higher: a turn cannot explain it.
+            let higher = [SunObservation {
+                image_point: p,
+                sun_direction: direction_from_alt_az(27.7, 160.0),
+            }];
+            let fit = fit_azimuth(&declared, &higher).unwrap();
+            assert!(fit.residual_rms_deg > 4.0, "{fit:?}");
+        }
+        assert_eq!(
+            fit_azimuth(&DeviceConfig::default(), &[]).unwrap_err(),
+            OrientationError::TooFew(0)
+        );
     }
 
     #[test]

@@ -32,10 +32,13 @@ const MIN_SIGNAL_DN: f64 = 60.0;
 const MAX_PIXELS_PER_CAPTURE: usize = 20_000;
 
 /// Floor on a pair's median ratio's relative error, for what pixel noise does not show (the
-/// response's departure from linearity, a black-level error, DN quantisation near the valid
-/// floor): 0.5 %. Without it the two longest exposures, with 10⁵ sky pixels and no
-/// sensitivity to µs, would outweigh the short ones.
-const RATIO_SYSTEMATIC: f64 = 0.005;
+/// response's departure from linearity, a black-level error, and above all the choice of the
+/// pixels valid in both, made on noisy values at the edges of the valid range): 2 %. The two
+/// longest exposures' ratio reads 1.0-1.4 % off the declared one on the eight campaigns
+/// without an overhead of the seed-18 battery (a "260 ± 100 µs overhead" each time with a
+/// 0.5 % floor, named once beside a bright ground: campaign #42); with 10⁵ sky pixels and no
+/// sensitivity to µs, that pair must not outweigh the short ones or show an overhead alone.
+const RATIO_SYSTEMATIC: f64 = 0.02;
 
 /// The shutter overhead the frames show, µs, with its standard error.
 #[derive(Clone, Copy, Debug, PartialEq)]

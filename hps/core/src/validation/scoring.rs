@@ -34,7 +34,7 @@ pub const MIN_TEST_UNITS: usize = 2;
 pub const ACTING_CHANGE: f64 = 0.005;
 
 /// The outcome of the acceptance test.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Verdict {
     pub accepted: bool,
     /// The fall of the hold-out figure over all blocks.
@@ -73,6 +73,24 @@ impl Verdict {
         }
     }
 
+    /// The projection test's verdict for the `tried`-th candidate tried at one step (1-based):
+    /// Bonferroni, α / tried, so trying the next candidates after the best is rejected keeps
+    /// the step's chance of a false discovery within α (one-sided normal quantiles 1.645,
+    /// 1.960, 2.128 at α, α/2, α/3; NIST/SEMATECH e-Handbook, §1.3.6.7.1). A confirmation
+    /// (an effect identified without the lux-meters) keeps its own rule.
+    pub fn bonferroni(self, tried: usize) -> Self {
+        const Z: [f64; 3] = [Z_ONE_SIDED_95, 1.960, 2.128];
+        if self.confirmation || !self.projection || tried <= 1 {
+            return self;
+        }
+        let z = Z[(tried - 1).min(Z.len() - 1)];
+        Self {
+            accepted: self.accepted && self.t > z,
+            t_critical: z,
+            ..self
+        }
+    }
+
     /// One line for the report: the statistic against its threshold.
     pub fn describe(&self) -> String {
         let gain = format!(
@@ -91,8 +109,13 @@ impl Verdict {
                 self.t_critical
             )
         } else {
+            let bonferroni = if self.projection && self.t_critical > Z_ONE_SIDED_95 {
+                ", shared with the candidates tried before it at this step"
+            } else {
+                ""
+            };
             format!(
-                "{gain} (needs {:.2}, one-sided α = {})",
+                "{gain} (needs {:.2}, one-sided α = {}{bonferroni})",
                 self.t_critical, ACCEPT_ALPHA
             )
         }
@@ -159,6 +182,21 @@ impl CaptureProjection {
     pub fn mean_abs_change(&self) -> f64 {
         self.abs_change_sum / self.readings.max(1) as f64
     }
+}
+
+/// Residuals beyond this many standard deviations count as this many in the projection test
+/// (Huber's ψ, P. J. Huber, "Robust Estimation of a Location Parameter", Ann. Math. Statist.
+/// 35, 1964): the edge of a sun patch falls on a sensor in one model and not in the other (a
+/// reading 124 % over in battery campaign #80, where the others sit within 10 %), and one such
+/// reading, multiplied by any candidate's change, would otherwise decide the test alone.
+pub const HUBER_K: f64 = 3.0;
+
+/// The clip of Huber's ψ for hold-out residuals whose mean absolute value is `mean_abs`:
+/// [`HUBER_K`] σ, σ = √(π/2) · mean |r| (a normal's σ from its mean absolute deviation),
+/// and never under 0.05 so that a model already within a few % is not clipped to its noise.
+pub fn huber_clip(mean_abs: f64) -> f64 {
+    let sigma = (std::f64::consts::PI / 2.0).sqrt() * mean_abs;
+    (HUBER_K * sigma).max(0.05)
 }
 
 /// One-sided normal quantile at [`ACCEPT_ALPHA`] = 0.05 (NIST/SEMATECH e-Handbook, §1.3.6.7.1).
@@ -320,6 +358,50 @@ pub fn summary(all: &Score, per: &BTreeMap<String, Score>, figure: Figure) -> Er
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The k-th single tried at a step needs z above the one-sided quantile at α / k; a
+    /// confirmation keeps its own rule; the first is unchanged.
+    #[test]
+    fn later_singles_pay_the_bonferroni_share() {
+        let v = |z: f64| Verdict {
+            accepted: true,
+            gain: 0.02,
+            t: z,
+            t_critical: Z_ONE_SIDED_95,
+            units: 8,
+            relative_gain: 0.5,
+            confirmation: false,
+            projection: true,
+        };
+        assert!(v(1.8).bonferroni(1).accepted);
+        assert!(!v(1.8).bonferroni(2).accepted);
+        assert!(v(2.0).bonferroni(2).accepted);
+        assert!(!v(2.0).bonferroni(3).accepted);
+        assert!(v(2.2).bonferroni(3).accepted);
+        assert_eq!(v(2.2).bonferroni(3).t_critical, 2.128);
+        let confirmed = Verdict {
+            confirmation: true,
+            ..v(-1.0)
+        };
+        assert_eq!(confirmed.bonferroni(3), confirmed);
+        // A rejected verdict stays rejected whatever its z.
+        let refused = Verdict {
+            accepted: false,
+            ..v(9.0)
+        };
+        assert!(!refused.bonferroni(2).accepted);
+    }
+
+    /// Huber's clip: three normal σ from the mean absolute residual (σ = √(π/2) mean |r|),
+    /// never under 5 %.
+    #[test]
+    fn the_huber_clip_is_three_sigma_of_the_residual() {
+        let mean_abs = 0.1;
+        let clip = huber_clip(mean_abs);
+        assert!((clip - 3.0 * (std::f64::consts::PI / 2.0).sqrt() * 0.1).abs() < 1e-12);
+        assert!((0.37..0.38).contains(&clip), "{clip}");
+        assert_eq!(huber_clip(0.001), 0.05);
+    }
 
     /// Falls 1, 2, 3: mean 2, standard deviation 1, t = 2 √3 = 3.464 against 2.920 (df 2).
     #[test]
