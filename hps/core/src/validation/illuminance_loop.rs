@@ -663,7 +663,6 @@ fn select_effects(
     selection: &mut Selection,
     progress: &(dyn Fn(&str, u64, u64) + Sync),
 ) -> Result<(), LoopError> {
-    let names = prepared.sensor_names.clone();
     while selection.effects.len() < options.max_effects {
         progress(
             "fitting effects",
@@ -688,58 +687,39 @@ fn select_effects(
             ));
             break;
         }
-        // The best single first; where it is rejected, the next ones in rank order (those
-        // the fit set calls for), each at a Bonferroni-corrected level: an effect the frames
-        // identified but the hold-out set does not confirm must not hide the one that does.
-        let mut added_one = false;
-        for (k, candidate) in candidates.iter().take(PAIR_CANDIDATES).enumerate() {
-            let frames_identified = candidate.effect.identified_without_luxmeters();
-            if k > 0 && !frames_identified && candidate.fitted.fit_error >= base_fit - MIN_FIT_GAIN
+        // The best single first; where it is refused, the best pair; where that is refused
+        // too, the next singles in rank order (those the fit set calls for), each at a
+        // Bonferroni-corrected level: an effect the frames identified but the hold-out set
+        // does not confirm must not hide the one that does.
+        if try_single(
+            prepared,
+            sets,
+            model,
+            selection,
+            &candidates[0],
+            1,
+            base_fit,
+        )? {
+            continue;
+        }
+        if selection.effects.len() + 2 <= options.max_effects
+            && try_pair(prepared, sets, model, selection, &candidates, base_fit)?
+        {
+            continue;
+        }
+        let mut added = false;
+        for (k, candidate) in candidates.iter().enumerate().take(PAIR_CANDIDATES).skip(1) {
+            if !candidate.effect.identified_without_luxmeters()
+                && candidate.fitted.fit_error >= base_fit - MIN_FIT_GAIN
             {
                 continue;
             }
-            let mut single = model.clone();
-            apply(prepared, &mut single, candidate.fitted.clone())?;
-            let mut trial = Trial::of(model, &single, sets, &names, &selection.current_holdout);
-            if frames_identified {
-                trial.verdict = trial.verdict.confirming();
-            }
-            trial.verdict = trial.verdict.bonferroni(k + 1);
-            if trial.verdict.accepted {
-                let report = effect_report(
-                    candidate,
-                    base_fit,
-                    &trial,
-                    candidate.fitted.evidence.clone(),
-                );
-                accept(
-                    model,
-                    selection,
-                    candidate.effect,
-                    single,
-                    report,
-                    trial.after,
-                );
-                added_one = true;
+            if try_single(prepared, sets, model, selection, candidate, k + 1, base_fit)? {
+                added = true;
                 break;
             }
-            selection.rejected.push(format!(
-                "{}: fit-set error {:.2} % → {:.2} %, hold-out error {:.2} % → {:.2} % ({}): \
-                 not added alone",
-                candidate.effect.name(),
-                100.0 * base_fit,
-                100.0 * candidate.fitted.fit_error,
-                100.0 * selection.current_holdout.figure(Figure::MeanAbs),
-                100.0 * trial.after.figure(Figure::MeanAbs),
-                trial.verdict.describe()
-            ));
         }
-        if added_one {
-            continue;
-        }
-        if selection.effects.len() + 2 > options.max_effects
-            || !try_pair(prepared, sets, model, selection, &candidates, base_fit)?
-        {
+        if !added {
             break;
         }
     }
@@ -749,6 +729,55 @@ fn select_effects(
         );
     }
     Ok(())
+}
+
+/// Tests one single candidate, the `tried`-th at this step (its Bonferroni share), on the
+/// hold-out set; adds it if accepted, else records why not. Whether it was added.
+fn try_single(
+    prepared: &mut Prepared,
+    sets: &Sets,
+    model: &mut Model,
+    selection: &mut Selection,
+    candidate: &Ranked,
+    tried: usize,
+    base_fit: f64,
+) -> Result<bool, LoopError> {
+    let names = prepared.sensor_names.clone();
+    let mut single = model.clone();
+    apply(prepared, &mut single, candidate.fitted.clone())?;
+    let mut trial = Trial::of(model, &single, sets, &names, &selection.current_holdout);
+    if candidate.effect.identified_without_luxmeters() {
+        trial.verdict = trial.verdict.confirming();
+    }
+    trial.verdict = trial.verdict.bonferroni(tried);
+    if trial.verdict.accepted {
+        let report = effect_report(
+            candidate,
+            base_fit,
+            &trial,
+            candidate.fitted.evidence.clone(),
+        );
+        accept(
+            model,
+            selection,
+            candidate.effect,
+            single,
+            report,
+            trial.after,
+        );
+        return Ok(true);
+    }
+    selection.rejected.push(format!(
+        "{}: fit-set error {:.2} % → {:.2} %, hold-out error {:.2} % → {:.2} % ({}): not added \
+         alone",
+        candidate.effect.name(),
+        100.0 * base_fit,
+        100.0 * candidate.fitted.fit_error,
+        100.0 * selection.current_holdout.figure(Figure::MeanAbs),
+        100.0 * trial.after.figure(Figure::MeanAbs),
+        trial.verdict.describe()
+    ));
+    Ok(false)
 }
 
 /// The report of a candidate about to be added.
