@@ -83,6 +83,18 @@ pub fn simulate_capture(
     field: &(dyn Fn(glam::DVec3) -> f64 + Sync),
     spec: &CaptureSpec,
 ) -> Result<CaptureConfig, WriteCaptureError> {
+    let (capture, frames) = simulate_frames(camera, field, spec);
+    write_capture(dir, &capture, &frames)?;
+    Ok(capture)
+}
+
+/// [`simulate_capture`] in memory: the capture's configuration (the files it would be
+/// written as) and its frames, as a camera hands them over without a disk.
+pub fn simulate_frames(
+    camera: &skylux_hps::camera::CameraModel,
+    field: &(dyn Fn(glam::DVec3) -> f64 + Sync),
+    spec: &CaptureSpec,
+) -> (CaptureConfig, Vec<RawFrame>) {
     use crate::sensor::Noise;
     let renderer = spec.renderer(camera);
     let scene = renderer.scene(field);
@@ -101,7 +113,7 @@ pub fn simulate_capture(
             )
         })
         .collect();
-    write_spec_capture(dir, spec, &frames)
+    (spec_config(spec), frames)
 }
 
 /// Writes `frames` (one per exposure of `spec`, GRBG) as the capture folder `dir`, named
@@ -111,8 +123,15 @@ pub(crate) fn write_spec_capture(
     spec: &CaptureSpec,
     frames: &[RawFrame],
 ) -> Result<CaptureConfig, WriteCaptureError> {
+    let capture = spec_config(spec);
+    write_capture(dir, &capture, frames)?;
+    Ok(capture)
+}
+
+/// The `capture.toml` of a capture made to `spec`.
+fn spec_config(spec: &CaptureSpec) -> CaptureConfig {
     use skylux_hps::campaign::{BayerPattern, ExposureEntry};
-    let capture = CaptureConfig {
+    CaptureConfig {
         time: spec.time.clone(),
         bayer: BayerPattern::GRBG,
         sensor_temperature_c: None,
@@ -128,9 +147,7 @@ pub(crate) fn write_spec_capture(
                 offset_ms: 0.0,
             })
             .collect(),
-    };
-    write_capture(dir, &capture, frames)?;
-    Ok(capture)
+    }
 }
 
 /// A small example capture (a 128x96 window of a sky with the sun, three exposures) and its

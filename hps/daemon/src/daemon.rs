@@ -20,7 +20,7 @@ use crate::api::{ApiServer, ApiState, ErrorReport, SharedState};
 use crate::config::{Config, FaultKind, Overrides, SimSourceKind};
 use crate::cycle::{CycleError, Pipeline};
 use crate::notify::Notifier;
-use crate::output::{FaultHook, Output, API_ADDRESS_FILE, SPOOL_DIR};
+use crate::output::{FaultHook, Output, API_ADDRESS_FILE};
 use crate::source::{CaptureSource, SimSource, SourceError};
 use chrono::{DateTime, FixedOffset, Timelike, Utc};
 use std::panic::AssertUnwindSafe;
@@ -761,7 +761,6 @@ fn make_source(
             config.sim.clone(),
             config.camera.exposures_us.clone(),
             config.camera.gain,
-            &config.output.dir.join(SPOOL_DIR),
         )),
         SourceKind::FabricSim => Box::new(crate::fabric_source::sim_fabric_source(
             config,

@@ -15,7 +15,6 @@ use skylux_hps::campaign::{CaptureConfig, RawFrame, Readout};
 use skylux_hps::hdr::Exposure;
 use skylux_hps::sky::perez::{PerezConditions, PerezInput, PerezSky};
 use skylux_hps::sun::{solar_position, Site};
-use std::path::{Path, PathBuf};
 
 /// One HDR capture as it left the sensor and the DMA.
 #[derive(Clone, Debug)]
@@ -97,7 +96,6 @@ pub struct SimSource {
     sim: SimConfig,
     exposures_us: Vec<f64>,
     gain: f64,
-    spool: PathBuf,
     attempts: u64,
 }
 
@@ -108,15 +106,14 @@ const GROUND_REFLECTANCE: f64 = 0.2;
 const MIN_SUN_ALTITUDE_DEG: f64 = 3.0;
 
 impl SimSource {
-    /// `spool` is a scratch folder where the simulator writes each capture before it is read
-    /// back (the simulator writes the campaign format).
+    /// The frames are made in memory, as a camera hands them over: the simulated camera
+    /// needs no disk, so a full output disk fails the cycle's writes, not the capture.
     pub fn new(
         device: DeviceConfig,
         site: Site,
         sim: SimConfig,
         exposures_us: Vec<f64>,
         gain: f64,
-        spool: &Path,
     ) -> Self {
         Self {
             camera: CameraModel::new(device),
@@ -124,7 +121,6 @@ impl SimSource {
             sim,
             exposures_us,
             gain,
-            spool: spool.to_path_buf(),
             attempts: 0,
         }
     }
@@ -300,20 +296,7 @@ impl CaptureSource for SimSource {
             seed: self.sim.seed ^ (at.timestamp() as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15),
             footprint: skylux_sim::sensor::Footprint::Integrated,
         };
-        let dir = self.spool.join(format!("capture-{}", self.attempts));
-        let result = skylux_sim::capture::simulate_capture(&dir, &self.camera, &field, &spec)
-            .map_err(|e| SourceError::Other(format!("simulator: {e}")))
-            .and_then(|config| {
-                let frames = config
-                    .exposure
-                    .iter()
-                    .map(|e| RawFrame::read(&dir.join(&e.file)))
-                    .collect::<Result<Vec<_>, _>>()
-                    .map_err(|e| SourceError::Other(format!("simulator: {e}")))?;
-                Ok((config, frames))
-            });
-        let _ = std::fs::remove_dir_all(&dir);
-        let (config, frames) = result?;
+        let (config, frames) = skylux_sim::capture::simulate_frames(&self.camera, &field, &spec);
         let mut frame_flags = vec![Vec::new(); frames.len()];
         if fault == Some(FaultKind::FlaggedFrame) {
             // The middle exposure's descriptor reports a capture FIFO overflow.
@@ -367,7 +350,6 @@ mod tests {
 
     #[test]
     fn sim_source_renders_and_injects() {
-        let dir = tempfile::tempdir().unwrap();
         let sim = SimConfig {
             skip: 32,
             faults: vec![
@@ -394,7 +376,6 @@ mod tests {
             sim,
             vec![10.0, 1000.0, 100_000.0],
             1.0,
-            dir.path(),
         );
         let t = DateTime::parse_from_rfc3339("2017-05-08T12:00:00+02:00").unwrap();
         let e = s.capture(t).unwrap_err();
@@ -405,9 +386,8 @@ mod tests {
         assert!(a.frame_flags.iter().all(Vec::is_empty));
         let b = s.capture(t).unwrap();
         assert_eq!(b.frame_flags[1], vec!["FIFO_OVERFLOW".to_string()]);
-        // Same time, same frames; the spool is left empty.
+        // Same time, same frames.
         assert_eq!(a.frames, b.frames);
-        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
         // Brighter at noon than in the dark.
         let night = DateTime::parse_from_rfc3339("2017-05-08T01:00:00+02:00").unwrap();
         let n = s.capture(night).unwrap();

@@ -553,3 +553,136 @@ fn sigkill_inside_every_write_loses_and_duplicates_nothing() {
         lost.len()
     );
 }
+
+/// A small tmpfs mounted for one test (root only), unmounted when dropped.
+struct SmallTmpfs(std::path::PathBuf);
+
+impl SmallTmpfs {
+    fn mount(dir: &Path, size: &str) -> Option<Self> {
+        std::fs::create_dir_all(dir).unwrap();
+        let ok = std::process::Command::new("mount")
+            .args(["-t", "tmpfs", "-o", &format!("size={size}"), "tmpfs"])
+            .arg(dir)
+            .stderr(std::process::Stdio::null())
+            .status()
+            .is_ok_and(|s| s.success());
+        ok.then(|| Self(dir.to_path_buf()))
+    }
+}
+
+impl Drop for SmallTmpfs {
+    fn drop(&mut self) {
+        let _ = std::process::Command::new("umount")
+            .args(["-l"])
+            .arg(&self.0)
+            .status();
+    }
+}
+
+/// Fills the file system of `dir` with `dir/filler`, then leaves `free_bytes` free.
+fn fill_leaving(dir: &Path, free_bytes: u64) -> std::path::PathBuf {
+    use std::io::Write;
+    let path = dir.join("filler");
+    let mut f = std::fs::File::create(&path).unwrap();
+    let block = vec![0u8; 64 * 1024];
+    loop {
+        match f.write(&block) {
+            Ok(0) => break,
+            Ok(_) => {}
+            Err(e) if e.raw_os_error() == Some(libc::ENOSPC) => break,
+            Err(e) => panic!("filling {}: {e}", path.display()),
+        }
+    }
+    let len = f.metadata().unwrap().len();
+    f.set_len(len.saturating_sub(free_bytes)).unwrap();
+    path
+}
+
+/// Kills the daemon if the test fails before it exits.
+struct KillOnDrop(std::process::Child);
+
+impl Drop for KillOnDrop {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+/// The disk really full: the output on a 1 MiB tmpfs filled to 48 KiB short of full, so
+/// the kernel itself answers ENOSPC inside the cycle's writes (no injected error). The
+/// daemon flags it (`disk_full` in the log and `/v1/health`), leaves nothing of the failed
+/// cycles, keeps retrying, and records its cycles once space comes back.
+#[test]
+fn a_real_full_disk_is_flagged_rolled_back_and_followed_by_good_cycles() {
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("out");
+    let log = tmp.path().join("stderr.log");
+    let Some(mount) = SmallTmpfs::mount(&out, "1m") else {
+        skylux_hps::prerequisite::available_or_skip(
+            false,
+            skylux_hps::prerequisite::REQUIRE_HOST,
+            "cannot mount a tmpfs here (needs root with CAP_SYS_ADMIN)",
+        );
+        return;
+    };
+    let cache = tmp.path().join("cache");
+    let cache_line = format!("cache_dir = \"{}\"", cache.display());
+    let config = config_with(
+        tmp.path(),
+        &[SMALL, ("# cache_dir = \"...\"", cache_line.as_str())],
+        "",
+    );
+    let filler = fill_leaving(&out, 48 * 1024);
+    let mut child = KillOnDrop(
+        SimRun::new(&config, &out)
+            .cycles(2)
+            .clock(T0, 3600)
+            .start(&log),
+    );
+    // The kernel's ENOSPC, flagged as a full disk, again and again while it lasts.
+    until(Duration::from_secs(60), &log, || {
+        let t = std::fs::read_to_string(&log).unwrap_or_default();
+        (t.matches("kind=\"disk_full\"").count() >= 3).then_some(())
+    });
+    let address = std::fs::read_to_string(out.join("api.address")).unwrap();
+    let (code, body) = http_get(address.trim(), "/v1/health");
+    assert_eq!(code, 200, "{body}");
+    let h: serde_json::Value = serde_json::from_str(&body).unwrap();
+    assert_eq!(h["status"], "degraded", "{h}");
+    assert_eq!(h["last_error"]["kind"], "disk_full", "{h}");
+    let message = h["last_error"]["message"].as_str().unwrap();
+    assert!(message.contains("No space left on device"), "{message}");
+    let text = std::fs::read_to_string(&log).unwrap();
+    assert!(
+        !text.contains("(injected)"),
+        "a fake error in a real-disk test"
+    );
+    // Nothing of the failed cycles: no record, no map, no capture.
+    assert!(complete_lines(&out.join("results.jsonl")).is_empty());
+    for folder in ["maps", "captures"] {
+        assert_eq!(
+            std::fs::read_dir(out.join(folder)).map_or(0, |d| d.count()),
+            0,
+            "{folder} after failed cycles"
+        );
+    }
+    // Space comes back: both cycles are recorded once, complete.
+    std::fs::remove_file(&filler).unwrap();
+    let status = wait(&mut child.0, Duration::from_secs(60));
+    assert_eq!(
+        status.code(),
+        Some(0),
+        "{}",
+        std::fs::read_to_string(&log).unwrap()
+    );
+    let lines = complete_lines(&out.join("results.jsonl"));
+    assert_eq!(lines.len(), 2);
+    let sensors = records(&out).unwrap()[0].illuminance.len();
+    let csv = std::fs::read_to_string(out.join("illuminance.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 2 * sensors, "{csv}");
+    let latest: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("latest.json")).unwrap()).unwrap();
+    let last: serde_json::Value = serde_json::from_str(&lines[1]).unwrap();
+    assert_eq!(latest["time"], last["time"]);
+    drop(mount);
+}

@@ -137,6 +137,11 @@ impl DaylightCoefficients {
     /// the field.
     pub fn read(path: &std::path::Path) -> Result<Self, String> {
         let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
+        Self::parse(path, &bytes)
+    }
+
+    /// Parses the bytes of a matrix file; `path` names it in errors.
+    pub fn parse(path: &std::path::Path, bytes: &[u8]) -> Result<Self, String> {
         let bad = |what: String| format!("{}: {what}", path.display());
         let end = bytes
             .windows(2)

@@ -10,10 +10,15 @@ mod bsdf;
 mod cal;
 mod campaign;
 mod checks;
+mod data_file;
 mod device;
+mod known_source;
+mod matrix;
 mod pictures;
+mod regions;
 mod scene;
 mod sensors;
+mod view;
 
 /// A harness: feeds one input to a reader; panics only on a bug.
 pub type Harness = fn(&[u8]);
@@ -28,6 +33,11 @@ pub const TARGETS: &[(&str, Harness)] = &[
     ("device_toml", device::device_toml),
     ("exr", pictures::exr),
     ("rgbe", pictures::rgbe),
+    ("dat", data_file::dat),
+    ("view", view::view),
+    ("dc_matrix", matrix::dc_matrix),
+    ("regions", regions::regions),
+    ("known_source", known_source::known_source),
 ];
 
 /// The harness named `name`, if this crate has one.

@@ -118,7 +118,7 @@ impl DataArray {
                 .ok_or_else(|| t.error(format!("more than {MAX_VALUES} values")))?;
             dimensions.push(dimension);
         }
-        let mut values = Vec::with_capacity(total);
+        let mut values = Vec::with_capacity(total.min(1 << 16)); // grows with what the file holds
         for k in 0..total {
             values.push(t.real(&format!("value {} of {total}", k + 1))?);
         }

@@ -190,9 +190,14 @@ impl View {
             line: None,
             message: e.to_string(),
         })?;
+        self.with_file_bytes(path, &bytes)
+    }
+
+    /// [`Self::with_file`] on a view file's bytes; `path` names it in errors.
+    pub fn with_file_bytes(self, path: &Path, bytes: &[u8]) -> Result<View, ViewError> {
         // A picture's header ends at its first blank line; a text file has none before EOF
         // or only trailing ones.
-        let text = String::from_utf8_lossy(&bytes);
+        let text = String::from_utf8_lossy(bytes);
         let mut view = self;
         let mut found = false;
         for (i, line) in text.lines().enumerate() {
