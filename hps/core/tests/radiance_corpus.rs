@@ -152,7 +152,8 @@ const CASES: &[Case] = &[
             "lamp",
             "picture",
         ],
-        expect: Expect::Stops("cornerdesk.norm", 203, &["genrev", "`-s`", ".cal"]),
+        // Past cornerdesk.norm:203 (`genrev -s`, read since the generators take .cal).
+        expect: Expect::Stops("openbook.norm", 10, &["`brighttext`", TYPE]),
     },
     Case {
         dir: "radiance-examples/obj/virtual",
@@ -163,17 +164,21 @@ const CASES: &[Case] = &[
     Case {
         dir: "radiance-examples/obj/virtual",
         files: &["plainoff.rad", "environ.rad", "furniture.rad"],
-        expect: Expect::Stops("plainoff.rad", 221, &["`!gensurf", "--allow-commands"]),
+        // Past plainoff.rad:221 (`!gensurf`, native since session 16).
+        expect: Expect::Stops("furniture.rad", 43, &["`colorpict`", TYPE]),
     },
     Case {
         dir: "radiance-examples/obj/misc",
         files: &["daf.rad"],
-        expect: Expect::Stops("daffodil", 103, &["`!genworm", "--allow-commands"]),
+        // `!genrev` with hermite and `!genworm` (native since session 16).
+        expect: Expect::Loads(58),
     },
     Case {
         dir: "radiance-examples/obj/cabin",
         files: &["lvfurn.rad"],
-        expect: Expect::Stops("coatrack.norm", 10, &["genrev", ".cal"]),
+        // Past coatrack.norm:10 (`genrev -e`); the snapshot has no file defining the
+        // chair's fabric, so RADIANCE stops here too.
+        expect: Expect::Stops("chair.norm", 8, &["modifier `brown_tweed` is not defined"]),
     },
     Case {
         dir: "radiance-examples/obj/cabin",
@@ -219,7 +224,10 @@ const CASES: &[Case] = &[
     Case {
         dir: RENDERS,
         files: &["basic.mat", "torus.rad"],
-        expect: Expect::Stops("torus.rad", 19, &["genrev", "`-s`", ".cal"]),
+        // `genrev -s` writes `texfunc Phong` of RADIANCE's rev.cal, which is in RADIANCE's
+        // library, not in the snapshot (with RAYPATH at that library the engine stops at
+        // torus.rad:14 instead: a texfunc above a mixfunc).
+        expect: Expect::Unreadable("rev.cal"),
     },
     Case {
         dir: RENDERS,
@@ -329,7 +337,7 @@ fn loading_scenes_expand_as_xform_e() {
         );
         compared += 1;
     }
-    assert_eq!(compared, 11);
+    assert_eq!(compared, 12);
 }
 
 /// The scene: the tutorial room from `room.rad` (its `!xform` lines) is the geometry

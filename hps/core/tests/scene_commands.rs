@@ -106,9 +106,89 @@ fn genrev_as_radiance() {
             "genrev m down '1-t' '0.3+t^2' 6",
             "genrev m h 't' 'hermite(0.2,0.4,1,-1,t)' 7",
             "genrev m mixed 'floor(t*2)/2' '0.5+0.5*t' 4",
+            "genrev m k 't' 'a+b*t' 5 -e 'a=0.2;b=0.3'",
+            "genrev m f 'zf(t)' 'rf(t)' '2+3' -f prof.cal",
+            "genrev m f2 'zf(t)' 'rf(t)' 6 -e 'k=2' -f prof.cal -s",
+            "genrev m s 't' '0.5+0.2*sin(PI*t)' 8 -s",
+            "genrev m sb '1-cos(PI/2*t)' 'sin(PI/2*t)' 5 -s",
+            "genrev m sd '0' '1-t' 3 -s",
+            "genrev m sr '1-t' '0.3+t^2' 2.7 -s",
         ],
         GEOMETRY,
-        |_| {},
+        |dir| {
+            std::fs::write(
+                dir.join("prof.cal"),
+                "{ a profile }\nk = 1;\nzf(t) = k*t;\nrf(t) = 0.4 + 0.1*cos(2*PI*t) + bezier(0,0.2,0.1,0,t);\n",
+            )
+            .unwrap()
+        },
+    );
+}
+
+#[test]
+fn genworm_as_radiance() {
+    compare_all(
+        &[
+            "genworm m w 't' '0' '0' '0.1' 2",
+            "genworm m w 't' '0' '0' '0.1+t' 1",
+            "genworm m helix 'cos(2*PI*t)' 'sin(2*PI*t)' 't' '0.05' 24",
+            "genworm m taper 'cos(2*PI*t)' 'sin(2*PI*t)' 't' '0.1-0.05*t' 12",
+            "genworm m blob 't' 't*t' '0' '0.2*(1+sin(6*t))' 9",
+            "genworm m d 't' '0' '0' '1-t' 2",
+            "genworm m h 'hermite(0,1,1,0,t)' 'bspline(0,1,0,1,t)' '0' '0.02' '3*2'",
+            "genworm m f 'xf(t)' 'yf(t)' 't/2' 'r0*(1+t)' 7 -e 'r0=0.03' -f worm.cal",
+        ],
+        GEOMETRY,
+        |dir| {
+            std::fs::write(
+                dir.join("worm.cal"),
+                "xf(t) = 2*t;\nyf(t) = sq(t) - t;\nsq(x) : x*x;\n",
+            )
+            .unwrap()
+        },
+    );
+}
+
+#[test]
+fn gensurf_as_radiance() {
+    compare_all(
+        &[
+            "gensurf m s 't' 's' '0' 2 2",
+            "gensurf m s 's' 't' 's*t' 3 4",
+            "gensurf m i 's' 't' 's*t' 3 4 -i",
+            "gensurf m sph 'sin(PI*s)*cos(2*PI*t)' 'sin(PI*s)*sin(2*PI*t)' 'cos(PI*s)' 6 8",
+            "gensurf m sph 'sin(PI*s)*cos(2*PI*t)' 'sin(PI*s)*sin(2*PI*t)' 'cos(PI*s)' 6 8 -s",
+            "gensurf m saddle '2*s-1' '2*t-1' '(2*s-1)^2-(2*t-1)^2' 5 5 -s",
+            "gensurf m saddle '2*s-1' '2*t-1' '(2*s-1)^2-(2*t-1)^2' 5 5 -s -i",
+            "gensurf m wave 's' 't' '0.1*sin(4*PI*s)' 7 3 -s",
+            "gensurf m v 's' 't' 's+t' 4 4 -e 'valid(s,t)=0.9-s*t'",
+            "gensurf m v 's' 't' 's*s+t' 4 4 -s -e 'valid(s,t)=1.2-s-t'",
+            "gensurf m f 'xs(s,t)' 'ys(s,t)' 'h*s*t' '1+1' 3 -e 'h=2' -f surf1.cal",
+            "gensurf m d 's' 't' height.dat 2 3",
+            "gensurf m d 's' 't' height.dat 2 3 -s",
+            "gensurf m c 's' 't' centres.dat 2 3",
+            "gensurf m p points.dat points.dat points.dat 1 2",
+        ],
+        GEOMETRY,
+        |dir| {
+            std::fs::write(
+                dir.join("surf1.cal"),
+                "xs(s,t) = s + 0.1*t;\nys(s,t) = t;\n",
+            )
+            .unwrap();
+            // 3 x 4 heights with the border, 2 x 3 without, 2 x 3 points of x y z.
+            std::fs::write(
+                dir.join("height.dat"),
+                "0 0.1 0.2\n0.3 0.5 0.4\n0.2 0.3 0.6\n0.1 0 0.2\n",
+            )
+            .unwrap();
+            std::fs::write(dir.join("centres.dat"), "0.1 0.2\n0.4 0.3\n0.5 0.1\n").unwrap();
+            std::fs::write(
+                dir.join("points.dat"),
+                "0 0 0  1 0 0.1\n0 1 0.2  1 1 0.3\n0 2 0  1 2.2 0.5\n",
+            )
+            .unwrap();
+        },
     );
 }
 

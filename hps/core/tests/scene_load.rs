@@ -614,13 +614,39 @@ fn commands_and_unsupported_types_are_errors_with_file_and_line() {
         &["`!xform -rz 90 box.rad`", "cannot read box.rad"],
     );
     assert_error(
-        &format!("{MAT}!genworm m w 0 0 t 0.1 8\n"),
+        &format!("{MAT}!genclock m w 0 0 t 0.1 8\n"),
         3,
         &[
-            "`!genworm m w 0 0 t 0.1 8`",
-            "`genworm` is not a command",
+            "`!genclock m w 0 0 t 0.1 8`",
+            "`genclock` is not a command",
             "--allow-commands",
         ],
+    );
+    // The generators that read .cal text: a missing file, a bad count, a syntax error.
+    assert_error(
+        &format!("{MAT}!gensurf m s s t 0 2 2 -f missing.cal\n"),
+        3,
+        &["`!gensurf", "cannot find file `missing.cal`"],
+    );
+    assert_error(
+        &format!("{MAT}!genworm m w t 0 0 0.1 0\n"),
+        3,
+        &["`!genworm", "nseg is `0`", "expected 1 to"],
+    );
+    assert_error(
+        &format!("{MAT}!gensurf m s s t 'a+' 2 2\n"),
+        3,
+        &["`!gensurf", "z(s,t) `a+`"],
+    );
+    assert_error(
+        &format!("{MAT}!gensurf m s s t 0 1000 1000\n"),
+        3,
+        &["`!gensurf", "1000 x 1000 cells: more than 250000"],
+    );
+    assert_error(
+        &format!("{MAT}!genrev m r t 'u(t)' 4\n"),
+        3,
+        &["`!genrev", "u: undefined function"],
     );
     assert_error(
         &format!("{MAT}m prism1 b 0 0 4 0 0 0 1\n"),

@@ -291,8 +291,9 @@ impl<'o> Expander<'o> {
                 at: at.clone(),
                 command,
                 reason: format!(
-                    "{reason}; Skylux runs xform, genbox, gensky, gendaylit, genblinds, genprism \
-                     and genrev itself, and runs other commands only with --allow-commands"
+                    "{reason}; Skylux runs xform, genbox, gensky, gendaylit, genblinds, genprism, \
+                     genrev, genworm and gensurf itself, and runs other commands only with \
+                     --allow-commands"
                 ),
             });
         }

@@ -4,13 +4,15 @@
 //! the program's, numbers exact). Bad options are an error saying which and why.
 
 mod args;
-mod calc;
+mod functions;
 mod genblinds;
 mod genbox;
 mod gendaylit;
 mod genprism;
 mod genrev;
 mod gensky;
+mod gensurf;
+mod genworm;
 mod text;
 
 use std::path::Path;
@@ -25,6 +27,8 @@ pub(crate) fn generator(program: &str) -> Option<Generator> {
         "genblinds" => genblinds::generate,
         "genprism" => genprism::generate,
         "genrev" => genrev::generate,
+        "gensurf" => gensurf::generate,
+        "genworm" => genworm::generate,
         "gensky" => gensky::generate,
         "gendaylit" => gendaylit::generate,
         _ => return None,
