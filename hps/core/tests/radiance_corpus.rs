@@ -158,14 +158,17 @@ const CASES: &[Case] = &[
     Case {
         dir: "radiance-examples/obj/virtual",
         files: &["environ.rad", "furniture.rad"],
-        // Past the metal2 of draft_ang.rad (read since the function materials).
-        expect: Expect::Stops("furniture.rad", 43, &["`colorpict`", TYPE]),
+        // Past the metal2 of draft_ang.rad (read since the function materials) and the
+        // colorpict of furniture.rad:43: a mixfunc of a pattern and `void` (a pattern
+        // mixture) under an alias.
+        expect: Expect::Stops("furniture.rad", 91, &["alias `cabpaper`", "mixfunc"]),
     },
     Case {
         dir: "radiance-examples/obj/virtual",
         files: &["plainoff.rad", "environ.rad", "furniture.rad"],
-        // Past plainoff.rad:221 (`!gensurf`, native since session 16).
-        expect: Expect::Stops("furniture.rad", 43, &["`colorpict`", TYPE]),
+        // Past plainoff.rad:221 (`!gensurf`, native since session 16) and furniture.rad:43
+        // (colorpict).
+        expect: Expect::Stops("furniture.rad", 91, &["alias `cabpaper`", "mixfunc"]),
     },
     Case {
         dir: "radiance-examples/obj/misc",
@@ -194,7 +197,8 @@ const CASES: &[Case] = &[
             "front_cap.rad",
             "vase.rad",
         ],
-        expect: Expect::Stops("vase.rad", 13, &["`colorpict`", TYPE]),
+        // Past the colorpict of vase.rad:13.
+        expect: Expect::Stops("vase.rad", 23, &["`mesh`", TYPE]),
     },
     Case {
         dir: RENDERS,

@@ -772,7 +772,7 @@ impl Tracer<'_, '_> {
             }
             let l = sample_cone(source, rng);
             let c = shading.source_coefficient(l, source.solid_angle_sr);
-            if c == DVec3::ZERO {
+            if c == DVec3::ZERO || !brighter_than_zero(c * source.radiance(l)) {
                 continue;
             }
             let t = self
@@ -864,4 +864,13 @@ impl Tracer<'_, '_> {
         }
         Next::Bounce(direction)
     }
+}
+
+/// RADIANCE's test before a source's shadow ray (direct.c): a contribution whose brightness
+/// (`bright`: 0.265 R + 0.670 G + 0.065 B) is not positive is dropped, so a pattern that
+/// goes negative (a data file extrapolated, a function) darkens to black under the sun
+/// rather than below it, as rtrace shows it; a contribution with some negative channels
+/// but a positive brightness is kept.
+fn brighter_than_zero(c: DVec3) -> bool {
+    0.265 * c.x + 0.670 * c.y + 0.065 * c.z > 0.0
 }

@@ -93,6 +93,8 @@ pub struct HdrPicture {
     /// Product of the `EXPOSURE=` lines (1 without any): the factor the stored values carry.
     pub exposure: f64,
     pub format: PixelFormat,
+    /// Product of the `PIXASPECT=` lines (1 without any): a pixel's height over its width.
+    pub pixel_aspect: f64,
     /// RGB (or XYZ) per pixel, rows from the top, exposure removed.
     pub pixels: Vec<[f32; 3]>,
 }
@@ -135,6 +137,7 @@ pub fn parse_hdr(path: &Path, bytes: &[u8]) -> Result<HdrPicture, PictureReadErr
         view: header.view,
         exposure: header.exposure,
         format: header.format,
+        pixel_aspect: header.pixel_aspect,
         pixels,
     })
 }
@@ -144,6 +147,7 @@ struct Header {
     view: Option<String>,
     exposure: f64,
     format: PixelFormat,
+    pixel_aspect: f64,
     /// Index of the first byte after the blank line.
     end: usize,
     /// Lines in the header, the blank one included.
@@ -158,6 +162,7 @@ fn parse_header(bytes: &[u8]) -> Result<Header, String> {
         view: None,
         exposure: 1.0,
         format: PixelFormat::Rgbe,
+        pixel_aspect: 1.0,
         end: 0,
         lines: 0,
     };
@@ -187,9 +192,24 @@ fn parse_header(bytes: &[u8]) -> Result<Header, String> {
     }
 }
 
-/// Applies one header line (`VIEW=`, `EXPOSURE=`, `FORMAT=`; others are kept by RADIANCE
-/// as comments and ignored here).
+/// Applies one header line (`VIEW=`, `EXPOSURE=`, `PIXASPECT=`, `FORMAT=`; others are kept
+/// by RADIANCE as comments and ignored here).
 fn header_line(header: &mut Header, line: &str) -> Result<(), String> {
+    if let Some(value) = line.strip_prefix("PIXASPECT=") {
+        match value.trim().parse::<f64>() {
+            Ok(a) if a.is_finite() && a > 0.0 => header.pixel_aspect *= a,
+            _ => {
+                return Err(format!(
+                    "PIXASPECT `{}` is not a positive number",
+                    value.trim()
+                ))
+            }
+        }
+        if !(header.pixel_aspect.is_finite() && header.pixel_aspect > 0.0) {
+            return Err("the PIXASPECT lines multiply to 0 or infinity".into());
+        }
+        return Ok(());
+    }
     if let Some(view) = line.strip_prefix("VIEW=") {
         let view = view.trim();
         header.view = Some(match header.view.take() {

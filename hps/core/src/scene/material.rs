@@ -9,7 +9,8 @@ use super::brdf_material::{anisotropic, brdf_func, Anisotropic, BrdfFunc, Normal
 use super::bsdf_modifier::{self, BsdfModifier};
 use super::error::{ArgumentList, SceneError};
 use super::function::{
-    brtd, data_pattern, data_pattern_after, function_args, BrtdFunc, DataPattern, FunctionArgs,
+    brtd, data_pattern, data_pattern_after, function_args, picture_pattern, BrtdFunc, DataPattern,
+    FunctionArgs,
 };
 use super::parse::{PrimitiveType, RawPrimitive};
 use glam::DVec3;
@@ -62,6 +63,9 @@ pub enum ModifierKind {
     Colorfunc(FunctionArgs),
     Brightdata(DataPattern),
     Colordata(DataPattern),
+    /// `colorpict`: a RADIANCE picture as colour data (its one file is the picture, its
+    /// coordinates y then x).
+    Colorpict(DataPattern),
     Texfunc(FunctionArgs),
     Mixfunc(Mixfunc),
     /// `texdata`: a texture from three data files (t_data.c).
@@ -98,6 +102,7 @@ impl ModifierKind {
             ModifierKind::Colorfunc(_) => "colorfunc",
             ModifierKind::Brightdata(_) => "brightdata",
             ModifierKind::Colordata(_) => "colordata",
+            ModifierKind::Colorpict(_) => "colorpict",
             ModifierKind::Texfunc(_) => "texfunc",
             ModifierKind::Mixfunc(_) => "mixfunc",
             ModifierKind::Texdata(_) => "texdata",
@@ -128,6 +133,7 @@ impl ModifierKind {
                 | ModifierKind::Colorfunc(_)
                 | ModifierKind::Brightdata(_)
                 | ModifierKind::Colordata(_)
+                | ModifierKind::Colorpict(_)
                 | ModifierKind::Texfunc(_)
                 | ModifierKind::Texdata(_)
         )
@@ -450,6 +456,7 @@ pub(crate) fn build(
         PrimitiveType::Colorfunc
         | PrimitiveType::Brightdata
         | PrimitiveType::Colordata
+        | PrimitiveType::Colorpict
         | PrimitiveType::Texfunc
         | PrimitiveType::Mixfunc
         | PrimitiveType::Texdata
@@ -646,6 +653,7 @@ fn function_modifier(
         }
         T::Brightdata => ModifierKind::Brightdata(data_pattern(raw, 1)?),
         T::Colordata => ModifierKind::Colordata(data_pattern(raw, 3)?),
+        T::Colorpict => ModifierKind::Colorpict(picture_pattern(raw)?),
         _ => {
             return Err(raw.invalid(
                 "type",

@@ -54,6 +54,7 @@ pub(crate) enum PrimitiveType {
     Colorfunc,
     Brightdata,
     Colordata,
+    Colorpict,
     Texfunc,
     Mixfunc,
     Texdata,
@@ -103,6 +104,7 @@ impl PrimitiveType {
             "colorfunc" => Self::Colorfunc,
             "brightdata" => Self::Brightdata,
             "colordata" => Self::Colordata,
+            "colorpict" => Self::Colorpict,
             "texfunc" => Self::Texfunc,
             "mixfunc" => Self::Mixfunc,
             "texdata" => Self::Texdata,
@@ -150,6 +152,7 @@ impl PrimitiveType {
             Self::Colorfunc => "colorfunc",
             Self::Brightdata => "brightdata",
             Self::Colordata => "colordata",
+            Self::Colorpict => "colorpict",
             Self::Texfunc => "texfunc",
             Self::Mixfunc => "mixfunc",
             Self::Texdata => "texdata",
@@ -222,6 +225,7 @@ impl PrimitiveType {
             | Self::Colorfunc
             | Self::Brightdata
             | Self::Colordata
+            | Self::Colorpict
             | Self::Texfunc
             | Self::Mixfunc
             | Self::Texdata
@@ -248,6 +252,7 @@ impl PrimitiveType {
             | Self::Colorfunc
             | Self::Brightdata
             | Self::Colordata
+            | Self::Colorpict
             | Self::Texfunc
             | Self::Mixfunc
             | Self::Texdata

@@ -212,6 +212,7 @@ pub(crate) fn build(raw: &RawPrimitive<'_>) -> Result<Shape, SceneError> {
         | PrimitiveType::Colorfunc
         | PrimitiveType::Brightdata
         | PrimitiveType::Colordata
+        | PrimitiveType::Colorpict
         | PrimitiveType::Texfunc
         | PrimitiveType::Mixfunc
         | PrimitiveType::Texdata

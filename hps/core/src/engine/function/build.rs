@@ -91,6 +91,7 @@ fn is_function(kind: &ModifierKind, emitter: bool) -> bool {
         ModifierKind::Colorfunc(_)
         | ModifierKind::Brightdata(_)
         | ModifierKind::Colordata(_)
+        | ModifierKind::Colorpict(_)
         | ModifierKind::Texfunc(_)
         | ModifierKind::Texdata(_)
         | ModifierKind::Mixfunc(_)
@@ -110,6 +111,7 @@ fn modulation(m: &Modifier, loader: &mut FunctionLoader) -> Result<Modulation, E
         ModifierKind::Brightdata(d) | ModifierKind::Colordata(d) => {
             Modulation::Data(data_lookup(m, d, loader)?)
         }
+        ModifierKind::Colorpict(d) => Modulation::Data(picture_lookup(m, d, loader)?),
         ModifierKind::Texdata(d) => Modulation::DataTexture(data_lookup(m, d, loader)?),
         other => {
             return Err(EngineError::Unsupported {
@@ -140,6 +142,25 @@ fn data_lookup(
         coordinates,
         functions: d.functions.clone(),
         arrays,
+    })
+}
+
+/// A `colorpict`: its two coordinates compiled, its picture read as three arrays, its
+/// functions checked to exist.
+fn picture_lookup(
+    m: &Modifier,
+    d: &DataPattern,
+    loader: &mut FunctionLoader,
+) -> Result<DataLookup, EngineError> {
+    let coordinates = loader.compile(m, &d.function, 2)?;
+    let arrays = loader.picture(m, &d.data_files[0], &d.function.scene_dir)?;
+    for name in &d.functions {
+        defined(m, &coordinates, name)?;
+    }
+    Ok(DataLookup {
+        coordinates,
+        functions: d.functions.clone(),
+        arrays: arrays.to_vec(),
     })
 }
 

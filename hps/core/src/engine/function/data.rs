@@ -125,6 +125,44 @@ impl DataArray {
         Ok(DataArray { dimensions, values })
     }
 
+    /// A picture as `colorpict` reads it (data.c `getpict`): two evenly spaced dimensions,
+    /// y then x, from 0 to the picture's size with its smaller side 1 (pixel aspect
+    /// included), one array per channel; `rows_from_top` are the stored channel values
+    /// (exposure not removed), `width` per row. The first pixel sits at coordinate 0 and the
+    /// last at the size, as RADIANCE places them.
+    pub fn from_picture(
+        rows_from_top: &[[f32; 3]],
+        width: usize,
+        height: usize,
+        pixel_aspect: f64,
+    ) -> Option<[DataArray; 3]> {
+        if width < 2 || height < 2 || rows_from_top.len() != width * height {
+            return None;
+        }
+        let (w, h) = (width as f64, height as f64);
+        let (y_size, x_size) = if w <= h * pixel_aspect {
+            (pixel_aspect * h / w, 1.0)
+        } else {
+            (1.0, w / h / pixel_aspect)
+        };
+        let dimension = |size: f64, count: usize| Dimension {
+            origin: 0.0,
+            size,
+            count,
+            points: None,
+        };
+        let channel = |c: usize| DataArray {
+            dimensions: vec![dimension(y_size, height), dimension(x_size, width)],
+            // Row 0 of the array is the bottom row of the picture.
+            values: (0..height)
+                .rev()
+                .flat_map(|row| rows_from_top[row * width..(row + 1) * width].iter())
+                .map(|p| f64::from(p[c]))
+                .collect(),
+        };
+        Some([channel(0), channel(1), channel(2)])
+    }
+
     pub fn dimension_count(&self) -> usize {
         self.dimensions.len()
     }
@@ -235,13 +273,18 @@ fn bisect(points: &[f64], size: f64, p: f64) -> usize {
     }
 }
 
+/// The two interpolation coefficients at grid position `x` above index `i`. Below the grid
+/// by more than one division the taper is 1 / (i - x) in all, weighted (2, -1) towards the
+/// edge, as rtrace 6.0a (the pyradiance wheel) computes it: a constant array of 1 reads
+/// 1/1.5 at x = i - 1.5 and 0.2 at x = i - 5 there (measured; data.c revision 2.41 as
+/// published reads the same magnitudes with the opposite sign, which rtrace does not).
 fn coefficients(i: usize, x: f64) -> (f64, f64) {
     let i = i as f64;
     if x > i + 2.0 {
         let c0 = 1.0 / (i - 1.0 - x);
         (c0, -2.0 * c0)
     } else if x < i - 1.0 {
-        let c1 = 1.0 / (i - x);
+        let c1 = 1.0 / (x - i);
         (-2.0 * c1, c1)
     } else if x.is_nan() {
         (0.0, 0.0)
@@ -262,8 +305,13 @@ mod tests {
         assert_eq!(d.value(&[1.5]), 3.5);
         // One division past the end: extrapolated along the last segment.
         assert!((d.value(&[3.0]) - 5.0).abs() < 1e-12);
-        // Beyond: tapers to zero.
+        // Beyond: tapers to zero, from above and from below with the sign of the data (a
+        // constant array reads 1 / (divisions beyond), as rtrace reads it).
         assert!(d.value(&[100.0]).abs() < 0.2);
+        let one = DataArray::parse("one.dat", "1\n0 1 2\n1 1\n").unwrap();
+        assert!((one.value(&[-1.5]) - 1.0 / 1.5).abs() < 1e-12);
+        assert!((one.value(&[-5.0]) - 0.2).abs() < 1e-12);
+        assert!((one.value(&[3.0]) - 0.25).abs() < 1e-12);
         let irregular = DataArray::parse("u.dat", "1\n0 0 3 0 1 4\n0 1 4\n").unwrap();
         assert!((irregular.value(&[2.5]) - 2.5).abs() < 1e-12);
         let two = DataArray::parse("v.dat", "2\n0 1 2\n0 1 2\n0 1\n2 3\n").unwrap();

@@ -27,6 +27,8 @@ pub struct FunctionLoader {
     programs: HashMap<Option<PathBuf>, Arc<CalProgram>>,
     /// Data files read, by resolved path.
     data: HashMap<PathBuf, Arc<DataArray>>,
+    /// Pictures read as three arrays (red, green, blue), by resolved path.
+    pictures: HashMap<PathBuf, [Arc<DataArray>; 3]>,
 }
 
 /// A modifier's expressions, compiled with its function file.
@@ -115,6 +117,60 @@ impl FunctionLoader {
         );
         self.data.insert(path, array.clone());
         Ok(array)
+    }
+
+    /// The picture `name` of a `colorpict` (found as a data file is) as three arrays, read
+    /// once per file: its stored values (the header's exposure not removed, as RADIANCE's
+    /// getpict reads them). An XYZE picture is refused, as RADIANCE refuses it.
+    pub fn picture(
+        &mut self,
+        modifier: &Modifier,
+        name: &str,
+        scene_dir: &Path,
+    ) -> Result<[Arc<DataArray>; 3], EngineError> {
+        let fail = |what: String| EngineError::Unsupported {
+            at: modifier.origin.clone(),
+            what: format!("{} `{}`: {what}", modifier.kind.type_name(), modifier.name),
+        };
+        let path = find(name, scene_dir).ok_or_else(|| {
+            fail(format!(
+                "picture file {name} not found on RAYPATH ({}) nor beside the scene file",
+                raypath().join(":")
+            ))
+        })?;
+        if let Some(p) = self.pictures.get(&path) {
+            return Ok(p.clone());
+        }
+        let picture = crate::picture::rgbe::read_hdr(&path).map_err(|e| fail(e.to_string()))?;
+        if picture.format != crate::picture::rgbe::PixelFormat::Rgbe {
+            return Err(fail(format!(
+                "picture file {}: XYZE pixels; RADIANCE reads only RGBE pictures here",
+                path.display()
+            )));
+        }
+        let exposure = picture.exposure as f32;
+        let stored: Vec<[f32; 3]> = picture
+            .pixels
+            .iter()
+            .map(|p| [p[0] * exposure, p[1] * exposure, p[2] * exposure])
+            .collect();
+        let arrays = DataArray::from_picture(
+            &stored,
+            picture.width_px as usize,
+            picture.height_px as usize,
+            picture.pixel_aspect,
+        )
+        .ok_or_else(|| {
+            fail(format!(
+                "picture file {}: {} x {} pixels; at least 2 x 2 needed",
+                path.display(),
+                picture.width_px,
+                picture.height_px
+            ))
+        })?
+        .map(Arc::new);
+        self.pictures.insert(path, arrays.clone());
+        Ok(arrays)
     }
 
     /// `rayinit.cal` (if RAYPATH has it) and the modifier's file, compiled once per file.

@@ -510,6 +510,7 @@ impl Material {
             | ModifierKind::Colorfunc(_)
             | ModifierKind::Brightdata(_)
             | ModifierKind::Colordata(_)
+            | ModifierKind::Colorpict(_)
             | ModifierKind::Texfunc(_)
             | ModifierKind::Texdata(_)
             | ModifierKind::Mixfunc(_)
