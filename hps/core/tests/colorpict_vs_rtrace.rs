@@ -167,3 +167,122 @@ fn colorpict_matches_rtrace_ray_by_ray() {
     );
     compare(dir.path(), &wide, "-rz 10 -s 1.5 -t 0.3 0.2 0", &bin, &lib);
 }
+
+/// `mixpict`: the floor a mixture of two plastics by a function of the picture's (r, g, b).
+/// rtrace weights both sides by the coefficient; we choose a side with its probability, so
+/// each ray's mean over [`MIX_ESTIMATES`] paths is compared within 4.5 standard errors (of
+/// that choice), and the mean over all rays of the standardised differences within 4/√n.
+#[test]
+fn mixpict_matches_rtrace() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    const MIX_ESTIMATES: usize = 256;
+    let flower = corpus().join("radiance-test-renders/test/renders/flower.hdr");
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("mix.cal"),
+        "mixc(r, g, b) = if(1 - 8 * (r + g + b), 8 * (r + g + b), 1);\nu = Px / 4;\nv = Py / 3;\n",
+    )
+    .unwrap();
+    let scene_path = dir.path().join("scene.rad");
+    std::fs::write(
+        &scene_path,
+        format!(
+            "void light sunlight 0 0 3 2e4 2e4 2e4\n\
+             sunlight source sun 0 0 4 0.1 0.2 1 0.5\n\
+             void plastic red_paint 0 0 5 0.8 0.2 0.2 0 0\n\
+             void plastic blue_paint 0 0 5 0.2 0.2 0.8 0 0\n\
+             void mixpict floor_mat 7 red_paint blue_paint mixc {} mix.cal u v\n0\n0\n\
+             floor_mat polygon floor 0 0 12 0 0 0 4 0 0 4 3 0 0 3 0\n",
+            flower.display()
+        ),
+    )
+    .unwrap();
+    let world = World::new(&scene::load_files(&[&scene_path]).unwrap()).unwrap();
+    let settings = Settings {
+        ambient_bounces: 0,
+        seed: 5,
+        ..Settings::default()
+    };
+    let rays: Vec<Ray> = rays().into_iter().step_by(7).collect();
+    let mut oconv = tool(&bin, &lib, "oconv");
+    oconv.current_dir(dir.path()).arg("scene.rad");
+    std::fs::write(dir.path().join("scene.oct"), check_output(oconv, None)).unwrap();
+    let input: String = rays
+        .iter()
+        .map(|r| {
+            format!(
+                "{} {} {} {} {} {}\n",
+                r.origin_m.x,
+                r.origin_m.y,
+                r.origin_m.z,
+                r.direction.x,
+                r.direction.y,
+                r.direction.z
+            )
+        })
+        .collect();
+    let mut rtrace = tool(&bin, &lib, "rtrace");
+    rtrace.current_dir(dir.path()).args([
+        "-h",
+        "-ab",
+        "0",
+        "-av",
+        "0",
+        "0",
+        "0",
+        "-dj",
+        "0",
+        "-ds",
+        "0",
+        "scene.oct",
+    ]);
+    let out = String::from_utf8(check_output(rtrace, Some(input.as_bytes()))).unwrap();
+    // Each side alone, for the spread of a single choice: red and blue plastics.
+    let side = |rho: DVec3| rho * 2e4 * 5.9808e-5 * (1.0 / 1.05f64.sqrt()) / std::f64::consts::PI;
+    let (fore, back) = (
+        side(DVec3::new(0.8, 0.2, 0.2)),
+        side(DVec3::new(0.2, 0.2, 0.8)),
+    );
+    let (mut z_sum, mut mixed) = (0.0, 0);
+    for (k, (ray, line)) in rays.iter().zip(out.lines()).enumerate() {
+        let v: Vec<f64> = line
+            .split_whitespace()
+            .map(|w| w.parse().unwrap())
+            .collect();
+        let want = DVec3::new(v[0], v[1], v[2]);
+        // rtrace's coefficient, from its red channel (the sides differ there).
+        let c = ((want.x - back.x) / (fore.x - back.x)).clamp(0.0, 1.0);
+        let got = (0..MIX_ESTIMATES)
+            .map(|e| {
+                let mut rng = Rng::for_stream(5, (k * MIX_ESTIMATES + e) as u64);
+                ray_radiance(&world, *ray, &settings, &mut rng)
+            })
+            .sum::<DVec3>()
+            / MIX_ESTIMATES as f64;
+        let se = (fore.x - back.x).abs() * (c * (1.0 - c) / MIX_ESTIMATES as f64).sqrt();
+        let allowed = 4.5 * se + 2e-3 * want.x;
+        assert!(
+            (got.x - want.x).abs() <= allowed && (got.y - want.y).abs() <= 1e-3 * want.y,
+            "ray {k}: ours {got:?}, rtrace {want:?} (coefficient {c:.3}, SE {se:.2e})"
+        );
+        if se > 0.0 {
+            z_sum += (got.x - want.x) / se;
+            mixed += 1;
+        }
+    }
+    let z_mean = z_sum / f64::from(mixed);
+    println!(
+        "mixpict: {} rays, {mixed} mixed, mean z {z_mean:+.2}",
+        rays.len()
+    );
+    assert!(
+        mixed >= 20,
+        "too few rays with a mixed coefficient: {mixed}"
+    );
+    assert!(
+        z_mean.abs() <= 4.0 / f64::from(mixed).sqrt(),
+        "mean z {z_mean}"
+    );
+}

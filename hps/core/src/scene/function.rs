@@ -166,24 +166,45 @@ pub struct DataPattern {
 /// Words that start a transform (`xf` options).
 const TRANSFORM_OPTIONS: [&str; 9] = ["-t", "-rx", "-ry", "-rz", "-s", "-mx", "-my", "-mz", "-i"];
 
-/// `colorpict`: `rfunc gfunc bfunc picture funcfile u v [transform]` (p_data.c
-/// `p_pdata`), kept as a data pattern of one file whose coordinates are v then u, the
-/// order in which RADIANCE indexes the picture (y major).
-pub(crate) fn picture_pattern(raw: &RawPrimitive<'_>) -> Result<DataPattern, SceneError> {
+/// `colorpict` (`rfunc gfunc bfunc picture funcfile u v [transform]`, `first` 0, 3
+/// `channels`) and `mixpict` (`foreground background func picture funcfile u v
+/// [transform]`, `first` 2, 1 channel), as p_data.c `p_pdata` and mx_data.c `mx_pdata` read
+/// them: kept as a data pattern of one file whose coordinates are v then u, the order in
+/// which RADIANCE indexes the picture (y major).
+pub(crate) fn picture_pattern(
+    raw: &RawPrimitive<'_>,
+    first: usize,
+    channels: usize,
+) -> Result<DataPattern, SceneError> {
+    let picture = first + channels;
+    let synopsis = if first > 0 {
+        "foreground background func picture funcfile u v [transform]"
+    } else {
+        "rfunc gfunc bfunc picture funcfile u v [transform]"
+    };
     raw.check_count(
         ArgumentList::String,
-        raw.strings.len() >= 7,
-        "at least 7 (rfunc gfunc bfunc picture funcfile u v [transform])".to_string(),
+        raw.strings.len() >= picture + 4,
+        format!("at least {} ({synopsis})", picture + 4),
     )?;
     raw.check_no_integers()?;
-    let words: Vec<String> = raw.strings[7..].iter().map(|s| s.to_string()).collect();
+    let words: Vec<String> = raw.strings[picture + 4..]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
     let scene_dir = raw.at.file.parent().map(PathBuf::from).unwrap_or_default();
     Ok(DataPattern {
-        functions: raw.strings[..3].iter().map(|s| s.to_string()).collect(),
-        data_files: vec![raw.strings[3].to_string()],
+        functions: raw.strings[first..picture]
+            .iter()
+            .map(|s| s.to_string())
+            .collect(),
+        data_files: vec![raw.strings[picture].to_string()],
         function: FunctionArgs {
-            expressions: vec![raw.strings[6].to_string(), raw.strings[5].to_string()],
-            cal_file: raw.strings[4].to_string(),
+            expressions: vec![
+                raw.strings[picture + 3].to_string(),
+                raw.strings[picture + 2].to_string(),
+            ],
+            cal_file: raw.strings[picture + 1].to_string(),
             scene_dir,
             transform: transform(raw, &words)?,
             real_args: raw.reals.clone(),

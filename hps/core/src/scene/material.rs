@@ -71,6 +71,8 @@ pub enum ModifierKind {
     /// `texdata`: a texture from three data files (t_data.c).
     Texdata(DataPattern),
     Mixdata(Mixdata),
+    /// `mixpict`: as `mixdata`, the coefficient a function of a picture's (r, g, b).
+    Mixpict(Mixdata),
     BrtdFunc(BrtdFunc),
     /// `plasfunc`, `metfunc`, `transfunc`, `plasdata`, `metdata`, `transdata`.
     BrdfFunc(BrdfFunc),
@@ -107,6 +109,7 @@ impl ModifierKind {
             ModifierKind::Mixfunc(_) => "mixfunc",
             ModifierKind::Texdata(_) => "texdata",
             ModifierKind::Mixdata(_) => "mixdata",
+            ModifierKind::Mixpict(_) => "mixpict",
             ModifierKind::BrtdFunc(_) => "BRTDfunc",
             ModifierKind::BrdfFunc(f) => match (f.fractions.family, f.data.is_some()) {
                 (NormalFamily::Plastic, false) => "plasfunc",
@@ -461,6 +464,7 @@ pub(crate) fn build(
         | PrimitiveType::Mixfunc
         | PrimitiveType::Texdata
         | PrimitiveType::Mixdata
+        | PrimitiveType::Mixpict
         | PrimitiveType::BrtdFunc => function_modifier(raw, resolve)?,
         PrimitiveType::Plasfunc
         | PrimitiveType::Metfunc
@@ -653,7 +657,16 @@ fn function_modifier(
         }
         T::Brightdata => ModifierKind::Brightdata(data_pattern(raw, 1)?),
         T::Colordata => ModifierKind::Colordata(data_pattern(raw, 3)?),
-        T::Colorpict => ModifierKind::Colorpict(picture_pattern(raw)?),
+        T::Colorpict => ModifierKind::Colorpict(picture_pattern(raw, 0, 3)?),
+        T::Mixpict => {
+            let data = picture_pattern(raw, 2, 1)?;
+            let (foreground, background) = mixture_sides(raw, resolve)?;
+            ModifierKind::Mixpict(Mixdata {
+                foreground,
+                background,
+                data,
+            })
+        }
         _ => {
             return Err(raw.invalid(
                 "type",

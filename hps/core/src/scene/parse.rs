@@ -59,6 +59,7 @@ pub(crate) enum PrimitiveType {
     Mixfunc,
     Texdata,
     Mixdata,
+    Mixpict,
     BrtdFunc,
     Plasfunc,
     Metfunc,
@@ -109,6 +110,7 @@ impl PrimitiveType {
             "mixfunc" => Self::Mixfunc,
             "texdata" => Self::Texdata,
             "mixdata" => Self::Mixdata,
+            "mixpict" => Self::Mixpict,
             "BRTDfunc" => Self::BrtdFunc,
             "plasfunc" => Self::Plasfunc,
             "metfunc" => Self::Metfunc,
@@ -157,6 +159,7 @@ impl PrimitiveType {
             Self::Mixfunc => "mixfunc",
             Self::Texdata => "texdata",
             Self::Mixdata => "mixdata",
+            Self::Mixpict => "mixpict",
             Self::BrtdFunc => "BRTDfunc",
             Self::Plasfunc => "plasfunc",
             Self::Metfunc => "metfunc",
@@ -230,6 +233,7 @@ impl PrimitiveType {
             | Self::Mixfunc
             | Self::Texdata
             | Self::Mixdata
+            | Self::Mixpict
             | Self::BrtdFunc
             | Self::Polygon
             | Self::Antimatter => &[],
@@ -256,7 +260,8 @@ impl PrimitiveType {
             | Self::Texfunc
             | Self::Mixfunc
             | Self::Texdata
-            | Self::Mixdata => {
+            | Self::Mixdata
+            | Self::Mixpict => {
                 format!("real argument {number} (A{number})")
             }
             Self::BrtdFunc => match index {

@@ -217,6 +217,7 @@ pub(crate) fn build(raw: &RawPrimitive<'_>) -> Result<Shape, SceneError> {
         | PrimitiveType::Mixfunc
         | PrimitiveType::Texdata
         | PrimitiveType::Mixdata
+        | PrimitiveType::Mixpict
         | PrimitiveType::BrtdFunc
         | PrimitiveType::Plasfunc
         | PrimitiveType::Metfunc

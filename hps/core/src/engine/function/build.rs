@@ -96,6 +96,7 @@ fn is_function(kind: &ModifierKind, emitter: bool) -> bool {
         | ModifierKind::Texdata(_)
         | ModifierKind::Mixfunc(_)
         | ModifierKind::Mixdata(_)
+        | ModifierKind::Mixpict(_)
         | ModifierKind::BrtdFunc(_)
         | ModifierKind::BrdfFunc(_)
         | ModifierKind::Anisotropic(_) => true,
@@ -182,6 +183,16 @@ fn base(
         }
         ModifierKind::Mixdata(mix) => {
             let coefficient = MixCoefficient::Data(data_lookup(m, &mix.data, loader)?);
+            mixture(
+                scene,
+                coefficient,
+                [mix.foreground, mix.background],
+                surface,
+                loader,
+            )?
+        }
+        ModifierKind::Mixpict(mix) => {
+            let coefficient = MixCoefficient::Data(picture_lookup(m, &mix.data, loader)?);
             mixture(
                 scene,
                 coefficient,

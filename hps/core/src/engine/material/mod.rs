@@ -515,6 +515,7 @@ impl Material {
             | ModifierKind::Texdata(_)
             | ModifierKind::Mixfunc(_)
             | ModifierKind::Mixdata(_)
+            | ModifierKind::Mixpict(_)
             | ModifierKind::BrtdFunc(_)
             | ModifierKind::BrdfFunc(_)
             | ModifierKind::Anisotropic(_) => {
