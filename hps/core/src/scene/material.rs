@@ -129,17 +129,36 @@ impl ModifierKind {
 
     /// Materials decide how a surface scatters or emits light; patterns (`brightfunc`,
     /// `colorfunc`) scale and textures (`texfunc`) tilt the material they modify.
+    /// A mixture is a material unless both its sides are patterns ([`Mixfunc::pattern`]).
     pub fn is_material(&self) -> bool {
-        !matches!(
-            self,
-            ModifierKind::Brightfunc(_)
-                | ModifierKind::Colorfunc(_)
-                | ModifierKind::Brightdata(_)
-                | ModifierKind::Colordata(_)
-                | ModifierKind::Colorpict(_)
-                | ModifierKind::Texfunc(_)
-                | ModifierKind::Texdata(_)
-        )
+        match self {
+            ModifierKind::Mixfunc(m) => !m.pattern,
+            ModifierKind::Mixdata(m) | ModifierKind::Mixpict(m) => !m.pattern,
+            _ => !matches!(
+                self,
+                ModifierKind::Brightfunc(_)
+                    | ModifierKind::Colorfunc(_)
+                    | ModifierKind::Brightdata(_)
+                    | ModifierKind::Colordata(_)
+                    | ModifierKind::Colorpict(_)
+                    | ModifierKind::Texfunc(_)
+                    | ModifierKind::Texdata(_)
+            ),
+        }
+    }
+
+    /// Marks a mixture whose two sides reach no material (`reaches_material` follows a
+    /// side's chain) as a pattern, as RADIANCE's `raymixture` treats it.
+    pub(crate) fn settle_mixture(&mut self, reaches_material: impl Fn(ModifierRef) -> bool) {
+        let sides_are_patterns =
+            |f: ModifierRef, b: ModifierRef| !reaches_material(f) && !reaches_material(b);
+        match self {
+            ModifierKind::Mixfunc(m) => m.pattern = sides_are_patterns(m.foreground, m.background),
+            ModifierKind::Mixdata(m) | ModifierKind::Mixpict(m) => {
+                m.pattern = sides_are_patterns(m.foreground, m.background)
+            }
+            _ => {}
+        }
     }
 }
 
@@ -244,6 +263,9 @@ pub struct Mixfunc {
     pub background: ModifierRef,
     /// One expression: the coefficient.
     pub function: FunctionArgs,
+    /// Both sides are patterns, textures or `void` (none reaches a material): the mixture
+    /// is a pattern that blends their colours and perturbations (raytrace.c `raymixture`).
+    pub pattern: bool,
 }
 
 /// `mixdata`: blends two modifiers by a coefficient interpolated in a data file and passed
@@ -254,6 +276,8 @@ pub struct Mixdata {
     pub background: ModifierRef,
     /// One function (of the interpolated value), one data file, the coordinates.
     pub data: DataPattern,
+    /// As [`Mixfunc::pattern`].
+    pub pattern: bool,
 }
 
 /// Refractive index RADIANCE's `dielectric` adds per unit of Hartmann constant: the constant
@@ -642,6 +666,7 @@ fn function_modifier(
                     expressions: vec![function.expressions[2].clone()],
                     ..function
                 },
+                pattern: false,
             })
         }
         T::BrtdFunc => ModifierKind::BrtdFunc(brtd(raw)?),
@@ -653,6 +678,7 @@ fn function_modifier(
                 foreground,
                 background,
                 data,
+                pattern: false,
             })
         }
         T::Brightdata => ModifierKind::Brightdata(data_pattern(raw, 1)?),
@@ -665,6 +691,7 @@ fn function_modifier(
                 foreground,
                 background,
                 data,
+                pattern: false,
             })
         }
         _ => {

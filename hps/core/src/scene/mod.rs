@@ -231,6 +231,24 @@ impl Scene {
         self.modifiers.get(id.index())
     }
 
+    /// Whether the chain from `start` down to `void` holds a material.
+    fn reaches_material(&self, start: ModifierRef) -> bool {
+        let mut next = start;
+        let mut steps = 0;
+        while let ModifierRef::Defined(id) = next {
+            let Some(m) = self.modifier(id) else { break };
+            if m.kind.is_material() {
+                return true;
+            }
+            next = m.modifier;
+            steps += 1;
+            if steps > self.modifiers.len() {
+                break; // a chain is acyclic by construction; a guard all the same
+            }
+        }
+        false
+    }
+
     /// The definition a primitive appended now would get for `name`.
     pub fn modifier_named(&self, name: &str) -> Option<ModifierRef> {
         if name == "void" {
@@ -294,12 +312,13 @@ impl Scene {
                 }
             })?;
             if raw.kind.is_modifier() {
-                let kind = material::build(
+                let mut kind = material::build(
                     &raw,
                     &|name| self.modifier_named(name),
                     &file,
                     options.working_directory.as_deref(),
                 )?;
+                kind.settle_mixture(|side| self.reaches_material(side));
                 if kind.is_material() {
                     self.check_no_material_below(&raw, modifier)?;
                 }

@@ -41,7 +41,7 @@ pub fn material_of(
     };
     let mut modulations = Vec::new();
     for m in chain.iter().filter(|m| !m.kind.is_material()) {
-        modulations.push(modulation(m, loader)?);
+        modulations.push(modulation(scene, m, loader)?);
     }
     let base = base(scene, material, surface, loader)?;
     let refuse = |why: &str| {
@@ -104,8 +104,30 @@ fn is_function(kind: &ModifierKind, emitter: bool) -> bool {
     }
 }
 
-fn modulation(m: &Modifier, loader: &mut FunctionLoader) -> Result<Modulation, EngineError> {
+fn modulation(
+    scene: &Scene,
+    m: &Modifier,
+    loader: &mut FunctionLoader,
+) -> Result<Modulation, EngineError> {
+    let sides = |f: ModifierRef, b: ModifierRef, loader: &mut FunctionLoader| {
+        Ok::<_, EngineError>(Box::new([
+            side_modulations(scene, f, loader)?,
+            side_modulations(scene, b, loader)?,
+        ]))
+    };
     Ok(match &m.kind {
+        ModifierKind::Mixfunc(mix) if mix.pattern => Modulation::Mixture {
+            coefficient: MixCoefficient::Function(loader.compile(m, &mix.function, 1)?),
+            sides: sides(mix.foreground, mix.background, loader)?,
+        },
+        ModifierKind::Mixdata(mix) if mix.pattern => Modulation::Mixture {
+            coefficient: MixCoefficient::Data(data_lookup(m, &mix.data, loader)?),
+            sides: sides(mix.foreground, mix.background, loader)?,
+        },
+        ModifierKind::Mixpict(mix) if mix.pattern => Modulation::Mixture {
+            coefficient: MixCoefficient::Data(picture_lookup(m, &mix.data, loader)?),
+            sides: sides(mix.foreground, mix.background, loader)?,
+        },
         ModifierKind::Brightfunc(b) => Modulation::Pattern(loader.compile(m, &b.function, 1)?),
         ModifierKind::Colorfunc(f) => Modulation::Pattern(loader.compile(m, f, 3)?),
         ModifierKind::Texfunc(f) => Modulation::Texture(loader.compile(m, f, 3)?),
@@ -121,6 +143,19 @@ fn modulation(m: &Modifier, loader: &mut FunctionLoader) -> Result<Modulation, E
             })
         }
     })
+}
+
+/// The patterns and textures of one side of a pattern mixture: its chain down to `void`
+/// (no material there: [`crate::scene::Mixfunc::pattern`]).
+fn side_modulations(
+    scene: &Scene,
+    side: ModifierRef,
+    loader: &mut FunctionLoader,
+) -> Result<Vec<Modulation>, EngineError> {
+    chain(scene, side)
+        .into_iter()
+        .map(|m| modulation(scene, m, loader))
+        .collect()
 }
 
 /// A data pattern, texture or mixture: its coordinates compiled, its arrays read, their

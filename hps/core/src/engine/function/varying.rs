@@ -26,6 +26,13 @@ pub enum Modulation {
     Data(DataLookup),
     /// `texdata`: three arrays and functions giving the perturbation.
     DataTexture(DataLookup),
+    /// A `mixfunc`, `mixdata` or `mixpict` of two patterns (or `void`): their colours and
+    /// perturbations blended by the coefficient, clamped to 0..1 (raytrace.c `raymixture`).
+    Mixture {
+        coefficient: MixCoefficient,
+        /// The foreground's and the background's patterns and textures.
+        sides: Box<[Vec<Modulation>; 2]>,
+    },
 }
 
 /// Data files interpolated at coordinates given by expressions, then passed through
@@ -204,35 +211,45 @@ impl VaryingMaterial {
     /// each in the function's frame, taken back to the scene's by the forward transform and
     /// divided by its scale).
     fn modulate(&self, hit: &HitPoint) -> Modulated {
-        let mut m = Modulated {
-            color_rgb: DVec3::ONE,
-            perturbation: DVec3::ZERO,
-        };
-        for modulation in &self.modulations {
-            match modulation {
-                Modulation::Pattern(f) => {
-                    let ray = function_ray(f, hit);
-                    m.color_rgb *= if f.args.expressions.len() == 1 {
-                        DVec3::splat(f.value(0, &ray))
-                    } else {
-                        DVec3::from_array(f.values::<3>(0, &ray))
-                    };
-                }
-                Modulation::Texture(f) => {
-                    let local = DVec3::from_array(f.values::<3>(0, &function_ray(f, hit)));
-                    m.perturbation += to_scene_perturbation(local, f);
-                }
-                Modulation::Data(d) => m.color_rgb *= d.colour(hit),
-                Modulation::DataTexture(d) => {
-                    if let [x, y, z] = d.evaluate(hit, true)[..] {
-                        m.perturbation +=
-                            to_scene_perturbation(DVec3::new(x, y, z), &d.coordinates);
-                    }
+        modulate(&self.modulations, hit)
+    }
+}
+
+/// The modulations applied in turn to a neutral colour (1) and perturbation (0).
+fn modulate(modulations: &[Modulation], hit: &HitPoint) -> Modulated {
+    let mut m = Modulated {
+        color_rgb: DVec3::ONE,
+        perturbation: DVec3::ZERO,
+    };
+    for modulation in modulations {
+        match modulation {
+            Modulation::Pattern(f) => {
+                let ray = function_ray(f, hit);
+                m.color_rgb *= if f.args.expressions.len() == 1 {
+                    DVec3::splat(f.value(0, &ray))
+                } else {
+                    DVec3::from_array(f.values::<3>(0, &ray))
+                };
+            }
+            Modulation::Texture(f) => {
+                let local = DVec3::from_array(f.values::<3>(0, &function_ray(f, hit)));
+                m.perturbation += to_scene_perturbation(local, f);
+            }
+            Modulation::Data(d) => m.color_rgb *= d.colour(hit),
+            Modulation::DataTexture(d) => {
+                if let [x, y, z] = d.evaluate(hit, true)[..] {
+                    m.perturbation += to_scene_perturbation(DVec3::new(x, y, z), &d.coordinates);
                 }
             }
+            Modulation::Mixture { coefficient, sides } => {
+                let c = coefficient.at(hit).clamp(0.0, 1.0);
+                let (f, b) = (modulate(&sides[0], hit), modulate(&sides[1], hit));
+                m.color_rgb *= c * f.color_rgb + (1.0 - c) * b.color_rgb;
+                m.perturbation += c * f.perturbation + (1.0 - c) * b.perturbation;
+            }
         }
-        m
     }
+    m
 }
 
 /// t_func.c, t_data.c: a perturbation in the function's frame taken to the scene's by the
