@@ -20,7 +20,6 @@ pub(crate) const OTHER_RADIANCE_TYPES: &[&str] = &[
     "mist",
     "ashik2",
     "WGMDfunc",
-    "colorpict",
     "colortext",
     "brighttext",
     "spectrum",
@@ -28,7 +27,6 @@ pub(crate) const OTHER_RADIANCE_TYPES: &[&str] = &[
     "specfunc",
     "specdata",
     "specpict",
-    "mixpict",
     "mixtext",
     "alias",
 ];
