@@ -54,15 +54,19 @@ pub fn material_of(
             ),
         })
     };
+    if matches!(base, VaryingBase::Plain(Material::Glass(_))) && tilts(&modulations) {
+        // glass.c bends the transmitted ray by the perturbation; ours goes straight.
+        return refuse("textures on glass are not traced yet (patterns are)");
+    }
     match &base {
-        VaryingBase::Plain(Material::Normal(_))
+        VaryingBase::Plain(Material::Normal(_) | Material::Glass(_))
         | VaryingBase::Brtd(_)
         | VaryingBase::Function(_)
         | VaryingBase::Anisotropic(_) => {}
         _ if modulations.is_empty() => {}
         VaryingBase::Mix { .. } => return refuse("patterns above a mixfunc are not traced yet"),
         VaryingBase::Plain(_) => {
-            return refuse("patterns are traced on plastic, metal, trans and BRTDfunc only")
+            return refuse("patterns are traced on plastic, metal, trans, glass and BRTDfunc only")
         }
     }
     Ok(Material::Varying(Arc::new(VaryingMaterial {
@@ -142,6 +146,15 @@ fn modulation(
                 what: format!("{} `{}` is not a pattern", other.type_name(), m.name),
             })
         }
+    })
+}
+
+/// Whether any of the modulations (or a side of a pattern mixture) is a texture.
+fn tilts(modulations: &[Modulation]) -> bool {
+    modulations.iter().any(|m| match m {
+        Modulation::Texture(_) | Modulation::DataTexture(_) => true,
+        Modulation::Mixture { sides, .. } => sides.iter().any(|s| tilts(s)),
+        Modulation::Pattern(_) | Modulation::Data(_) => false,
     })
 }
 

@@ -312,12 +312,16 @@ fn function_ray<'a>(f: &'a CompiledFunction, hit: &HitPoint) -> FunctionRay<'a> 
     }
 }
 
-/// A plain material with its colour scaled by a pattern.
+/// A plain material with its colour scaled by a pattern: a normal material's colour, a
+/// glass's transmitted part (glass.c: after the Fresnel terms; its reflection is not
+/// patterned).
 fn coloured(material: &Material, color_rgb: DVec3) -> Material {
     let mut m = material.clone();
     if color_rgb != DVec3::ONE {
-        if let Material::Normal(n) = &mut m {
-            n.color_rgb *= color_rgb;
+        match &mut m {
+            Material::Normal(n) => n.color_rgb *= color_rgb,
+            Material::Glass(g) => g.pattern_rgb *= color_rgb,
+            _ => {}
         }
     }
     m

@@ -12,6 +12,9 @@ pub struct GlassMaterial {
     /// glass.c's transmissivity tn per RGB channel (not the transmittance at normal incidence).
     pub transmissivity_rgb: DVec3,
     pub refractive_index: f64,
+    /// A pattern's colour (1 without one): glass.c multiplies the transmitted coefficient
+    /// by it, after the Fresnel terms, and leaves the reflection alone.
+    pub pattern_rgb: DVec3,
 }
 
 impl From<&Glass> for GlassMaterial {
@@ -19,6 +22,7 @@ impl From<&Glass> for GlassMaterial {
         Self {
             transmissivity_rgb: g.transmissivity_rgb,
             refractive_index: g.refractive_index,
+            pattern_rgb: DVec3::ONE,
         }
     }
 }
@@ -26,11 +30,12 @@ impl From<&Glass> for GlassMaterial {
 impl GlassMaterial {
     /// Transmitted and reflected fractions for unit direction `d` at a pane of normal `normal`.
     fn fractions(&self, d: DVec3, normal: DVec3) -> (DVec3, DVec3) {
-        glass_fractions(
+        let (t, r) = glass_fractions(
             self.transmissivity_rgb,
             self.refractive_index,
             d.dot(normal).abs(),
-        )
+        );
+        (t * self.pattern_rgb, r)
     }
 
     /// What a shadow ray keeps crossing the pane: its transmitted fraction (glass.c traces
