@@ -376,7 +376,7 @@ impl<'a> SkyNee<'a> {
                 continue;
             };
             let c = shading.source_coefficient(l, source.solid_angle_sr);
-            if c == DVec3::ZERO {
+            if c == DVec3::ZERO || !brighter_than_zero(c * source.radiance(l)) {
                 continue;
             }
             // x must see y directly.
@@ -734,7 +734,14 @@ impl Tracer<'_, '_> {
         self.sun(path, hit, p, shading, rng);
         path.radiance += path.throughput
             * mirrored_lights(self.world, p, path.from, rng, &mut |l, sr| {
-                shading.source_coefficient(l, sr)
+                let c = shading.source_coefficient(l, sr);
+                // As for the sun itself (the mirrored sun is white light scaled by the
+                // mirror's colour, so the coefficient's brightness decides).
+                if brighter_than_zero(c) {
+                    c
+                } else {
+                    DVec3::ZERO
+                }
             });
         let allow_diffuse = path.ambient_used < self.settings.ambient_bounces;
         let lobe = self.sky(path, p, shading, allow_diffuse, rng);
