@@ -109,7 +109,7 @@ pub(crate) fn build(
     }
     let xml_name = s[skip].to_string();
     let run = working_directory.map_or_else(|| PathBuf::from("."), Path::to_path_buf);
-    let searched = search_directories(&xml_name, &run, &raw.at.file, top_file);
+    let searched = super::files::search_directories(&xml_name, &run, &raw.at.file, top_file);
     let xml_path = searched
         .iter()
         .map(|dir| dir.join(&xml_name))
@@ -141,41 +141,4 @@ pub(crate) fn build(
         extra_reflectance_back_rgb: rgb(1),
         extra_transmittance_rgb: rgb(2),
     })
-}
-
-/// The directory a scene file's relative names are taken from.
-fn directory_of(file: &Path) -> PathBuf {
-    match file.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => PathBuf::from("."),
-    }
-}
-
-/// Where RADIANCE's `getpath` looks for `name`, in order: an absolute name as it is; a name
-/// starting with `.` in the working directory `run` only; any other name in each `RAYPATH`
-/// entry ("." by default, meaning `run`). Skylux then tries the naming file's directory and
-/// the top-level file's, as for every file a scene names.
-fn search_directories(name: &str, run: &Path, naming_file: &Path, top_file: &Path) -> Vec<PathBuf> {
-    if Path::new(name).is_absolute() {
-        return vec![PathBuf::new()];
-    }
-    let mut dirs = Vec::new();
-    if name.starts_with('.') {
-        dirs.push(run.to_path_buf());
-    } else {
-        let raypath = std::env::var_os("RAYPATH").unwrap_or_else(|| ".".into());
-        for dir in std::env::split_paths(&raypath) {
-            dirs.push(if dir == Path::new(".") || dir.as_os_str().is_empty() {
-                run.to_path_buf()
-            } else {
-                dir
-            });
-        }
-    }
-    for dir in [directory_of(naming_file), directory_of(top_file)] {
-        if !dirs.contains(&dir) {
-            dirs.push(dir);
-        }
-    }
-    dirs
 }

@@ -217,7 +217,7 @@ fn raypath() -> Vec<String> {
 /// `name` as RADIANCE's `getpath` finds it: as given if absolute, else in each RAYPATH
 /// folder in turn; then, beyond RADIANCE, beside the scene file (`scene_dir`), so a scene
 /// and its `.cal` files can be loaded from any working directory.
-pub(crate) fn find(name: &str, scene_dir: &Path) -> Option<PathBuf> {
+fn find(name: &str, scene_dir: &Path) -> Option<PathBuf> {
     let path = Path::new(name);
     if path.is_absolute() {
         return path.is_file().then(|| path.to_path_buf());

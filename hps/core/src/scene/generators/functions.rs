@@ -122,19 +122,22 @@ impl Functions {
     }
 }
 
-/// `name` as the command's working directory `dir` sees it, then as the engine finds a
-/// function file (RAYPATH, then beside the scene file: `engine::function::loader::find`).
+/// `name` as RADIANCE's generators find a `-f` file (getpath on RAYPATH, the command's
+/// directory `dir` standing for `.`), then in `dir` itself (`scene::files::search_directories`,
+/// the rule every file a scene names follows).
 fn find_file(name: &str, dir: &Path) -> Result<std::path::PathBuf, String> {
-    let direct = dir.join(name);
-    if direct.is_file() {
-        return Ok(direct);
-    }
-    crate::engine::function::loader::find(name, dir).ok_or_else(|| {
-        format!(
-            "cannot find file `{name}` (in {} or on RAYPATH)",
-            dir.display()
-        )
-    })
+    // A name inside `dir` stands for the naming and top-level files (their directory is dir).
+    let beside = dir.join("generator");
+    crate::scene::files::search_directories(name, dir, &beside, &beside)
+        .into_iter()
+        .map(|d| d.join(name))
+        .find(|p| p.is_file())
+        .ok_or_else(|| {
+            format!(
+                "cannot find file `{name}` (in {} or on RAYPATH)",
+                dir.display()
+            )
+        })
 }
 
 fn read_file(path: &Path) -> Result<String, String> {
