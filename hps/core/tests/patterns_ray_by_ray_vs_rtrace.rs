@@ -108,46 +108,7 @@ fn compare_scene_from(
             )
         })
         .collect();
-    let mut oconv = tool(bin, lib, "oconv");
-    oconv.current_dir(dir).arg("scene.rad");
-    std::fs::write(dir.join("scene.oct"), check_output(oconv, None)).unwrap();
-    let input: String = rays
-        .iter()
-        .map(|r| {
-            format!(
-                "{} {} {} {} {} {}\n",
-                r.origin_m.x,
-                r.origin_m.y,
-                r.origin_m.z,
-                r.direction.x,
-                r.direction.y,
-                r.direction.z
-            )
-        })
-        .collect();
-    let mut rtrace = tool(bin, lib, "rtrace");
-    rtrace.current_dir(dir).args([
-        "-h",
-        "-ab",
-        "0",
-        "-av",
-        "0",
-        "0",
-        "0",
-        "-dj",
-        "0",
-        "-ds",
-        "0",
-        "scene.oct",
-    ]);
-    let out = String::from_utf8(check_output(rtrace, Some(input.as_bytes()))).unwrap();
-    let theirs: Vec<DVec3> = out
-        .lines()
-        .map(|l| {
-            let v: Vec<f64> = l.split_whitespace().map(|w| w.parse().unwrap()).collect();
-            DVec3::new(v[0], v[1], v[2])
-        })
-        .collect();
+    let theirs = rtrace_along(dir, &rays, bin, lib);
     assert_eq!(theirs.len(), rays.len());
     let (mut worst, mut sum) = (0.0f64, DVec3::ZERO);
     for (k, (ray, want)) in rays.iter().zip(&theirs).enumerate() {
@@ -243,39 +204,7 @@ fn mixpict_matches_rtrace() {
         ..Settings::default()
     };
     let rays: Vec<Ray> = rays().into_iter().step_by(7).collect();
-    let mut oconv = tool(&bin, &lib, "oconv");
-    oconv.current_dir(dir.path()).arg("scene.rad");
-    std::fs::write(dir.path().join("scene.oct"), check_output(oconv, None)).unwrap();
-    let input: String = rays
-        .iter()
-        .map(|r| {
-            format!(
-                "{} {} {} {} {} {}\n",
-                r.origin_m.x,
-                r.origin_m.y,
-                r.origin_m.z,
-                r.direction.x,
-                r.direction.y,
-                r.direction.z
-            )
-        })
-        .collect();
-    let mut rtrace = tool(&bin, &lib, "rtrace");
-    rtrace.current_dir(dir.path()).args([
-        "-h",
-        "-ab",
-        "0",
-        "-av",
-        "0",
-        "0",
-        "0",
-        "-dj",
-        "0",
-        "-ds",
-        "0",
-        "scene.oct",
-    ]);
-    let out = String::from_utf8(check_output(rtrace, Some(input.as_bytes()))).unwrap();
+    let theirs = rtrace_along(dir.path(), &rays, &bin, &lib);
     // Each side alone, for the spread of a single choice: red and blue plastics.
     let side = |rho: DVec3| rho * 2e4 * 5.9808e-5 * (1.0 / 1.05f64.sqrt()) / std::f64::consts::PI;
     let (fore, back) = (
@@ -283,12 +212,8 @@ fn mixpict_matches_rtrace() {
         side(DVec3::new(0.2, 0.2, 0.8)),
     );
     let (mut z_sum, mut mixed) = (0.0, 0);
-    for (k, (ray, line)) in rays.iter().zip(out.lines()).enumerate() {
-        let v: Vec<f64> = line
-            .split_whitespace()
-            .map(|w| w.parse().unwrap())
-            .collect();
-        let want = DVec3::new(v[0], v[1], v[2]);
+    assert_eq!(theirs.len(), rays.len());
+    for (k, (ray, &want)) in rays.iter().zip(&theirs).enumerate() {
         // rtrace's coefficient, from its red channel (the sides differ there).
         let c = ((want.x - back.x) / (fore.x - back.x)).clamp(0.0, 1.0);
         let got = (0..MIX_ESTIMATES)
@@ -383,4 +308,46 @@ fn patterned_glass_matches_rtrace() {
          grey polygon floor 0 0 12 0 0 0 4 0 0 4 3 0 0 3 0\n";
     // Rays start between the pane and the floor.
     compare_scene_from(dir.path(), text, "patterned glass", 1.0, &bin, &lib);
+}
+
+/// rtrace's radiance along `rays` in `dir`'s `scene.rad`, at `-ab 0` and aimed at the
+/// sources' centres (`-dj 0 -ds 0`): no noise.
+fn rtrace_along(
+    dir: &std::path::Path,
+    rays: &[Ray],
+    bin: &std::path::Path,
+    lib: &Option<std::path::PathBuf>,
+) -> Vec<DVec3> {
+    let mut oconv = tool(bin, lib, "oconv");
+    oconv.current_dir(dir).arg("scene.rad");
+    std::fs::write(dir.join("scene.oct"), check_output(oconv, None)).unwrap();
+    let input: String = rays
+        .iter()
+        .map(|r| {
+            let (o, d) = (r.origin_m, r.direction);
+            format!("{} {} {} {} {} {}\n", o.x, o.y, o.z, d.x, d.y, d.z)
+        })
+        .collect();
+    let mut rtrace = tool(bin, lib, "rtrace");
+    rtrace.current_dir(dir).args([
+        "-h",
+        "-ab",
+        "0",
+        "-av",
+        "0",
+        "0",
+        "0",
+        "-dj",
+        "0",
+        "-ds",
+        "0",
+        "scene.oct",
+    ]);
+    let out = String::from_utf8(check_output(rtrace, Some(input.as_bytes()))).unwrap();
+    out.lines()
+        .map(|l| {
+            let v: Vec<f64> = l.split_whitespace().map(|w| w.parse().unwrap()).collect();
+            DVec3::new(v[0], v[1], v[2])
+        })
+        .collect()
 }

@@ -113,25 +113,23 @@ fn modulation(
     m: &Modifier,
     loader: &mut FunctionLoader,
 ) -> Result<Modulation, EngineError> {
-    let sides = |f: ModifierRef, b: ModifierRef, loader: &mut FunctionLoader| {
-        Ok::<_, EngineError>(Box::new([
-            side_modulations(scene, f, loader)?,
-            side_modulations(scene, b, loader)?,
-        ]))
-    };
     Ok(match &m.kind {
-        ModifierKind::Mixfunc(mix) if mix.pattern => Modulation::Mixture {
-            coefficient: MixCoefficient::Function(loader.compile(m, &mix.function, 1)?),
-            sides: sides(mix.foreground, mix.background, loader)?,
-        },
-        ModifierKind::Mixdata(mix) if mix.pattern => Modulation::Mixture {
-            coefficient: MixCoefficient::Data(data_lookup(m, &mix.data, loader)?),
-            sides: sides(mix.foreground, mix.background, loader)?,
-        },
-        ModifierKind::Mixpict(mix) if mix.pattern => Modulation::Mixture {
-            coefficient: MixCoefficient::Data(picture_lookup(m, &mix.data, loader)?),
-            sides: sides(mix.foreground, mix.background, loader)?,
-        },
+        // A mixture of two patterns (its sides reach no material) is itself a pattern.
+        kind if !kind.is_material()
+            && matches!(
+                kind,
+                ModifierKind::Mixfunc(_) | ModifierKind::Mixdata(_) | ModifierKind::Mixpict(_)
+            ) =>
+        {
+            let (coefficient, [f, b]) = mix_parts(m, loader)?.expect("a mixture has two sides");
+            Modulation::Mixture {
+                coefficient,
+                sides: Box::new([
+                    side_modulations(scene, f, loader)?,
+                    side_modulations(scene, b, loader)?,
+                ]),
+            }
+        }
         ModifierKind::Brightfunc(b) => Modulation::Pattern(loader.compile(m, &b.function, 1)?),
         ModifierKind::Colorfunc(f) => Modulation::Pattern(loader.compile(m, f, 3)?),
         ModifierKind::Texfunc(f) => Modulation::Texture(loader.compile(m, f, 3)?),
@@ -147,6 +145,29 @@ fn modulation(
             })
         }
     })
+}
+
+/// A mixture's coefficient and its two sides (foreground, background); `None` for any other
+/// modifier.
+fn mix_parts(
+    m: &Modifier,
+    loader: &mut FunctionLoader,
+) -> Result<Option<(MixCoefficient, [ModifierRef; 2])>, EngineError> {
+    Ok(Some(match &m.kind {
+        ModifierKind::Mixfunc(x) => (
+            MixCoefficient::Function(loader.compile(m, &x.function, 1)?),
+            [x.foreground, x.background],
+        ),
+        ModifierKind::Mixdata(x) => (
+            MixCoefficient::Data(data_lookup(m, &x.data, loader)?),
+            [x.foreground, x.background],
+        ),
+        ModifierKind::Mixpict(x) => (
+            MixCoefficient::Data(picture_lookup(m, &x.data, loader)?),
+            [x.foreground, x.background],
+        ),
+        _ => return Ok(None),
+    }))
 }
 
 /// Whether any of the modulations (or a side of a pattern mixture) is a texture.
@@ -229,35 +250,9 @@ fn base(
         ModifierKind::Anisotropic(a) => {
             VaryingBase::Anisotropic(Box::new(anisotropic(m, a, loader)?))
         }
-        ModifierKind::Mixdata(mix) => {
-            let coefficient = MixCoefficient::Data(data_lookup(m, &mix.data, loader)?);
-            mixture(
-                scene,
-                coefficient,
-                [mix.foreground, mix.background],
-                surface,
-                loader,
-            )?
-        }
-        ModifierKind::Mixpict(mix) => {
-            let coefficient = MixCoefficient::Data(picture_lookup(m, &mix.data, loader)?);
-            mixture(
-                scene,
-                coefficient,
-                [mix.foreground, mix.background],
-                surface,
-                loader,
-            )?
-        }
-        ModifierKind::Mixfunc(mix) => {
-            let coefficient = MixCoefficient::Function(loader.compile(m, &mix.function, 1)?);
-            mixture(
-                scene,
-                coefficient,
-                [mix.foreground, mix.background],
-                surface,
-                loader,
-            )?
+        ModifierKind::Mixdata(_) | ModifierKind::Mixpict(_) | ModifierKind::Mixfunc(_) => {
+            let (coefficient, sides) = mix_parts(m, loader)?.expect("a mixture has two sides");
+            mixture(scene, coefficient, sides, surface, loader)?
         }
         // Its patterns are the chain's modulations.
         _ => VaryingBase::Plain(Material::from_modifier(surface, Some(m), Vec::new())?),
