@@ -15,3 +15,21 @@ fn every_corpus_file_replays_without_panic() {
         println!("{target}: {count} files in {:.2?}", started.elapsed());
     }
 }
+
+/// The `exr` fuzzer's finding (2026-11-27): 1,455 bytes whose header declares a layer of
+/// billions of pixels made the exr crate try a 34 GB allocation and abort. Both readers now
+/// refuse it from the header, naming the file.
+#[test]
+fn an_exr_declaring_billions_of_pixels_is_refused_before_decoding() {
+    let bytes = include_bytes!(
+        "../../../fuzz/regressions/exr/crash-9fbb764f89c8ecd314f2e2ee8d9439db4a0ee745"
+    );
+    let path = Path::new("huge.exr");
+    let e = skylux_hps::picture::exr::parse_exr_luminance(path, bytes).unwrap_err();
+    assert!(e.to_string().contains("huge.exr"), "{e}");
+    let e = skylux_hps::hdr::parse_exr(path, bytes)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("huge.exr"), "{e}");
+    println!("{e}");
+}

@@ -95,12 +95,16 @@ pub fn parse_exr(
 
 fn decode_exr(
     path: &Path,
-    source: impl std::io::Read + std::io::Seek,
+    mut source: impl std::io::Read + std::io::Seek,
 ) -> std::result::Result<(LuminanceMap, DeviceConfig, Readout), MapFileError> {
     let exr_error = |e: exr::error::Error| MapFileError::Exr {
         path: path.into(),
         message: e.to_string(),
     };
+    crate::picture::exr::check_declared_size(&mut source).map_err(|message| MapFileError::Exr {
+        path: path.into(),
+        message,
+    })?;
     let invalid = |what: String| MapFileError::Invalid {
         path: path.into(),
         what,

@@ -71,13 +71,15 @@ pub fn parse_exr_luminance(
 
 fn decode_exr_luminance(
     path: &Path,
-    source: impl std::io::Read + std::io::Seek,
+    mut source: impl std::io::Read + std::io::Seek,
 ) -> Result<ExrLuminance, super::rgbe::PictureReadError> {
     use exr::prelude::*;
     let fail = |message: String| super::rgbe::PictureReadError {
         path: path.into(),
         message,
     };
+    check_declared_size(&mut source)
+        .map_err(|e| fail(format!("not a readable OpenEXR file: {e}")))?;
     let image = read()
         .no_deep_data()
         .largest_resolution_level()
@@ -117,4 +119,28 @@ fn decode_exr_luminance(
         view,
         luminance_cd_m2,
     })
+}
+
+/// Reads the headers of the OpenEXR data in `source`, refuses a layer larger than
+/// [`super::rgbe::MAX_READ_PIXELS`] before anything is decoded, and rewinds `source` for the
+/// decoder. The exr crate allocates what a header declares, so a few bytes could otherwise
+/// ask for gigabytes (the fuzzer's `exr` finding of 2026-11-27: 34 GB, an abort).
+pub fn check_declared_size(
+    source: &mut (impl std::io::Read + std::io::Seek),
+) -> Result<(), String> {
+    let meta =
+        exr::meta::MetaData::read_from_buffered(&mut *source, false).map_err(|e| e.to_string())?;
+    for header in meta.headers.iter() {
+        let (w, h) = (header.layer_size.width(), header.layer_size.height());
+        if (w as u64).saturating_mul(h as u64) > super::rgbe::MAX_READ_PIXELS {
+            return Err(format!(
+                "a layer of {w} × {h} pixels is more than this reader accepts ({} pixels)",
+                super::rgbe::MAX_READ_PIXELS
+            ));
+        }
+    }
+    source
+        .seek(std::io::SeekFrom::Start(0))
+        .map_err(|e| e.to_string())?;
+    Ok(())
 }
