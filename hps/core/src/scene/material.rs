@@ -147,6 +147,28 @@ impl ModifierKind {
         }
     }
 
+    /// Modifiers whose values are evaluated at each hit (`.cal` expressions, data files,
+    /// pictures): the engine builds them in `engine::function` (a `brightfunc` on a `light`
+    /// or `glow` aside, which is a sky function).
+    pub fn is_evaluated(&self) -> bool {
+        matches!(
+            self,
+            ModifierKind::Brightfunc(_)
+                | ModifierKind::Colorfunc(_)
+                | ModifierKind::Brightdata(_)
+                | ModifierKind::Colordata(_)
+                | ModifierKind::Colorpict(_)
+                | ModifierKind::Texfunc(_)
+                | ModifierKind::Texdata(_)
+                | ModifierKind::Mixfunc(_)
+                | ModifierKind::Mixdata(_)
+                | ModifierKind::Mixpict(_)
+                | ModifierKind::BrtdFunc(_)
+                | ModifierKind::BrdfFunc(_)
+                | ModifierKind::Anisotropic(_)
+        )
+    }
+
     /// Marks a mixture whose two sides reach no material (`reaches_material` follows a
     /// side's chain) as a pattern, as RADIANCE's `raymixture` treats it.
     pub(crate) fn settle_mixture(&mut self, reaches_material: impl Fn(ModifierRef) -> bool) {

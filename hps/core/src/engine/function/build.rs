@@ -92,19 +92,7 @@ fn chain(scene: &Scene, start: ModifierRef) -> Vec<&Modifier> {
 fn is_function(kind: &ModifierKind, emitter: bool) -> bool {
     match kind {
         ModifierKind::Brightfunc(_) => !emitter,
-        ModifierKind::Colorfunc(_)
-        | ModifierKind::Brightdata(_)
-        | ModifierKind::Colordata(_)
-        | ModifierKind::Colorpict(_)
-        | ModifierKind::Texfunc(_)
-        | ModifierKind::Texdata(_)
-        | ModifierKind::Mixfunc(_)
-        | ModifierKind::Mixdata(_)
-        | ModifierKind::Mixpict(_)
-        | ModifierKind::BrtdFunc(_)
-        | ModifierKind::BrdfFunc(_)
-        | ModifierKind::Anisotropic(_) => true,
-        _ => false,
+        other => other.is_evaluated(),
     }
 }
 
