@@ -1159,6 +1159,7 @@ impl TrueWorld {
                 col_start: 0,
                 row_start: 0,
                 skip: spec.skip,
+                bin: 1,
             },
             raw_width: self.raw_width,
             raw_height: self.raw_height,
@@ -1166,6 +1167,7 @@ impl TrueWorld {
             gain: 1.0,
             seed,
             footprint: crate::sensor::Footprint::Integrated,
+            small_sources: vec![],
         };
         let overhead_us = spec.effects.shutter_overhead_us;
         let Some(responses) = &self.responses else {

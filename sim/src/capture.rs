@@ -57,6 +57,8 @@ pub struct CaptureSpec {
     pub seed: u64,
     /// How each group integrates the scene (real pixels: `Footprint::Integrated`).
     pub footprint: crate::sensor::Footprint,
+    /// Sources that may be smaller than a group (the solar disk; `Footprint::AsRead`).
+    pub small_sources: Vec<crate::sensor::SmallSource>,
 }
 
 impl CaptureSpec {
@@ -71,6 +73,7 @@ impl CaptureSpec {
             raw_width: self.raw_width,
             raw_height: self.raw_height,
             footprint: self.footprint,
+            small_sources: self.small_sources.clone(),
         }
     }
 }
@@ -172,6 +175,7 @@ pub fn write_example_capture(
             col_start: 1200,
             row_start: 900,
             skip: 1,
+            bin: 1,
         },
         raw_width: 128,
         raw_height: 96,
@@ -179,6 +183,7 @@ pub fn write_example_capture(
         gain: 1.0,
         seed,
         footprint: crate::sensor::Footprint::Integrated,
+        small_sources: vec![],
     };
     simulate_capture(
         dir,

@@ -53,6 +53,7 @@ impl HdrCase {
             col_start: 0,
             row_start: 0,
             skip: 1,
+            bin: 1,
         };
         let start = Instant::now();
         let geometry = GroupGeometry::new(&camera, &readout, WIDTH_PX, HEIGHT_PX);
@@ -83,6 +84,7 @@ impl HdrCase {
             raw_width: WIDTH_PX,
             raw_height: HEIGHT_PX,
             footprint: Default::default(),
+            small_sources: vec![],
         };
         let frames = EXPOSURES_S
             .iter()

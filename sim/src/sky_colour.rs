@@ -254,10 +254,12 @@ mod tests {
                 col_start: 1200,
                 row_start: 900,
                 skip: 1,
+                bin: 1,
             },
             raw_width: 64,
             raw_height: 48,
             footprint: crate::sensor::Footprint::Centre,
+            small_sources: vec![],
         };
         let scene = renderer.scene(&|d: DVec3| 2000.0 + 1000.0 * d.z);
         let noise = Noise::Sensor { seed: 7 };

@@ -35,6 +35,7 @@ fn spec(exposures_us: Vec<f64>, seed: u64) -> CaptureSpec {
             col_start: 0,
             row_start: 0,
             skip: 4,
+            bin: 1,
         },
         raw_width: 648,
         raw_height: 486,
@@ -42,6 +43,7 @@ fn spec(exposures_us: Vec<f64>, seed: u64) -> CaptureSpec {
         gain: 1.0,
         seed,
         footprint: Footprint::Centre,
+        small_sources: vec![],
     }
 }
 

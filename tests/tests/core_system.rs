@@ -294,6 +294,7 @@ fn hdr_from_words_equals_hdr_from_samples(
         col_start: 1288,
         row_start: 968,
         skip: 1,
+        bin: 1,
     };
     let geometry = GroupGeometry::new(&camera, &readout, WIDTH as usize, HEIGHT as usize);
     let grouped: Vec<GroupedFrame> = captured

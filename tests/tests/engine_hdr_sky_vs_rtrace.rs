@@ -82,6 +82,7 @@ fn a_measured_sky_map_lights_the_room_as_in_rtrace() {
                 col_start: 0,
                 row_start: 0,
                 skip: 4,
+                bin: 1,
             },
             raw_width: 648,
             raw_height: 486,
@@ -89,6 +90,7 @@ fn a_measured_sky_map_lights_the_room_as_in_rtrace() {
             gain: 1.0,
             seed: 5,
             footprint: skylux_sim::sensor::Footprint::Integrated,
+            small_sources: vec![],
         },
     )
     .unwrap();

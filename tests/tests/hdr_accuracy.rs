@@ -46,6 +46,7 @@ fn setup() -> Setup {
         col_start: 1040,
         row_start: 780,
         skip: 1,
+        bin: 1,
     };
     let geometry = GroupGeometry::new(&camera, &readout, 512, 384);
     let v = DVec3::new(1.0, 0.4, 0.0).normalize();
@@ -113,6 +114,7 @@ fn noiseless_merge_is_exact_over_150_db() {
         raw_width: 512,
         raw_height: 384,
         footprint: Default::default(),
+        small_sources: vec![],
     };
     let frames: Vec<_> = EXPOSURES_S
         .iter()
@@ -168,6 +170,7 @@ fn noisy_merge_is_unbiased_and_at_the_noise_bound() {
         raw_width: 512,
         raw_height: 384,
         footprint: Default::default(),
+        small_sources: vec![],
     };
     let frames: Vec<_> = EXPOSURES_S
         .iter()

@@ -83,6 +83,7 @@ fn the_hdr_map_of_a_blue_sky_is_off_by_exactly_the_predicted_mismatch() {
         col_start: 1200,
         row_start: 900,
         skip: 1,
+        bin: 1,
     };
     let (w, h) = (64, 48);
     let geometry = GroupGeometry::new(&camera, &readout, w, h);
@@ -92,6 +93,7 @@ fn the_hdr_map_of_a_blue_sky_is_off_by_exactly_the_predicted_mismatch() {
         raw_width: w,
         raw_height: h,
         footprint: Default::default(),
+        small_sources: vec![],
     };
     // A uniform sky, bright enough for ~2000 DN: rounding is below 0.05 %.
     let field = |_: DVec3| 8.0e3;

@@ -60,6 +60,7 @@ fn imaged(
         col_start: even(p.x_px),
         row_start: even(p.y_px),
         skip: 1,
+        bin: 1,
     };
     let r = FrameRenderer {
         camera,
@@ -67,6 +68,7 @@ fn imaged(
         raw_width: 160,
         raw_height: 160,
         footprint: Footprint::Integrated,
+        small_sources: vec![],
     };
     let frames: Vec<_> = EXPOSURES_S
         .iter()

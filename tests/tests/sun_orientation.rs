@@ -65,6 +65,7 @@ fn a_day_of_sun_sightings_recovers_the_orientation() {
             col_start: even(p.x_px),
             row_start: even(p.y_px),
             skip: 1,
+            bin: 1,
         };
         let field = move |d: DVec3| {
             if d.normalize().dot(sun) >= 0.26645f64.to_radians().cos() {
@@ -79,6 +80,7 @@ fn a_day_of_sun_sightings_recovers_the_orientation() {
             raw_width: 192,
             raw_height: 192,
             footprint: Footprint::Integrated,
+            small_sources: vec![],
         };
         let frames: Vec<_> = EXPOSURES_S
             .iter()

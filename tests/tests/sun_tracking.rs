@@ -187,6 +187,7 @@ fn partly_covered_is_flagged_at_any_group_size() {
             col_start: even(p.x_px),
             row_start: even(p.y_px),
             skip,
+            bin: 1,
         };
         let r = FrameRenderer {
             camera: &camera,
@@ -194,6 +195,7 @@ fn partly_covered_is_flagged_at_any_group_size() {
             raw_width: size,
             raw_height: size,
             footprint: Footprint::Integrated,
+            small_sources: vec![],
         };
         let frames: Vec<_> = EXPOSURES_S
             .iter()

@@ -31,7 +31,7 @@ pub struct SunArgs {
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Groups at or above this luminance are sun candidates, cd/m2.
-    #[arg(long, default_value_t = 5e8)]
+    #[arg(long, default_value_t = skylux_hps::sun::SUNSHINE_THRESHOLD_CD_M2)]
     pub threshold_cd_m2: f64,
     /// Fit the camera's orientation to the sun sightings.
     #[arg(long)]

@@ -103,8 +103,10 @@ fn capture_toml_reads_the_spec_example() {
         Readout {
             col_start: 0,
             row_start: 0,
-            skip: 1
-        }
+            skip: 1,
+            bin: 1
+        },
+        "a file without readout.bin reads as bin = 1"
     );
     // The spec's skip mapping: raw column i -> col_start + (i / 2) * 2k + (i % 2).
     assert_eq!(Readout::active_coordinate(100, 3, 5), 100 + 2 * 6 + 1);

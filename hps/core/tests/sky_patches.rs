@@ -78,6 +78,7 @@ fn aggregation_measures_what_it_sees_and_fills_the_rest() {
         col_start: 0,
         row_start: 0,
         skip: 1,
+        bin: 1,
     };
     let geometry = GroupGeometry::new(&camera, &readout, 2592, 1944);
     let field = |d: DVec3| 1000.0 * (1.0 + 2.0 * d.z) / 3.0;

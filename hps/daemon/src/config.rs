@@ -299,12 +299,22 @@ impl Default for HardwareConfig {
 #[serde(deny_unknown_fields)]
 pub struct SimConfig {
     /// Readout skip of the simulated frames: 2592/skip x 1944/skip samples (1: full size).
+    /// The MT9P031 skips 1 to 8 (hardware-facts.md §1); up to 64 for small test worlds.
     #[serde(default = "default_skip")]
     pub skip: u32,
+    /// Binning, 1, 2 or 4 dividing `skip`; by default the largest that divides it, as the
+    /// Linux driver chooses (hardware-facts.md §1, "Binning rule"): a binned sample keeps
+    /// the light of the pixels it averages, a skipped one loses what falls between.
+    #[serde(default)]
+    pub bin: Option<u32>,
     #[serde(default)]
     pub sky: SimSky,
     #[serde(default = "one_u64")]
     pub seed: u64,
+    /// Paths per sensor of the world's own interior illuminance, traced each cycle beside
+    /// the measurement (`truth_illuminance` in the record); 0: none.
+    #[serde(default = "default_interior_truth_samples")]
+    pub interior_truth_samples: u32,
     /// Fault injection schedule (the `sim` source only).
     #[serde(default, rename = "fault")]
     pub faults: Vec<FaultRule>,
@@ -387,15 +397,21 @@ impl Default for FabricConfig {
 }
 
 fn default_skip() -> u32 {
-    8
+    4
+}
+
+fn default_interior_truth_samples() -> u32 {
+    1024
 }
 
 impl Default for SimConfig {
     fn default() -> Self {
         Self {
             skip: default_skip(),
+            bin: None,
             sky: SimSky::Clear,
             seed: 1,
+            interior_truth_samples: default_interior_truth_samples(),
             faults: Vec::new(),
             source: SimSourceKind::Sim,
         }
@@ -737,10 +753,30 @@ impl RetryConfig {
 
 impl SimConfig {
     fn check(&self) -> Result<(), FieldError> {
+        // The MT9P031 skips 1 to 8 (hardware-facts.md §1); larger factors make a smaller
+        // world for tests that do not look at the sun.
         if !(1..=64).contains(&self.skip) {
             return refuse("skip", format!("{} is outside 1..=64", self.skip));
         }
-        Ok(())
+        match self.readout().check_bin() {
+            Ok(()) => Ok(()),
+            Err(reason) => refuse("bin", reason),
+        }
+    }
+
+    /// The simulated frames' readout: the full array, `skip`, and `bin` or the largest
+    /// binning that divides `skip`.
+    pub fn readout(&self) -> skylux_hps::campaign::Readout {
+        let bin = self.bin.unwrap_or_else(|| {
+            [4, 2, 1]
+                .into_iter()
+                .find(|b| self.skip % b == 0)
+                .unwrap_or(1)
+        });
+        skylux_hps::campaign::Readout {
+            bin,
+            ..skylux_hps::campaign::Readout::skipping(0, 0, self.skip)
+        }
     }
 
     /// Injected faults only with the `sim` source.

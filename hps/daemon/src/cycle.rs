@@ -204,6 +204,10 @@ pub struct CycleRecord {
     /// beside the measured `outdoor_horizontal_lux` (absent on real hardware).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub truth_outdoor_horizontal_lux: Option<f64>,
+    /// In simulation, the simulated world's own illuminance per sensor (the room traced
+    /// directly under the world's sky and sun), beside the measured `illuminance`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub truth_illuminance: Option<Vec<SensorLux>>,
     /// Values outside physical bounds (`plausibility.rs`): empty when all are plausible.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub plausibility: Vec<String>,
@@ -240,6 +244,7 @@ impl CycleRecord {
             capture: None,
             durations_ms: Default::default(),
             truth_outdoor_horizontal_lux: None,
+            truth_illuminance: None,
             plausibility: vec![],
         }
     }
@@ -268,7 +273,7 @@ pub struct Pipeline {
     pub dc_path: PathBuf,
 }
 
-type GeometryKey = (u32, u32, u32, usize, usize);
+type GeometryKey = (skylux_hps::campaign::Readout, usize, usize);
 
 /// The engine settings of the room's daylight and sun coefficients.
 pub fn room_settings(config: &Config) -> Settings {
@@ -446,7 +451,7 @@ impl Pipeline {
         // HDR: as hdr::map_capture, with the geometry kept between cycles.
         let t = Instant::now();
         let r = set.config.readout;
-        let key = (r.col_start, r.row_start, r.skip, raw_width, raw_height);
+        let key = (r, raw_width, raw_height);
         if self.geometry.as_ref().map(|(k, _)| *k) != Some(key) {
             self.geometry = Some((
                 key,
@@ -539,14 +544,35 @@ impl Pipeline {
                 total_ms: capture_ms + ms(started),
             },
             truth_outdoor_horizontal_lux: set.truth_outdoor_horizontal_lux,
+            truth_illuminance: set.truth_interior_lux.as_ref().map(|truth| {
+                self.room
+                    .sensors
+                    .iter()
+                    .zip(truth)
+                    .map(|(s, &lux)| SensorLux {
+                        sensor: s.name.clone(),
+                        lux,
+                        stderr_lux: None,
+                    })
+                    .collect()
+            }),
             plausibility: vec![],
         };
         let day_of_year = set.time.ordinal() as u16;
-        record.plausibility =
-            crate::plausibility::check(&record, self.site.elevation_m, day_of_year)
-                .into_iter()
-                .map(str::to_string)
-                .collect();
+        let interior_bound = skylux_hps::model::plausibility::interior_bound_lux(
+            &self.room.dc,
+            &terms,
+            self.state.ground_reflectance,
+        );
+        record.plausibility = crate::plausibility::check(
+            &record,
+            self.site.elevation_m,
+            day_of_year,
+            Some(&interior_bound),
+        )
+        .into_iter()
+        .map(str::to_string)
+        .collect();
         Ok(CycleProducts {
             record,
             map,

@@ -751,17 +751,23 @@ fn make_source(
             .map_err(|e| SourceError::Other(e.to_string()))
     };
     Ok(match kind {
-        SourceKind::Sim => Box::new(SimSource::new(
-            device()?,
-            skylux_hps::sun::Site {
-                latitude_deg: config.site.latitude_deg,
-                longitude_deg: config.site.longitude_deg,
-                elevation_m: config.site.elevation_m,
-            },
-            config.sim.clone(),
-            config.camera.exposures_us.clone(),
-            config.camera.gain,
-        )),
+        SourceKind::Sim => Box::new(
+            SimSource::new(
+                device()?,
+                skylux_hps::sun::Site {
+                    latitude_deg: config.site.latitude_deg,
+                    longitude_deg: config.site.longitude_deg,
+                    elevation_m: config.site.elevation_m,
+                },
+                config.sim.clone(),
+                config.camera.exposures_us.clone(),
+                config.camera.gain,
+            )
+            .with_interior(
+                crate::interior_truth::InteriorTruth::for_config(config)
+                    .map_err(SourceError::Other)?,
+            ),
+        ),
         SourceKind::FabricSim => Box::new(crate::fabric_source::sim_fabric_source(
             config,
             &device()?,

@@ -345,6 +345,7 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
             frames,
             frame_flags,
             truth_outdoor_horizontal_lux: None,
+            truth_interior_lux: None,
         })
     }
 
@@ -509,6 +510,7 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                     .row_start
                     .saturating_sub(self.settings.active_origin.1),
                 skip: self.settings.sensor.skip,
+                bin: self.settings.sensor.bin,
             },
             exposure: self
                 .plan
@@ -709,6 +711,7 @@ pub struct SimFabricSource {
     scene: Arc<std::sync::Mutex<skylux_sim::mt9p031::SceneSource>>,
     site: skylux_hps::sun::Site,
     sky: crate::config::SimSky,
+    interior: Option<crate::interior_truth::InteriorTruth>,
 }
 
 /// Builds [`SimFabricSource`] from the configuration.
@@ -757,6 +760,8 @@ pub fn sim_fabric_source(
             elevation_m: config.site.elevation_m,
         },
         sky: config.sim.sky,
+        interior: crate::interior_truth::InteriorTruth::for_config(config)
+            .map_err(SourceError::Other)?,
     })
 }
 
@@ -777,6 +782,12 @@ impl CaptureSource for SimFabricSource {
             crate::source::sim_outdoor_horizontal_lux(&self.site, self.sky, at)
                 .map_err(SourceError::Other)?,
         );
+        if let Some(room) = &mut self.interior {
+            set.truth_interior_lux = Some(
+                room.illuminance_lux(&self.site, self.sky, at)
+                    .map_err(SourceError::Other)?,
+            );
+        }
         Ok(set)
     }
 }

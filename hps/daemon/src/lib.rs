@@ -29,6 +29,7 @@ pub mod drivers;
 pub mod fabric_source;
 pub mod fuzzing;
 pub mod hardware;
+pub mod interior_truth;
 pub mod notify;
 pub mod output;
 pub mod plausibility;

@@ -604,6 +604,7 @@ fn capture_readout(
             col_start: 0,
             row_start: 0,
             skip: 1,
+            bin: 1,
         })
 }
 

@@ -12,8 +12,19 @@ pub const INTERIOR_INVALID: &str = "interior_not_finite_or_negative";
 pub const INTERIOR_ABOVE_BOUND: &str = "interior_above_outdoor_bound";
 pub const OUTDOOR_INVALID: &str = "outdoor_not_finite_or_negative";
 
-/// The flags of one record, for a site at `elevation_m` on day `day_of_year`.
-pub fn check(record: &CycleRecord, elevation_m: f64, day_of_year: u16) -> Vec<&'static str> {
+/// How far above its daylight-factor bound an interior value may read before it is flagged:
+/// the Monte-Carlo values carry noise (a few standard errors of a few %).
+pub const INTERIOR_BOUND_MARGIN: f64 = 1.1;
+
+/// The flags of one record, for a site at `elevation_m` on day `day_of_year`; with the
+/// room's bound per sensor (`skylux_hps::model::plausibility::interior_bound_lux`, in the
+/// order of `record.illuminance`), each interior value is also held against it.
+pub fn check(
+    record: &CycleRecord,
+    elevation_m: f64,
+    day_of_year: u16,
+    interior_bound_lux: Option<&[f64]>,
+) -> Vec<&'static str> {
     let mut flags = vec![];
     let altitude_deg = record.sun.spa_altitude_deg;
     let outdoor = record.outdoor_horizontal_lux;
@@ -41,6 +52,16 @@ pub fn check(record: &CycleRecord, elevation_m: f64, day_of_year: u16) -> Vec<&'
     for s in interior {
         invalid |= !(s.lux.is_finite() && s.lux >= 0.0);
         above |= s.lux > interior_bound;
+    }
+    // Each sensor against the most its room lets in under this outdoor light (sensor `k` of
+    // `illuminance` and of `monte_carlo` alike).
+    if let Some(bounds) = interior_bound_lux {
+        let per_sensor = std::iter::once(&record.illuminance).chain(record.monte_carlo.iter());
+        for values in per_sensor {
+            for (s, bound) in values.iter().zip(bounds) {
+                above |= s.lux > INTERIOR_BOUND_MARGIN * bound + 1.0;
+            }
+        }
     }
     if invalid {
         flags.push(INTERIOR_INVALID);

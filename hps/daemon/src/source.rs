@@ -8,10 +8,11 @@
 //! whole core of issue 10) implements the same trait over `skylux_hps::fpga`.
 
 use crate::config::{FaultKind, FaultRule, SimConfig, SimSky};
+use crate::interior_truth::InteriorTruth;
 use chrono::{DateTime, Datelike, FixedOffset, Utc};
 use glam::DVec3;
 use skylux_hps::camera::{CameraModel, DeviceConfig};
-use skylux_hps::campaign::{CaptureConfig, RawFrame, Readout};
+use skylux_hps::campaign::{CaptureConfig, RawFrame};
 use skylux_hps::hdr::Exposure;
 use skylux_hps::sky::perez::{PerezConditions, PerezInput, PerezSky};
 use skylux_hps::sun::{solar_position, Site};
@@ -31,6 +32,9 @@ pub struct CaptureSet {
     /// In simulation, the world's own outdoor global horizontal illuminance, lux (what the
     /// measurement is checked against); `None` from real hardware.
     pub truth_outdoor_horizontal_lux: Option<f64>,
+    /// In simulation, the world's own illuminance per room sensor, lux
+    /// (`interior_truth::InteriorTruth`); `None` from real hardware or when not traced.
+    pub truth_interior_lux: Option<Vec<f64>>,
 }
 
 impl CaptureSet {
@@ -97,10 +101,11 @@ pub struct SimSource {
     exposures_us: Vec<f64>,
     gain: f64,
     attempts: u64,
+    interior: Option<InteriorTruth>,
 }
 
 /// Ground reflectance of the simulated world (and the model's default: `ModelState`).
-const GROUND_REFLECTANCE: f64 = 0.2;
+pub(crate) const GROUND_REFLECTANCE: f64 = 0.2;
 /// Below this solar altitude the simulated sky is dark (the campaign simulator takes no
 /// capture below 3°, sim/src/campaign.rs).
 const MIN_SUN_ALTITUDE_DEG: f64 = 3.0;
@@ -122,7 +127,15 @@ impl SimSource {
             exposures_us,
             gain,
             attempts: 0,
+            interior: None,
         }
+    }
+
+    /// Also traces the room under the world each capture (`CaptureSet::truth_interior_lux`),
+    /// when `interior` is given.
+    pub fn with_interior(mut self, interior: Option<InteriorTruth>) -> Self {
+        self.interior = interior;
+        self
     }
 
     /// The fault scheduled for the attempt about to be made (1-based), if any.
@@ -144,9 +157,27 @@ impl SimSource {
     }
 }
 
+/// The world's solar disk, when it shows one: a source smaller than the groups of a coarse
+/// readout, which the renderer must not let fall between their centres.
+fn sim_small_sources(
+    site: &Site,
+    sky_kind: SimSky,
+    at: DateTime<FixedOffset>,
+) -> Result<Vec<skylux_sim::sensor::SmallSource>, String> {
+    let (sky, direction) = sim_sky(site, sky_kind, at)?;
+    Ok(match sky {
+        Some((perez, true)) => vec![skylux_sim::sensor::SmallSource {
+            direction,
+            // Ω = 2π (1 − cos r).
+            radius_rad: (1.0 - perez.sun_solid_angle_sr() / std::f64::consts::TAU).acos(),
+        }],
+        _ => vec![],
+    })
+}
+
 /// The simulated world's sky at `at`: the Perez sky and whether it has a sun (None with the
 /// sun under [`MIN_SUN_ALTITUDE_DEG`]), and the sun's direction.
-fn sim_sky(
+pub(crate) fn sim_sky(
     site: &Site,
     sky_kind: SimSky,
     at: DateTime<FixedOffset>,
@@ -283,18 +314,17 @@ impl CaptureSource for SimSource {
         let skip = self.sim.skip;
         let spec = skylux_sim::capture::CaptureSpec {
             time: at.to_rfc3339(),
-            readout: Readout {
-                col_start: 0,
-                row_start: 0,
-                skip,
-            },
+            readout: self.sim.readout(),
             raw_width: (2592 / skip as usize) & !1,
             raw_height: (1944 / skip as usize) & !1,
             exposures_us: self.exposures_us.clone(),
             gain: self.gain,
             // The same time gives the same frames.
             seed: self.sim.seed ^ (at.timestamp() as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15),
-            footprint: skylux_sim::sensor::Footprint::Integrated,
+            // The pixels the readout reads: binning keeps their light, skipping loses the rest.
+            footprint: skylux_sim::sensor::Footprint::AsRead,
+            small_sources: sim_small_sources(&self.site, self.sim.sky, at)
+                .map_err(SourceError::Other)?,
         };
         let (config, frames) = skylux_sim::capture::simulate_frames(&self.camera, &field, &spec);
         let mut frame_flags = vec![Vec::new(); frames.len()];
@@ -312,6 +342,13 @@ impl CaptureSource for SimSource {
                 sim_outdoor_horizontal_lux(&self.site, self.sim.sky, at)
                     .map_err(SourceError::Other)?,
             ),
+            truth_interior_lux: match &mut self.interior {
+                Some(room) => Some(
+                    room.illuminance_lux(&self.site, self.sim.sky, at)
+                        .map_err(SourceError::Other)?,
+                ),
+                None => None,
+            },
         })
     }
 }

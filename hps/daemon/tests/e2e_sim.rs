@@ -91,7 +91,7 @@ fn three_cycles_serve_http_and_match_the_offline_pipeline() {
     assert_eq!(csv.lines().count(), 1 + 3 * 5);
 
     // The offline pipeline on the captures the daemon kept.
-    let compared = compare_with_offline(tmp.path(), &out, &records, 2048);
+    let compared = compare_with_offline(tmp.path(), &out, &records, 262_144);
     assert_eq!(compared, 15);
 }
 
@@ -131,7 +131,7 @@ fn compare_with_offline(
     let scene = skylux_hps::scene::load(room_dir.join("scene.rad")).unwrap();
     let world = World::new(&scene).unwrap();
     let sensors = skylux_hps::scene::load_sensors(room_dir.join("sensors.pts")).unwrap();
-    // hps/skyluxd.toml: mf = 1, ambient_bounces = 12 (converged), seed = 1.
+    // hps/skyluxd.toml: mf = 1, dc_samples = 262144, ambient_bounces = 12 (converged), seed = 1.
     let settings = Settings {
         ambient_bounces: skylux_hps::engine::integrator::CONVERGED_AMBIENT_BOUNCES,
         samples_per_sensor: dc_samples,
@@ -199,10 +199,7 @@ fn quarter_resolution_extracts_the_sun_matches_offline_and_monte_carlo() {
     let log = tmp.path().join("stderr.log");
     let config = config_with(
         tmp.path(),
-        &[
-            ("skip = 16 ", "skip = 4 "),
-            ("monte_carlo = false", "monte_carlo = true"),
-        ],
+        &[("monte_carlo = false", "monte_carlo = true")],
         "",
     );
     let mut child = SimRun::new(&config, &out)
@@ -229,7 +226,7 @@ fn quarter_resolution_extracts_the_sun_matches_offline_and_monte_carlo() {
     let d_az = r["sun"]["extracted_azimuth_deg"].as_f64().unwrap()
         - r["sun"]["spa_azimuth_deg"].as_f64().unwrap();
     assert!(d_alt.abs() < 0.5 && d_az.abs() < 0.5, "{d_alt} {d_az}");
-    assert_eq!(compare_with_offline(tmp.path(), &out, &records, 2048), 5);
+    assert_eq!(compare_with_offline(tmp.path(), &out, &records, 262_144), 5);
     // Monte-Carlo under the measured sky agrees with the daylight coefficients within its
     // noise and the patch discretisation (4 standard errors + 5 %).
     for (dc, mc) in r["illuminance"]

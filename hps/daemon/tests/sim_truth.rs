@@ -1,42 +1,42 @@
-//! Issue 24: the daemon's outdoor numbers against the simulated world's own truth (not against
-//! the offline pipeline, which shares its functions). A clear May day in Lausanne, hourly, with
-//! the example configuration (its simulated readout integrates 32 x 32-pixel footprints: groups
-//! some ten times the solar disk's solid angle). Before this test's fix the disk was diluted
-//! under the luminance threshold, never extracted, and the patch aggregation spread it over
-//! whole patches: 200-450 klx at noon. Now every sun-lit cycle is checked against the world:
-//! - no record is above the clear-sky bound (no plausibility flag);
-//! - where the sun is extracted, the outdoor horizontal illuminance is within
-//!   [`OUTDOOR_TOLERANCE`] of the world's;
-//! - every cycle without a sun says why (a reason flag and its words);
-//! - the sun is extracted in every cycle with the sun more than 30° from the edge of the view.
+//! Issue 24: the daemon's numbers against the simulated world's own truth, not against the
+//! offline pipeline (which shares its functions). The example configuration (a whole-sky
+//! camera on the roof, read out binned 4 x 4 so every sample keeps its pixels' light) over a
+//! May day in Lausanne, clear and overcast. The world's truth is computed without any step of
+//! the measurement: the Perez sky's own horizontal illuminance, and the room traced directly
+//! under the world's sky and sun (`skyluxd::interior_truth`).
+//!
+//! Before issue 24 the example read the sky with `skip = 16` (one pixel in 256) into groups ten
+//! times the solar disk's solid angle: the disk was diluted under the threshold, never
+//! extracted, and spread over whole sky patches: 200-450 klx at noon (+130 % to +390 %), and
+//! the camera, facing south, never saw the morning and evening sun. Both fail these bounds.
 
 mod common;
-
-/// How far the measured outdoor horizontal illuminance may be from the world's where the sun
-/// is extracted. Issue 24 asks for 5 %, which is NOT met yet: measured +3 % to +16 % (10:00 to
-/// 17:00), the sun's beam right (its DNI within a few %) and the sky's part high by 5-15 klx,
-/// because this camera (south, 16° up) sees the southern half of the sky only and the unseen
-/// northern patches are filled from the seen patches of their row, brighter towards the sun
-/// (`SkyPatches::aggregate`). A model-based fill of the unseen sky is what remains. The old
-/// behaviour (the disk spread over a patch) read +130 % to +390 % here (201 and 449 klx at noon and 13:00) and fails this bound.
-const OUTDOOR_TOLERANCE: f64 = 0.20;
 
 use common::*;
 use std::time::Duration;
 
-#[test]
-fn a_clear_day_reads_as_the_simulated_world_and_every_missing_sun_says_why() {
+/// Issue 24: outdoor horizontal illuminance within 5 % of the world in every cycle with the
+/// sun above 10°.
+const OUTDOOR_TOLERANCE: f64 = 0.05;
+/// Issue 24: interior illuminance per sensor within 5 % of the world, median over the day.
+const INTERIOR_MEDIAN_TOLERANCE: f64 = 0.05;
+
+/// The records of a simulated day: `cycles` captures `step_s` apart from `start`.
+fn simulated_day(sky: &str, start: &str, step_s: u64, cycles: u64) -> Vec<serde_json::Value> {
     let tmp = tempfile::tempdir().unwrap();
     let out = tmp.path().join("out");
     let log = tmp.path().join("stderr.log");
-    let config = example_config();
-    let cycles: u64 = 16;
+    let config = config_with(
+        tmp.path(),
+        &[("sky = \"clear\"", &format!("sky = \"{sky}\""))],
+        "",
+    );
     let mut child = SimRun::new(&config, &out)
         .cycles(cycles)
-        .clock("2017-05-08T06:00:00+02:00", 3600)
+        .clock(start, step_s)
         .start(&log);
     let results = out.join("results.jsonl");
-    let lines = until(Duration::from_secs(300), &log, || {
+    let lines = until(Duration::from_secs(600), &log, || {
         let l = complete_lines(&results);
         (l.len() as u64 >= cycles).then_some(l)
     });
@@ -45,10 +45,67 @@ fn a_clear_day_reads_as_the_simulated_world_and_every_missing_sun_says_why() {
         child.wait().unwrap().success(),
         "skyluxd did not exit cleanly"
     );
-    let mut extracted = 0;
+    lines
+        .iter()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
+fn lux_of(sensors: &serde_json::Value) -> Vec<(String, f64)> {
+    sensors
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| {
+            (
+                s["sensor"].as_str().unwrap().to_string(),
+                s["lux"].as_f64().unwrap(),
+            )
+        })
+        .collect()
+}
+
+/// Per sensor, the median over `records` (sun above 10°) of measured / world − 1; prints
+/// each cycle's values.
+fn interior_median_errors(records: &[serde_json::Value]) -> Vec<(String, f64)> {
+    let mut ratios: Vec<(String, Vec<f64>)> = vec![];
+    for r in records {
+        if r["sun"]["spa_altitude_deg"].as_f64().unwrap() <= 10.0 {
+            continue;
+        }
+        let measured = lux_of(&r["illuminance"]);
+        let truth = lux_of(&r["truth_illuminance"]);
+        assert_eq!(measured.len(), truth.len());
+        if ratios.is_empty() {
+            ratios = measured.iter().map(|(n, _)| (n.clone(), vec![])).collect();
+        }
+        let line: Vec<String> = measured
+            .iter()
+            .zip(&truth)
+            .zip(ratios.iter_mut())
+            .map(|(((name, m), (tn, t)), (_, v))| {
+                assert_eq!(name, tn);
+                v.push(m / t - 1.0);
+                format!("{name} {m:.0}/{t:.0}")
+            })
+            .collect();
+        println!("{}: interior {}", r["time"], line.join(", "));
+    }
+    assert!(!ratios.is_empty(), "no cycle with the sun above 10°");
+    ratios
+        .into_iter()
+        .map(|(name, mut v)| {
+            v.sort_by(f64::total_cmp);
+            (name, v[v.len() / 2])
+        })
+        .collect()
+}
+
+/// Outdoor, sun and interior of one day's records against the world.
+fn check_day(records: &[serde_json::Value], clear: bool) {
+    let (mut sun_in_view, mut extracted) = (0, 0);
     let mut off = vec![];
-    for line in &lines {
-        let r: serde_json::Value = serde_json::from_str(line).unwrap();
+    for r in records {
         let time = r["time"].as_str().unwrap();
         let sun = &r["sun"];
         let altitude = sun["spa_altitude_deg"].as_f64().unwrap();
@@ -70,14 +127,13 @@ fn a_clear_day_reads_as_the_simulated_world_and_every_missing_sun_says_why() {
             "{time}: flagged implausible: {}",
             r["plausibility"]
         );
-        if sun["extracted"].as_bool().unwrap() {
-            extracted += 1;
-            if (measured / truth - 1.0).abs() >= OUTDOOR_TOLERANCE {
-                off.push(format!(
-                    "{time}: measured {measured:.0} lux, the world {truth:.0} lux"
-                ));
-            }
-        } else {
+        if altitude > 10.0 && (measured / truth - 1.0).abs() >= OUTDOOR_TOLERANCE {
+            off.push(format!(
+                "{time}: measured {measured:.0} lux, the world {truth:.0} lux"
+            ));
+        }
+        let extracted_now = sun["extracted"].as_bool().unwrap();
+        if !extracted_now {
             assert!(!flags.is_empty(), "{time}: no sun and no reason");
             assert!(
                 sun["missing_reason"]
@@ -89,11 +145,47 @@ fn a_clear_day_reads_as_the_simulated_world_and_every_missing_sun_says_why() {
                 assert_eq!(flags, ["no_sun:below_horizon"], "{time}");
             }
         }
+        // The whole-sky lens sees the sun whenever the world shows one (above 3°).
+        if clear && altitude > 3.0 {
+            sun_in_view += 1;
+            extracted += usize::from(extracted_now);
+        } else if !clear && altitude > 0.0 {
+            assert!(
+                !extracted_now,
+                "{time}: a sun extracted from an overcast sky"
+            );
+        }
     }
-    // 10:00 to 17:00 local: the sun within 60° of the lens axis (south, 16° up).
-    assert!(extracted >= 8, "the sun extracted in {extracted} cycles");
     assert!(
         off.is_empty(),
         "more than {OUTDOOR_TOLERANCE} from the world: {off:#?}"
     );
+    if clear {
+        assert!(
+            extracted * 100 >= 95 * sun_in_view,
+            "the sun extracted in {extracted} of {sun_in_view} clear cycles with it in view"
+        );
+    }
+    let medians = interior_median_errors(records);
+    println!("interior, median of measured / world - 1: {medians:?}");
+    for (name, e) in medians {
+        assert!(
+            e.abs() < INTERIOR_MEDIAN_TOLERANCE,
+            "{name}: the interior's median error is {:+.1} %",
+            100.0 * e
+        );
+    }
+}
+
+#[test]
+fn a_clear_day_reads_as_the_simulated_world_and_every_missing_sun_says_why() {
+    // 05:00 to 21:40 local, every 40 minutes: sunrise to sunset and the night either side.
+    let records = simulated_day("clear", "2017-05-08T05:00:00+02:00", 2400, 26);
+    check_day(&records, true);
+}
+
+#[test]
+fn an_overcast_day_reads_as_the_simulated_world() {
+    let records = simulated_day("overcast", "2017-05-08T06:20:00+02:00", 3600, 14);
+    check_day(&records, false);
 }

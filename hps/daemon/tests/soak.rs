@@ -121,6 +121,9 @@ fn a_long_run_with_random_faults_stays_flat_records_every_cycle_once_and_keeps_r
     let config = config_with(
         tmp.path(),
         &[
+            // The soak's world stays small (162 x 120 samples): it measures the daemon,
+            // not the sensor.
+            ("skip = 4 ", "skip = 16 "),
             ("max_maps = 48 ", &format!("max_maps = {MAX_MAPS} ")),
             (
                 "max_captures = 24 ",

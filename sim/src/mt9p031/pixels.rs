@@ -54,10 +54,12 @@ impl PixelSource for SceneSource {
                 col_start: g.col_start,
                 row_start: g.row_start,
                 skip: g.col_skip,
+                bin: 1,
             },
             raw_width: g.width as usize,
             raw_height: g.height as usize,
             footprint: Footprint::Centre,
+            small_sources: vec![],
         };
         let noise = match self.noise_seed {
             Some(seed) => Noise::Sensor {

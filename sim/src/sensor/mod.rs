@@ -4,5 +4,5 @@
 mod render;
 pub mod spectral;
 
-pub use render::{AnalogFrame, Footprint, FrameRenderer, Noise};
+pub use render::{AnalogFrame, Footprint, FrameRenderer, Noise, SmallSource};
 pub use spectral::{ChannelResponse, SpectralData};

@@ -5,7 +5,7 @@
 //! channel the black-subtracted mean signal `x = L t g V(α) / (cg Σw)`, which makes the
 //! device's response `L = cg (w · RGB) / (t g V)` exact; another spectrum scales each
 //! channel by its response (`spectral.rs`, `render_scene_spectral`). Noise per sample: Poisson shot noise
-//! on `x / (K g)` electrons (K: DN per electron at unity gain), Gaussian read noise, then the
+//! on `x / (K g)` electrons (times bin² for a binned sample, then averaged) (K: DN per electron at unity gain), Gaussian read noise, then the
 //! black level, rounding to whole DN and clipping to 12 bits.
 
 use super::spectral::ChannelResponse;
@@ -53,10 +53,26 @@ pub enum Footprint {
     /// The field at the group's centre: the group's truth is one exact number (HDR tests).
     #[default]
     Centre,
-    /// The mean of the field over the group's footprint, as real pixels integrate light:
+    /// The mean of the field over the group's whole cell (2 skip x 2 skip pixels), as an
+    /// ideal integrating readout would: what binning with bin = skip reads, and an
+    /// idealisation for a readout that skips without binning (the campaign simulations):
     /// where the field bends by more than 1 % across the neighbouring groups' centres (an
     /// edge such as the solar limb) the footprint is averaged on a 16 x 16 grid.
     Integrated,
+    /// The mean of the field over the pixels the readout reads (the MT9P031's binning: each
+    /// sample averages bin x bin same-colour pixels, so a group integrates 2 bin x 2 bin
+    /// pixels from its cell's start): binning keeps the light that falls on its pixels,
+    /// skipping loses what falls between them. Edges are found as for `Integrated`.
+    AsRead,
+}
+
+/// A source that may be smaller than a group and fall between the groups' centres (the solar
+/// disk in groups of binned pixels): with [`Footprint::AsRead`], the groups within its reach
+/// are probed every 2 pixels.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct SmallSource {
+    pub direction: DVec3,
+    pub radius_rad: f64,
 }
 
 /// Renders frames of one readout window through one camera.
@@ -66,6 +82,8 @@ pub struct FrameRenderer<'a> {
     pub raw_width: usize,
     pub raw_height: usize,
     pub footprint: Footprint,
+    /// Where the field has sources smaller than a group (see [`SmallSource`]).
+    pub small_sources: Vec<SmallSource>,
 }
 
 impl FrameRenderer<'_> {
@@ -79,19 +97,11 @@ impl FrameRenderer<'_> {
         let (gw, gh) = (self.raw_width / 2, self.raw_height / 2);
         let centre = |i: usize| {
             let (gx, gy) = (i % gw, i / gw);
-            let x = Readout::active_coordinate(
-                self.readout.col_start,
-                self.readout.skip,
-                2 * gx as u32,
-            ) as f64
-                + 1.0;
-            let y = Readout::active_coordinate(
-                self.readout.row_start,
-                self.readout.skip,
-                2 * gy as u32,
-            ) as f64
-                + 1.0;
-            (x, y)
+            let r = &self.readout;
+            (
+                Readout::group_centre(r.col_start, r.skip, r.bin, gx as u32),
+                Readout::group_centre(r.row_start, r.skip, r.bin, gy as u32),
+            )
         };
         // Centre luminance and vignetting of every group.
         let at_centre: Vec<Option<(f64, f64)>> = (0..gw * gh)
@@ -127,7 +137,7 @@ impl FrameRenderer<'_> {
                 // one differs from it by an twenty-fourth of this difference (the midpoint
                 // rule's error), so only a kink or a jump (the solar limb, a cloud's edge)
                 // needs the footprint integrated.
-                let edge = [(1, 0), (0, 1), (1, 1), (1, -1)].iter().any(|&(dx, dy)| {
+                let bends = [(1, 0), (0, 1), (1, 1), (1, -1)].iter().any(|&(dx, dy)| {
                     match (at(-dx, -dy), at(dx, dy)) {
                         (Some(a), Some(b)) => (a + b - 2.0 * l).abs() > 0.01 * l.abs().max(1e-300),
                         // At the rim of the image circle: the one-sided difference.
@@ -137,9 +147,31 @@ impl FrameRenderer<'_> {
                         (None, None) => false,
                     }
                 });
-                if edge {
-                    let (x, y) = centre(i);
-                    self.footprint_mean(luminance_cd_m2, x, y, l) * v
+                let (x, y) = centre(i);
+                let near_small =
+                    self.footprint == Footprint::AsRead && self.near_a_small_source(x, y);
+                let (half_px, grid) = match self.footprint {
+                    // Groups are read as the sensor reads them; near a small source the
+                    // integration grid is fine enough (1/4 px) that a solar disk a few pixels
+                    // wide is integrated to within about 1 % (its limb's grid-counting error).
+                    Footprint::AsRead => {
+                        let half = f64::from(self.readout.bin.max(1));
+                        let fine = if near_small {
+                            (8.0 * half).ceil() as usize
+                        } else {
+                            0
+                        };
+                        (half, fine.max(16))
+                    }
+                    _ => (f64::from(self.readout.skip), 16),
+                };
+                // A source smaller than the spacing of the groups (the solar disk in a
+                // group of binned pixels) can lie between all the centres: as read, the
+                // groups within its reach are also probed every 2 pixels, which no disk of
+                // more than 1.5 px radius escapes.
+                let hidden = near_small && self.differs_inside(luminance_cd_m2, x, y, half_px, l);
+                if bends || hidden {
+                    self.footprint_mean(luminance_cd_m2, x, y, half_px, grid, l) * v
                 } else {
                     l * v
                 }
@@ -155,22 +187,58 @@ impl FrameRenderer<'_> {
         scene.iter().map(|lv| lv * k).collect()
     }
 
-    /// Mean luminance over the footprint of the group centred at (x, y) (2 skip pixels wide),
-    /// on a 16 x 16 grid.
+    /// Whether a [`SmallSource`] reaches within two group pitches of the group centred at
+    /// (x, y).
+    fn near_a_small_source(&self, x: f64, y: f64) -> bool {
+        let p = ImagePoint { x_px: x, y_px: y };
+        let (Some(d), Some(omega_px2)) =
+            (self.camera.unproject(p), self.camera.solid_angle_per_px2(p))
+        else {
+            return false;
+        };
+        let pitch_rad = 2.0 * f64::from(self.readout.skip) * omega_px2.sqrt();
+        self.small_sources
+            .iter()
+            .any(|s| d.angle_between(s.direction) < s.radius_rad + 2.0 * pitch_rad)
+    }
+
+    /// Whether the field differs by more than 1 % from `centre` anywhere on a lattice of at
+    /// most 2-pixel spacing over the square of half-width `half` pixels centred at (x, y).
+    fn differs_inside(
+        &self,
+        field: &(dyn Fn(DVec3) -> f64 + Sync),
+        x: f64,
+        y: f64,
+        half: f64,
+        centre: f64,
+    ) -> bool {
+        let n = (half.ceil() as usize).max(1);
+        (0..n * n).any(|k| {
+            let px = x - half + 2.0 * half * ((k % n) as f64 + 0.5) / n as f64;
+            let py = y - half + 2.0 * half * ((k / n) as f64 + 0.5) / n as f64;
+            self.camera
+                .unproject(ImagePoint { x_px: px, y_px: py })
+                .map(field)
+                .is_some_and(|v| (v - centre).abs() > 0.01 * centre.abs().max(1e-300))
+        })
+    }
+
+    /// Mean luminance over the square of half-width `half` pixels centred at (x, y), on an
+    /// `n` x `n` grid.
     fn footprint_mean(
         &self,
         field: &(dyn Fn(DVec3) -> f64 + Sync),
         x: f64,
         y: f64,
+        half: f64,
+        n: usize,
         centre: f64,
     ) -> f64 {
-        let half = self.readout.skip as f64;
         let at = |px: f64, py: f64| {
             self.camera
                 .unproject(ImagePoint { x_px: px, y_px: py })
                 .map(field)
         };
-        let n = 16;
         let (mut sum, mut count) = (0.0, 0usize);
         for j in 0..n {
             for i in 0..n {
@@ -297,6 +365,9 @@ impl FrameRenderer<'_> {
         let d = &self.camera.config;
         let black = d.sensor.black_level_dn;
         let k = d.noise.conversion_dn_per_e * gain;
+        // A binned sample averages bin² pixels' charge: its shot noise is that of bin² times
+        // the electrons, divided back (the read noise stays one sample's).
+        let pixels = f64::from(self.readout.bin.max(1).pow(2));
         let read = Normal::new(0.0, d.noise.read_noise_dn.max(0.0)).expect("finite read noise");
         let seed = match noise {
             Noise::Sensor { seed } => seed,
@@ -315,11 +386,12 @@ impl FrameRenderer<'_> {
                         let dn = match noise {
                             Noise::None => black + m,
                             Noise::Sensor { .. } => {
-                                let electrons = m / k;
+                                let electrons = m / k * pixels;
                                 let shot = if electrons > 0.0 {
                                     Poisson::new(electrons)
                                         .map(|p| p.sample(&mut rng))
                                         .unwrap_or(electrons)
+                                        / pixels
                                 } else {
                                     0.0
                                 };

@@ -58,9 +58,53 @@ pub struct Readout {
     pub row_start: u32,
     /// 1: every pixel; k: read 2 columns/rows, skip 2(k − 1).
     pub skip: u32,
+    /// The MT9P031's binning (an extension of campaign.md, docs/readout.md): each sample is
+    /// the mean of `bin` x `bin` same-colour pixels from the start of its `skip` block, so a
+    /// group integrates the 2 bin x 2 bin pixels it starts with. 1 (the default, and what a
+    /// file without the key means), 2 or 4, dividing `skip`.
+    #[serde(default = "one", skip_serializing_if = "is_one")]
+    pub bin: u32,
+}
+
+fn one() -> u32 {
+    1
+}
+
+fn is_one(v: &u32) -> bool {
+    *v == 1
 }
 
 impl Readout {
+    /// A readout without binning.
+    pub fn skipping(col_start: u32, row_start: u32, skip: u32) -> Self {
+        Self {
+            col_start,
+            row_start,
+            skip,
+            bin: 1,
+        }
+    }
+
+    /// Full-array coordinate (pixel edges, the first pixel spans 0..1) of the centre of group
+    /// `g`'s sensitive area along one axis: its first raw sample's pixel plus `bin` (the
+    /// 2 bin pixels it integrates; 2 pixels without binning).
+    pub fn group_centre(start: u32, skip: u32, bin: u32, g: u32) -> f64 {
+        f64::from(Self::active_coordinate(start, skip, 2 * g)) + f64::from(bin.max(1))
+    }
+
+    /// Checks the binning against the sensor's rule (hardware-facts.md §1 "Binning rule":
+    /// 1x, 2x or 4x, dividing the skip factor).
+    pub fn check_bin(&self) -> Result<(), String> {
+        if matches!(self.bin, 1 | 2 | 4) && self.skip.is_multiple_of(self.bin) {
+            Ok(())
+        } else {
+            Err(format!(
+                "bin = {} must be 1, 2 or 4 and divide skip = {}",
+                self.bin, self.skip
+            ))
+        }
+    }
+
     /// Full-array coordinate of raw column (or row) `i` (campaign.md:
     /// `start + (i / 2) * 2k + (i % 2)`).
     pub fn active_coordinate(start: u32, skip: u32, i: u32) -> u32 {
@@ -140,6 +184,9 @@ impl CaptureConfig {
                 "readout".into(),
                 "skip must be at least 1 and the starts even".into(),
             );
+        }
+        if let Err(reason) = config.readout.check_bin() {
+            return bad("readout.bin".into(), reason);
         }
         for (i, e) in config.exposure.iter().enumerate() {
             if !(e.exposure_us.is_finite() && e.exposure_us > 0.0) {

@@ -60,10 +60,15 @@ pub fn write_exr(
         text(DEVICE_ATTRIBUTE, "name")?,
         AttributeValue::Text(text(&device_text, "device.toml")?),
     );
-    let readout_text = format!(
+    // "col_start row_start skip", and the bin only when there is one (older readers and
+    // files keep three numbers).
+    let mut readout_text = format!(
         "{} {} {}",
         readout.col_start, readout.row_start, readout.skip
     );
+    if readout.bin != 1 {
+        readout_text.push_str(&format!(" {}", readout.bin));
+    }
     layer.attributes.other.insert(
         text(READOUT_ATTRIBUTE, "name")?,
         AttributeValue::Text(text(&readout_text, "readout")?),
@@ -127,10 +132,15 @@ fn decode_exr(
         .split_whitespace()
         .filter_map(|s| s.parse().ok())
         .collect();
-    let [col_start, row_start, skip] = numbers[..] else {
-        return Err(invalid(format!(
-            "{READOUT_ATTRIBUTE} must hold three whole numbers"
-        )));
+    let (col_start, row_start, skip, bin) = match numbers[..] {
+        [c, r, s] => (c, r, s, 1),
+        [c, r, s, b] => (c, r, s, b),
+        _ => {
+            return Err(invalid(format!(
+                "{READOUT_ATTRIBUTE} must hold three or four whole numbers \
+                 (col_start row_start skip [bin])"
+            )))
+        }
     };
     let layer = &image.layer_data;
     let (width, height) = (layer.size.width(), layer.size.height());
@@ -167,6 +177,7 @@ fn decode_exr(
             col_start,
             row_start,
             skip,
+            bin,
         },
     ))
 }

@@ -27,7 +27,7 @@ pub struct GeometryCache {
 }
 
 /// A readout and frame size: column start, row start, skip, raw width, raw height.
-type ReadoutKey = (u32, u32, u32, usize, usize);
+type ReadoutKey = (u32, u32, u32, u32, usize, usize);
 
 impl GeometryCache {
     /// The geometry of `raw_width` x `raw_height` frames read out with `readout`.
@@ -42,6 +42,7 @@ impl GeometryCache {
             readout.col_start,
             readout.row_start,
             readout.skip,
+            readout.bin,
             raw_width,
             raw_height,
         );
@@ -69,18 +70,17 @@ impl GroupGeometry {
         let mut direction = vec![Vec3::NAN; n];
         let mut inverse_vignetting = vec![0.0f32; n];
         let mut solid_angle_sr = vec![0.0f32; n];
-        // A group covers two raw columns that are adjacent in the full array whatever the skip
-        // (campaign.md), so its centre is one pixel right of its first column's left edge; its
-        // footprint in the full array is (2 skip) x (2 skip) pixels.
+        // A group's first raw column is adjacent in the full array to its second (campaign.md),
+        // and with binning each sample averages `bin` same-colour pixels from there on, so
+        // its sensitive area is the 2 bin pixels from its first column's left edge and its
+        // centre `bin` pixels right of that edge (`Readout::group_centre`). Its share of the
+        // sphere, for sums over the map, is its whole cell: (2 skip) x (2 skip) pixels.
         let footprint_px2 = (2.0 * readout.skip as f64).powi(2);
         for gy in 0..height {
-            let y = Readout::active_coordinate(readout.row_start, readout.skip, 2 * gy as u32)
-                as f64
-                + 1.0;
+            let y = Readout::group_centre(readout.row_start, readout.skip, readout.bin, gy as u32);
             for gx in 0..width {
-                let x = Readout::active_coordinate(readout.col_start, readout.skip, 2 * gx as u32)
-                    as f64
-                    + 1.0;
+                let x =
+                    Readout::group_centre(readout.col_start, readout.skip, readout.bin, gx as u32);
                 let p = ImagePoint { x_px: x, y_px: y };
                 let i = gy * width + gx;
                 if let (Some(d), Some(omega)) = (camera.unproject(p), camera.solid_angle_per_px2(p))

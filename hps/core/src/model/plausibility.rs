@@ -14,10 +14,16 @@
 //!   ([`SOLAR_CONSTANT_LUX`] × the eccentricity factor), with [`DIRECT_NORMAL_MARGIN`] for the
 //!   measurement.
 //!
+//! - Interior illuminance: per sensor, the room's daylight coefficients bound how much light
+//!   any sky with the cycle's outdoor horizontal illuminance can bring in
+//!   ([`interior_bound_lux`]).
+//!
 //! `tests/plausibility_bounds.rs` holds the irradiance bound against every minute of the two
 //! measured station records of `shared/data/irradiance` (it must never flag a real sky) and
 //! checks it is not vacuous (the clear noon of Alamosa reaches most of it).
 
+use super::terms::CaptureTerms;
+use crate::engine::DaylightCoefficients;
 use crate::sky::perez::{eccentricity_factor, SOLAR_CONSTANT_LUX, SOLAR_CONSTANT_W_M2};
 use crate::sun::Atmosphere;
 
@@ -102,6 +108,54 @@ pub fn direct_normal_bound_lux(day_of_year: u16) -> f64 {
     DIRECT_NORMAL_MARGIN * SOLAR_CONSTANT_LUX * eccentricity_factor(day_of_year)
 }
 
+/// Per sensor, the most illuminance (lux) the room can receive in a capture with these
+/// terms: the room's highest daylight factor over every direction of the sky times the
+/// outdoor horizontal illuminance, plus the ground as measured (or, unseen, as a grey ground
+/// of `ground_reflectance`).
+///
+/// The sky and the sun add to the outdoor horizontal illuminance `E_h = Σ_p L_p z_p Ω_p +
+/// E_dn sin α` and to a sensor `E_s = Σ_p DC_sp L_p + K_s E_dn`, so `E_s ≤ max(max_p DC_sp /
+/// (z_p Ω_p), K_s / sin α) · E_h` whatever the sky's distribution: a daylight factor no sky
+/// can exceed. A prediction above it has counted light twice (the sun both in its patch and
+/// as a source, say) or scaled a term wrongly.
+pub fn interior_bound_lux(
+    dc: &DaylightCoefficients,
+    terms: &CaptureTerms,
+    ground_reflectance: f64,
+) -> Vec<f64> {
+    let patches = dc.patches();
+    let n = patches.len();
+    let unseen_ground_cd_m2 =
+        ground_reflectance * terms.outdoor_horizontal_lux / std::f64::consts::PI;
+    (0..dc.sensors.len())
+        .map(|s| {
+            let row = dc.row(s);
+            let sky_factor = (0..n)
+                .filter_map(|p| {
+                    let z = patches.centre(p).z;
+                    (z > 0.0).then(|| row[p] / (z * patches.solid_angle_sr(p)))
+                })
+                .fold(0.0, f64::max);
+            let sun_factor = match &terms.sun {
+                Some(sun) if sun.direction.z > 0.0 => terms.sun_lux_per_dn_lux[s] / sun.direction.z,
+                _ => 0.0,
+            };
+            let ground_lux: f64 = (0..n)
+                .map(|p| {
+                    let l = terms.bins_without_sun_cd_m2[n + p];
+                    row[n + p]
+                        * if l.is_finite() {
+                            l
+                        } else {
+                            unseen_ground_cd_m2
+                        }
+                })
+                .sum();
+            sky_factor.max(sun_factor) * terms.outdoor_horizontal_lux + ground_lux
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -126,5 +180,68 @@ mod tests {
         assert!(global_horizontal_bound_lux(55.5, 400.0, 129) < 200_000.0);
         assert_eq!(clear_sky_ghi_w_m2(-5.0, 0.0, 2.0, 1), 0.0);
         assert_eq!(clear_sky_ghi_w_m2(f64::NAN, 0.0, 2.0, 1), 0.0);
+    }
+
+    /// A horizontal sensor behind glazing of transmittance 0.5 that sees the whole sky and the
+    /// sun: its daylight factor is 0.5 in every direction, so the bound is half the outdoor
+    /// light; the sun counted twice (in its patch and as a source) exceeds it.
+    #[test]
+    fn the_interior_bound_is_the_rooms_highest_daylight_factor_and_catches_a_double_count() {
+        use crate::sun::ExtractedSun;
+        use glam::DVec3;
+        let patches = crate::sky::SkyPatches::tregenza();
+        let n = patches.len();
+        let tau = 0.5;
+        let mut row: Vec<f64> = (0..n)
+            .map(|p| tau * patches.centre(p).z * patches.solid_angle_sr(p))
+            .collect();
+        row.extend(std::iter::repeat_n(0.0, n));
+        let dc = DaylightCoefficients {
+            sensors: vec!["S1".into()],
+            mf: 1,
+            bins: 2 * n,
+            lux_per_cd_m2: row.clone(),
+            samples_per_sensor: 1,
+        };
+        let sky_cd_m2 = 5000.0;
+        let sky_h: f64 = (0..n)
+            .map(|p| sky_cd_m2 * patches.centre(p).z * patches.solid_angle_sr(p))
+            .sum();
+        let altitude = 30f64.to_radians();
+        let direction = DVec3::new(0.0, -altitude.cos(), altitude.sin());
+        let dn_lux = 80_000.0;
+        let outdoor = sky_h + dn_lux * direction.z;
+        let mut bins = vec![sky_cd_m2; n];
+        bins.extend(std::iter::repeat_n(f64::NAN, n));
+        let sky_lux: f64 = (0..n).map(|p| row[p] * sky_cd_m2).sum();
+        let terms = CaptureTerms {
+            sun: Some(ExtractedSun {
+                direction,
+                disk_luminance_cd_m2: dn_lux / crate::sun::SOLAR_DISK_SR,
+                direct_normal_illuminance_lux: dn_lux,
+                background_cd_m2: sky_cd_m2,
+                groups: vec![],
+                flags: vec![],
+            }),
+            sun_missing: None,
+            sky_with_sun_lux: vec![sky_lux],
+            sky_without_sun_lux: vec![sky_lux],
+            sun_lux_per_dn_lux: vec![tau * direction.z],
+            sun_dn_lux: dn_lux,
+            unseen_ground_lux_per_cd_m2: vec![0.0],
+            outdoor_horizontal_lux: outdoor,
+            unseen_sky_fraction: 0.0,
+            saturated_fraction: 0.0,
+            bins_with_sun_cd_m2: bins.clone(),
+            bins_without_sun_cd_m2: bins,
+            bin_seen: vec![true; 2 * n],
+        };
+        let bound = interior_bound_lux(&dc, &terms, 0.2)[0];
+        let right = sky_lux + tau * direction.z * dn_lux;
+        assert!((bound / (tau * outdoor) - 1.0).abs() < 1e-9, "{bound}");
+        assert!(right <= bound * (1.0 + 1e-9), "{right} > {bound}");
+        // The beam also spread over its patch (as the map holds it) and added again.
+        let twice = right + tau * direction.z * dn_lux;
+        assert!(twice > 1.5 * bound, "{twice} vs {bound}");
     }
 }

@@ -41,6 +41,7 @@ impl<'a> SkyLookup<'a> {
             col_start,
             row_start,
             skip,
+            ..
         } = self.merged.capture.readout;
         let step = 2.0 * skip as f64;
         let (gx, gy) = (

@@ -60,13 +60,14 @@ pub struct FabricSun {
 }
 
 /// The full-array position of a (fractional) group coordinate's centre: groups lie 2·skip
-/// pixels apart and a group's centre is one pixel right of (below) its first column (row), as
-/// `GroupGeometry` places them.
+/// pixels apart and a group's centre is `bin` pixels right of (below) its first column (row),
+/// as `GroupGeometry` places them (`Readout::group_centre`).
 fn group_centre_px(readout: &Readout, gx: f64, gy: f64) -> ImagePoint {
     let step = 2.0 * readout.skip as f64;
+    let offset = f64::from(readout.bin.max(1));
     ImagePoint {
-        x_px: readout.col_start as f64 + step * gx + 1.0,
-        y_px: readout.row_start as f64 + step * gy + 1.0,
+        x_px: readout.col_start as f64 + step * gx + offset,
+        y_px: readout.row_start as f64 + step * gy + offset,
     }
 }
 
@@ -103,8 +104,9 @@ impl FabricSunSearch {
             .project(self.predicted_direction)
             .ok_or(NoSun::OutsideFieldOfView)?;
         let step = 2.0 * readout.skip as f64;
-        let gx = ((p.x_px - readout.col_start as f64 - 1.0) / step).round();
-        let gy = ((p.y_px - readout.row_start as f64 - 1.0) / step).round();
+        let offset = f64::from(readout.bin.max(1));
+        let gx = ((p.x_px - readout.col_start as f64 - offset) / step).round();
+        let gy = ((p.y_px - readout.row_start as f64 - offset) / step).round();
         let half = f64::from(self.window_half_groups);
         let (w, h) = (width as f64, height as f64);
         if width == 0
@@ -210,6 +212,7 @@ mod tests {
             col_start: 0,
             row_start: 0,
             skip: 1,
+            bin: 1,
         };
         let exposure = SunExposure {
             exposure_s: 1e-6,

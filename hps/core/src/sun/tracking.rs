@@ -49,7 +49,7 @@ pub struct TrackingOptions {
 impl Default for TrackingOptions {
     fn default() -> Self {
         Self {
-            threshold_cd_m2: 5e8,
+            threshold_cd_m2: crate::sun::extract::SUNSHINE_THRESHOLD_CD_M2,
             max_offset_deg: 12.0,
             pyranometer_window: TimeDelta::minutes(5),
             refraction: false,

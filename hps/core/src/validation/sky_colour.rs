@@ -224,6 +224,7 @@ mod tests {
             col_start: 0,
             row_start: 0,
             skip: 8,
+            bin: 1,
         };
         let geometry = GroupGeometry::new(&camera, &readout, 2592 / 8, 1944 / 8);
         (device, geometry, SkyPatches::reinhart(2))
