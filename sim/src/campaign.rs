@@ -1155,11 +1155,14 @@ impl TrueWorld {
         let capture_dir = out.join("captures").join(&stamp);
         let capture_spec = CaptureSpec {
             time: time.to_rfc3339(),
+            // The frames integrate each group's whole cell (`Footprint::Integrated`): what the
+            // sensor reads binned by the skip, declared so (docs/readout.md). A skip that no
+            // binning divides keeps the idealisation, and its sun is flagged undersampled.
             readout: Readout {
                 col_start: 0,
                 row_start: 0,
                 skip: spec.skip,
-                bin: 1,
+                bin: Readout::largest_bin(spec.skip),
             },
             raw_width: self.raw_width,
             raw_height: self.raw_height,

@@ -767,12 +767,9 @@ impl SimConfig {
     /// The simulated frames' readout: the full array, `skip`, and `bin` or the largest
     /// binning that divides `skip`.
     pub fn readout(&self) -> skylux_hps::campaign::Readout {
-        let bin = self.bin.unwrap_or_else(|| {
-            [4, 2, 1]
-                .into_iter()
-                .find(|b| self.skip % b == 0)
-                .unwrap_or(1)
-        });
+        let bin = self
+            .bin
+            .unwrap_or_else(|| skylux_hps::campaign::Readout::largest_bin(self.skip));
         skylux_hps::campaign::Readout {
             bin,
             ..skylux_hps::campaign::Readout::skipping(0, 0, self.skip)

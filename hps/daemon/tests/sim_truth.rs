@@ -23,14 +23,16 @@ const INTERIOR_MEDIAN_TOLERANCE: f64 = 0.05;
 
 /// The records of a simulated day: `cycles` captures `step_s` apart from `start`.
 fn simulated_day(sky: &str, start: &str, step_s: u64, cycles: u64) -> Vec<serde_json::Value> {
+    let sky_line = format!("sky = \"{sky}\"");
+    run(&[("sky = \"clear\"", &sky_line)], start, step_s, cycles)
+}
+
+/// The records of the example configuration changed by `replace`.
+fn run(replace: &[(&str, &str)], start: &str, step_s: u64, cycles: u64) -> Vec<serde_json::Value> {
     let tmp = tempfile::tempdir().unwrap();
     let out = tmp.path().join("out");
     let log = tmp.path().join("stderr.log");
-    let config = config_with(
-        tmp.path(),
-        &[("sky = \"clear\"", &format!("sky = \"{sky}\""))],
-        "",
-    );
+    let config = config_with(tmp.path(), replace, "");
     let mut child = SimRun::new(&config, &out)
         .cycles(cycles)
         .clock(start, step_s)
@@ -188,4 +190,49 @@ fn a_clear_day_reads_as_the_simulated_world_and_every_missing_sun_says_why() {
 fn an_overcast_day_reads_as_the_simulated_world() {
     let records = simulated_day("overcast", "2017-05-08T06:20:00+02:00", 3600, 14);
     check_day(&records, false);
+}
+
+/// A readout that skips pixels without binning (skip 8: one pixel in 64) cannot measure the
+/// disk: the sun is flagged `undersampled` with its reason, and kept out of the sky, so the
+/// outdoor value is the sky's alone (below the world's, never a disk spread over a group).
+/// Before issue 24 such a readout read 200-450 klx at noon.
+#[test]
+fn a_skipping_readout_flags_the_sun_instead_of_integrating_it_as_a_group() {
+    let records = run(
+        &[("skip = 4 ", "skip = 8 "), ("bin = 4 ", "bin = 1 ")],
+        "2017-05-08T12:00:00+02:00",
+        1800,
+        3,
+    );
+    for r in &records {
+        let time = r["time"].as_str().unwrap();
+        let measured = r["outdoor_horizontal_lux"].as_f64().unwrap();
+        let truth = r["truth_outdoor_horizontal_lux"].as_f64().unwrap();
+        println!(
+            "{time}: measured {measured:.0} lux, world {truth:.0} lux, sun {}",
+            r["sun"]
+        );
+        assert_eq!(r["sun"]["extracted"], false, "{time}");
+        assert_eq!(
+            r["sun"]["flags"],
+            serde_json::json!(["no_sun:undersampled"]),
+            "{time}"
+        );
+        assert!(
+            r["sun"]["missing_reason"]
+                .as_str()
+                .is_some_and(|s| s.contains("binned")),
+            "{time}: {}",
+            r["sun"]
+        );
+        assert!(
+            measured < truth,
+            "{time}: {measured} lux above the world's {truth}"
+        );
+        assert!(
+            r.get("plausibility").is_none(),
+            "{time}: {}",
+            r["plausibility"]
+        );
+    }
 }

@@ -85,6 +85,15 @@ impl Readout {
         }
     }
 
+    /// The binning the Linux driver picks for `skip`: the largest of 4, 2, 1 that divides it
+    /// (hardware-facts.md §1, "Binning rule").
+    pub fn largest_bin(skip: u32) -> u32 {
+        [4, 2, 1]
+            .into_iter()
+            .find(|b| skip.is_multiple_of(*b))
+            .unwrap_or(1)
+    }
+
     /// Full-array coordinate (pixel edges, the first pixel spans 0..1) of the centre of group
     /// `g`'s sensitive area along one axis: its first raw sample's pixel plus `bin` (the
     /// 2 bin pixels it integrates; 2 pixels without binning).

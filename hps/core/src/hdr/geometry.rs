@@ -17,6 +17,10 @@ pub struct GroupGeometry {
     pub inverse_vignetting: Vec<f32>,
     /// Solid angle of each group, sr (0 outside the lens model).
     pub solid_angle_sr: Vec<f32>,
+    /// The share of each group's cell its samples integrate: (bin / skip)². 1 when nothing
+    /// falls between the read pixels; below 1, a source smaller than the cell can be missed
+    /// or read as if it filled the cell (docs/readout.md).
+    pub fill_factor: f64,
 }
 
 /// The geometry of the last readout asked for. The captures of a campaign share a readout,
@@ -100,6 +104,9 @@ impl GroupGeometry {
             direction,
             inverse_vignetting,
             solid_angle_sr,
+            fill_factor: (f64::from(readout.bin.max(1)) / f64::from(readout.skip.max(1)))
+                .min(1.0)
+                .powi(2),
         }
     }
 }

@@ -183,7 +183,18 @@ fn terms_of(
         Ok(s) => (Some(s), None),
         Err(e) => (None, Some(e)),
     };
-    let (with_sun, seen, horizontal_map) = bins(patches, &c.map, geometry);
+    // A disk the readout cannot measure (it skips pixels between its samples) is kept out of
+    // the sky: its groups read as if the disk filled them, and spread over their patches
+    // they would add light no sky has (the old daemon example's 200-450 klx at noon).
+    let masked;
+    let map = match &sun_missing {
+        Some(SunMissing::NotFound(NoSun::Undersampled { groups, .. })) => {
+            masked = without_groups(&c.map, groups);
+            &masked
+        }
+        _ => &c.map,
+    };
+    let (with_sun, seen, horizontal_map) = bins(patches, map, geometry);
     // With a sun extracted, the outdoor horizontal illuminance is the sky without the
     // disk plus the disk's direct beam (the disk itself may be over-range in the map).
     let (without_sun, horizontal) = match &sun {
@@ -222,6 +233,25 @@ fn terms_of(
         bins_without_sun_cd_m2: without_sun,
         bin_seen: seen,
     })
+}
+
+/// `map` with `groups` and their 8 neighbours marked unusable (under-range), so the sky patches
+/// are filled from the rest of their groups.
+fn without_groups(map: &LuminanceMap, groups: &[usize]) -> LuminanceMap {
+    let mut out = map.clone();
+    let (w, h) = (map.width as i64, map.height as i64);
+    for &i in groups {
+        let (x, y) = ((i as i64) % w.max(1), (i as i64) / w.max(1));
+        for dy in -1..=1 {
+            for dx in -1..=1 {
+                let (nx, ny) = (x + dx, y + dy);
+                if nx >= 0 && ny >= 0 && nx < w && ny < h {
+                    out.flags[(ny * w + nx) as usize] = MapFlag::UnderRange;
+                }
+            }
+        }
+    }
+    out
 }
 
 /// Per sensor, the daylight coefficients of the ground bins the lens did not see (lux per

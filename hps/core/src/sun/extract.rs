@@ -90,6 +90,18 @@ pub enum NoSun {
     FarFromPrediction { offset_deg: f64, limit_deg: f64 },
     #[error("every group is over-range: nothing can be measured")]
     AllSaturated,
+    #[error(
+        "the readout integrates {:.0} % of each group's cell and the cells are not much smaller \
+         than the solar disk: its light is missed or read as filling the cell, so it is not \
+         measured (read the sensor binned: docs/readout.md)",
+        100.0 * fill_factor
+    )]
+    Undersampled {
+        fill_factor: f64,
+        /// The groups of the bright component, to be kept out of the sky (a disk read as if
+        /// it filled a cell must not be spread over the sky patches).
+        groups: Vec<usize>,
+    },
 }
 
 impl NoSun {
@@ -98,6 +110,7 @@ impl NoSun {
     pub fn tag(&self) -> &'static str {
         match self {
             NoSun::BelowThreshold { .. } => "below_threshold",
+            NoSun::Undersampled { .. } => "undersampled",
             NoSun::OutsideFieldOfView => "outside_field_of_view",
             NoSun::FarFromPrediction { .. } => "far_from_prediction",
             NoSun::AllSaturated => "all_saturated",
@@ -274,7 +287,23 @@ pub fn extract_sun(
         }
     }
     let components = bright_components(map, geometry, search);
+    // A readout that skips pixels between its samples (no binning) reads a disk smaller than
+    // about two cells by whichever samples it happens to cover, or by none: unmeasurable.
+    let coarse = |i: usize| geometry.solid_angle_sr[i] as f64 > SOLAR_DISK_SR / 4.0;
+    let undersampled = |groups: Vec<usize>| NoSun::Undersampled {
+        fill_factor: geometry.fill_factor,
+        groups,
+    };
     if components.is_empty() {
+        let cos_limit = search.max_offset_deg.to_radians().cos();
+        let near = |i: usize| {
+            search
+                .predicted_direction
+                .is_none_or(|p| geometry.direction[i].as_dvec3().dot(p) >= cos_limit)
+        };
+        if geometry.fill_factor < 1.0 && (0..n).any(|i| seen(i) && near(i) && coarse(i)) {
+            return Err(undersampled(vec![]));
+        }
         return Err(NoSun::BelowThreshold {
             threshold_cd_m2: search.threshold_cd_m2,
         });
@@ -315,12 +344,15 @@ pub fn extract_sun(
             })
             .expect("at least one component"),
     };
+    let core = &components[chosen];
+    if geometry.fill_factor < 1.0 && core.iter().any(|&i| coarse(i)) {
+        return Err(undersampled(core.clone()));
+    }
     let mut flags = vec![];
     if components.len() > 1 {
         flags.push(SunFlag::OtherCandidates);
     }
     // Dilate the component (square neighbourhood) and collect an annulus for the background.
-    let core = &components[chosen];
     let centre = mean_direction(core);
     let (mut min_x, mut max_x, mut min_y, mut max_y) = (usize::MAX, 0, usize::MAX, 0);
     for &i in core {
