@@ -48,17 +48,24 @@ pub struct SceneSource {
 impl PixelSource for SceneSource {
     fn frame(&mut self, settings: &FrameSettings, pixclk_hz: f64, frame_index: u64) -> RawFrame {
         let g = &settings.geometry;
+        // Column_Bin 0, 1, 3: 1x, 2x, 4x (hardware-facts.md §1, register 0x23). A binned
+        // sample is the mean of its bin x bin pixels; unbinned, the field at the group.
+        let bin = g.col_bin + 1;
         let renderer = FrameRenderer {
             camera: &self.camera,
             readout: Readout {
                 col_start: g.col_start,
                 row_start: g.row_start,
                 skip: g.col_skip,
-                bin: 1,
+                bin,
             },
             raw_width: g.width as usize,
             raw_height: g.height as usize,
-            footprint: Footprint::Centre,
+            footprint: if bin > 1 {
+                Footprint::AsRead
+            } else {
+                Footprint::Centre
+            },
             small_sources: vec![],
         };
         let noise = match self.noise_seed {
@@ -129,5 +136,50 @@ mod tests {
                 "row {row} col {col}"
             );
         }
+    }
+
+    /// Binning (registers 0x22/0x23 = 0x0011: skip 2, bin 2) keeps the mean signal of a
+    /// uniform scene and averages four pixels' shot noise: half the unbinned spread.
+    #[test]
+    fn binned_samples_keep_the_mean_and_average_the_shot_noise() {
+        use skylux_hps::camera::DeviceConfig;
+        let mut source = SceneSource {
+            camera: CameraModel::new(DeviceConfig::default()),
+            luminance_cd_m2: Box::new(|_| 1.0e6),
+            noise_seed: Some(7),
+            channel_response: ChannelResponse::GREY,
+        };
+        let frame_with = |bin_field: u32| FrameSettings {
+            geometry: super::super::timing::FrameGeometry {
+                width: 200,
+                height: 200,
+                col_start: 1000,
+                row_start: 800,
+                col_skip: 2,
+                row_skip: 2,
+                row_bin: bin_field,
+                col_bin: bin_field,
+                hb: 500,
+                vb: 9,
+            },
+            shutter_width_rows: 10,
+            exposure_pixclk: 96_000, // 1 ms at 96 MHz: about 1000 DN
+            gain: 1.0,
+            mirror_row: false,
+            mirror_column: false,
+        };
+        let stats = |f: &RawFrame| {
+            let v: Vec<f64> = f.samples_dn.iter().map(|&d| f64::from(d)).collect();
+            let mean = v.iter().sum::<f64>() / v.len() as f64;
+            let var = v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (v.len() - 1) as f64;
+            (mean, var.sqrt())
+        };
+        let (m1, s1) = stats(&source.frame(&frame_with(0), 96e6, 0));
+        let (m2, s2) = stats(&source.frame(&frame_with(1), 96e6, 0));
+        assert!(m1 > 500.0 && m1 < 3000.0, "{m1}");
+        assert!((m2 / m1 - 1.0).abs() < 0.01, "mean {m1} unbinned, {m2} binned");
+        // Shot noise dominates the 2 DN read noise at these levels: the spread halves.
+        let ratio = s2 / s1;
+        assert!((0.45..0.6).contains(&ratio), "spread {s1} unbinned, {s2} binned: {ratio}");
     }
 }
