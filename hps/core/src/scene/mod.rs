@@ -32,6 +32,7 @@ mod parse;
 mod primitive;
 mod sensors;
 mod shape;
+mod text;
 mod xform;
 
 pub use brdf_material::{Anisotropic, BrdfData, BrdfFunc, NormalFamily, NormalFractions};
@@ -47,6 +48,7 @@ pub use material::{
 pub use primitive::Primitive;
 pub use sensors::{load_sensors, parse_sensors, Sensor, SensorsError};
 pub use shape::{Cone, Cylinder, DistantSource, Polygon, Ring, Shape, Sphere, MIN_LENGTH_M};
+pub use text::{Mixtext, TextArgs, TextPattern, TextSource};
 pub use xform::MAX_ARRAY_COPIES;
 
 use error::utf8;
