@@ -307,3 +307,36 @@ proptest! {
         check_reader(&spliced)?;
     }
 }
+
+fn font_token() -> impl Strategy<Value = String> {
+    prop_oneof![
+        (0i32..300).prop_map(|n| n.to_string()),
+        Just("32 0".to_string()),
+        Just("-1".to_string()),
+        Just("99999999999".to_string()),
+        Just("\n".to_string()),
+        Just("#".to_string()),
+        "[a-z.+-]{1,3}",
+    ]
+}
+
+proptest! {
+    /// Random font files, and the test font cut and spliced: the reader and the text laid out
+    /// in it (the `fnt` fuzz harness) never panic, and an error names the file.
+    #[test]
+    fn random_and_mutated_font_files_never_panic(
+        tokens in prop::collection::vec(font_token(), 0..60),
+        cut in any::<prop::sample::Index>(),
+        insert in font_token(),
+    ) {
+        let harness = skylux_hps::fuzzing::harness("fnt").unwrap();
+        harness(tokens.join(" ").as_bytes());
+        let font = include_str!("fixtures/text/block.fnt");
+        let at = cut.index(font.len() + 1);
+        let mut cut_short = font.as_bytes().to_vec();
+        cut_short.truncate(at);
+        harness(&cut_short);
+        let spliced = format!("{} {insert} {}", &font[..at], &font[at..]);
+        harness(spliced.as_bytes());
+    }
+}

@@ -13,7 +13,7 @@ use super::function::{
     FunctionArgs,
 };
 use super::parse::{PrimitiveType, RawPrimitive};
-use super::text::{text_args, text_pattern, Mixtext, TextPattern};
+use super::text::{text_args, text_pattern, TextArgs, TextPattern};
 use glam::DVec3;
 use std::path::Path;
 
@@ -315,6 +315,18 @@ pub struct Mixdata {
     pub background: ModifierRef,
     /// One function (of the interpolated value), one data file, the coordinates.
     pub data: DataPattern,
+    /// As [`Mixfunc::pattern`].
+    pub pattern: bool,
+}
+
+/// `mixtext`: the foreground modifier inside the glyphs of a text, the background one
+/// elsewhere (manual §2.1.6, `src/rt/text.c`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mixtext {
+    pub foreground: ModifierRef,
+    pub background: ModifierRef,
+    /// The font, the text and where it lies (`text.rs`).
+    pub text: TextArgs,
     /// As [`Mixfunc::pattern`].
     pub pattern: bool,
 }

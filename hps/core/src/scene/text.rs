@@ -4,14 +4,13 @@
 //!
 //! Strings: `fontfile textfile`, or `fontfile . word ..` for one line of words (text.c
 //! takes the words after the second string whatever that string is); `mixtext` names its
-//! foreground and background modifiers first. Reals: the upper-left anchor `Ax Ay Az`, the
+//! foreground and background modifiers first (`material::Mixtext`, beside the other mixtures). Reals: the upper-left anchor `Ax Ay Az`, the
 //! right and down motion vectors (one character cell each), then for `brighttext` the
 //! foreground and background brightness, for `colortext` the two colours, and last an
 //! optional character spacing. The engine reads the font and the text file
 //! (`engine::function::text`); here the arguments are only split and counted.
 
 use super::error::{ArgumentList, SceneError};
-use super::material::ModifierRef;
 use super::parse::{PrimitiveType, RawPrimitive};
 use glam::DVec3;
 use std::path::PathBuf;
@@ -55,16 +54,6 @@ pub struct TextPattern {
     pub foreground_rgb: DVec3,
     /// Multiplies it elsewhere, outside the text's box included.
     pub background_rgb: DVec3,
-}
-
-/// `mixtext`: the foreground modifier inside the glyphs, the background one elsewhere.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Mixtext {
-    pub foreground: ModifierRef,
-    pub background: ModifierRef,
-    pub text: TextArgs,
-    /// As [`super::Mixfunc::pattern`]: both sides reach no material.
-    pub pattern: bool,
 }
 
 /// The font, text and placement of a text pattern whose font is string argument
