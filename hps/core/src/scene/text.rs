@@ -4,10 +4,10 @@
 //!
 //! Strings: `fontfile textfile`, or `fontfile . word ..` for one line of words (text.c
 //! takes the words after the second string whatever that string is); `mixtext` names its
-//! foreground and background modifiers first (`material::Mixtext`, beside the other mixtures). Reals: the upper-left anchor `Ax Ay Az`, the
-//! right and down motion vectors (one character cell each), then for `brighttext` the
-//! foreground and background brightness, for `colortext` the two colours, and last an
-//! optional character spacing. The engine reads the font and the text file
+//! foreground and background modifiers first (`material::Mixtext`, beside the other
+//! mixtures). Reals: the upper-left anchor `Ax Ay Az`, the right and down motion vectors
+//! (one character cell each), then for `brighttext` the foreground and background
+//! brightness, for `colortext` the two colours, and last an optional character spacing. The engine reads the font and the text file
 //! (`engine::function::text`); here the arguments are only split and counted.
 
 use super::error::{ArgumentList, SceneError};
