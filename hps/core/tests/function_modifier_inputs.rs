@@ -1,5 +1,6 @@
 //! Bad input to function modifiers: a malformed `.cal` file, an unknown variable, a missing
-//! `.cal` or data file, a malformed data file, a data file of the wrong dimension are each a
+//! `.cal` or data file, a malformed data file, a data file of the wrong dimension, a text
+//! pattern's missing or malformed font or missing text file are each a
 //! clear error naming the scene file and line and the `.cal`/`.dat` file, never a panic; and
 //! the data-file reader, fuzzed with random and mutated files, never panics, always answers
 //! quickly, and interpolates to finite values.
@@ -78,6 +79,60 @@ fn a_bad_data_file_is_named_with_its_line() {
     let scene = scene.replace("same bad.dat", "nofunc bad.dat");
     let err = engine_error(&scene, &[cal, ("bad.dat", "1\n0 1 2\n1 2\n")]);
     assert_names(&err, 1, &["nofunc", "not defined"]);
+}
+
+/// A text pattern whose font is missing or malformed, whose text file is missing, or whose
+/// motion vectors span no plane: an error naming the scene file and line, the pattern, and
+/// the font file with its line.
+#[test]
+fn text_pattern_files_and_vectors_are_named() {
+    let pattern = |strings: &str, vectors: &str| {
+        format!(
+            "# text\nvoid brighttext t {strings}\n0\n11 0 0 0 {vectors} 1 0.2\n\
+             t plastic m 0 0 5 .5 .5 .5 0 0\n{SURFACE}"
+        )
+    };
+    let plane = "1 0 0 0 -1 0";
+    let font = ("ok.fnt", "65 4 0 0 255 0 255 255 0 255\n32 0\n");
+    let err = engine_error(&pattern("3 absent.fnt . A", plane), &[]);
+    assert_names(
+        &err,
+        2,
+        &["brighttext `t`", "font file absent.fnt", "not found"],
+    );
+    let bad = (
+        "bad.fnt",
+        "# two glyphs\n65 3 0 0 9 0 9 9\n66 3 0 0 300 0 9 9\n",
+    );
+    let err = engine_error(&pattern("3 bad.fnt . AB", plane), &[bad]);
+    assert_names(
+        &err,
+        2,
+        &[
+            "brighttext `t`",
+            "bad.fnt, line 3",
+            "x of vertex 2 of character 66",
+        ],
+    );
+    let err = engine_error(
+        &pattern("3 bad.fnt . AB", plane),
+        &[("bad.fnt", "65 2 0\n")],
+    );
+    assert_names(&err, 2, &["bad.fnt, line 1", "y of vertex 1"]);
+    let err = engine_error(&pattern("2 ok.fnt absent.txt", plane), &[font]);
+    assert_names(
+        &err,
+        2,
+        &["brighttext `t`", "text file absent.txt", "not found"],
+    );
+    let err = engine_error(&pattern("3 ok.fnt . A", "1 0 0 2 0 0"), &[font]);
+    assert_names(&err, 2, &["brighttext `t`", "illegal motion vectors"]);
+    // The same font and text load.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join(font.0), font.1).unwrap();
+    let path = dir.path().join("room.rad");
+    std::fs::write(&path, pattern("3 ok.fnt . A", plane)).unwrap();
+    World::new(&scene::load_files(&[&path]).unwrap()).unwrap();
 }
 
 #[test]
@@ -250,5 +305,38 @@ proptest! {
         spliced.push(' ');
         spliced.push_str(&text[at..]);
         check_reader(&spliced)?;
+    }
+}
+
+fn font_token() -> impl Strategy<Value = String> {
+    prop_oneof![
+        (0i32..300).prop_map(|n| n.to_string()),
+        Just("32 0".to_string()),
+        Just("-1".to_string()),
+        Just("99999999999".to_string()),
+        Just("\n".to_string()),
+        Just("#".to_string()),
+        "[a-z.+-]{1,3}",
+    ]
+}
+
+proptest! {
+    /// Random font files, and the test font cut and spliced: the reader and the text laid out
+    /// in it (the `fnt` fuzz harness) never panic, and an error names the file.
+    #[test]
+    fn random_and_mutated_font_files_never_panic(
+        tokens in prop::collection::vec(font_token(), 0..60),
+        cut in any::<prop::sample::Index>(),
+        insert in font_token(),
+    ) {
+        let harness = skylux_hps::fuzzing::harness("fnt").unwrap();
+        harness(tokens.join(" ").as_bytes());
+        let font = include_str!("fixtures/text/block.fnt");
+        let at = cut.index(font.len() + 1);
+        let mut cut_short = font.as_bytes().to_vec();
+        cut_short.truncate(at);
+        harness(&cut_short);
+        let spliced = format!("{} {insert} {}", &font[..at], &font[at..]);
+        harness(spliced.as_bytes());
     }
 }

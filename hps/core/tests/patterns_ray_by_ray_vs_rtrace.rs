@@ -9,7 +9,10 @@
 //!   and its extrapolation past the picture's edge, the functions of the three channels;
 //! - `mixpict`: two plastics mixed by the picture;
 //! - a pattern mixture (a `mixfunc` of a picture and stripes) under an alias;
-//! - a patterned pane of `glass` between the sun and the floor.
+//! - a patterned pane of `glass` between the sun and the floor;
+//! - the text patterns (`brighttext`, `colortext`, `mixtext`) in a font of our own
+//!   (`tests/fixtures/text/block.fnt`): inline words and a text file found on RAYPATH,
+//!   uniform, proportional and squeezed spacing, a mixture of two plastics, under `!xform`.
 
 mod common;
 
@@ -78,8 +81,8 @@ fn compare_scene(
     what: &str,
     bin: &std::path::Path,
     lib: &Option<std::path::PathBuf>,
-) {
-    compare_scene_from(dir, text, what, 1.0, bin, lib);
+) -> Vec<DVec3> {
+    compare_scene_from(dir, text, what, 1.0, bin, lib)
 }
 
 /// [`compare_scene`] with the rays starting at `height_m` above the floor.
@@ -90,7 +93,7 @@ fn compare_scene_from(
     height_m: f64,
     bin: &std::path::Path,
     lib: &Option<std::path::PathBuf>,
-) {
+) -> Vec<DVec3> {
     let scene_path = dir.join("scene.rad");
     std::fs::write(&scene_path, text).unwrap();
     let world = World::new(&scene::load_files(&[&scene_path]).unwrap()).unwrap();
@@ -140,6 +143,7 @@ fn compare_scene_from(
     let spread = theirs.iter().map(|c| c.x).fold(f64::MIN, f64::max)
         - theirs.iter().map(|c| c.x).fold(f64::MAX, f64::min);
     assert!(spread > 0.1 * (sum.x / rays.len() as f64), "a flat picture");
+    theirs
 }
 
 #[test]
@@ -308,6 +312,157 @@ fn patterned_glass_matches_rtrace() {
          grey polygon floor 0 0 12 0 0 0 4 0 0 4 3 0 0 3 0\n";
     // Rays start between the pane and the floor.
     compare_scene_from(dir.path(), text, "patterned glass", 1.0, &bin, &lib);
+}
+
+/// Our test font (written for these tests, RADIANCE's `.fnt` format) and a three-line text
+/// file: glyphs the font lacks (`?`), spaces, a run of three spaces (an indent for
+/// proportional spacing), a glyph with a hole (`O`) and a narrow one (`.`).
+fn text_fixtures(dir: &std::path::Path) -> std::path::PathBuf {
+    let fixtures = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/text");
+    for name in ["block.fnt", "label.txt"] {
+        std::fs::copy(fixtures.join(name), dir.join(name)).unwrap();
+    }
+    fixtures.join("block.fnt")
+}
+
+/// Floor and sun for the text patterns: `label` modifies the plastic `paper` (or is the
+/// floor's material when `label_is_material`).
+fn text_scene(pattern: &str, label_is_material: bool) -> String {
+    let floor = if label_is_material {
+        "label polygon floor 0 0 12 0 0 0 4 0 0 4 3 0 0 3 0\n"
+    } else {
+        "label plastic paper 0 0 5 0.6 0.6 0.6 0 0\n\
+         paper polygon floor 0 0 12 0 0 0 4 0 0 4 3 0 0 3 0\n"
+    };
+    format!(
+        "void light sunlight 0 0 3 2e4 2e4 2e4\n\
+         sunlight source sun 0 0 4 0.1 0.2 1 0.5\n\
+         {pattern}{floor}"
+    )
+}
+
+/// How many of rtrace's values are near `low` and near `high` in red (each ray is one or the
+/// other on a text pattern): both must be well represented for the comparison to test the
+/// glyphs and the background.
+fn foreground_and_background(theirs: &[DVec3], low: f64, high: f64) -> (usize, usize) {
+    let near = |v: f64, target: f64| (v - target).abs() <= 2e-3 * target.abs().max(1e-9);
+    (
+        theirs.iter().filter(|c| near(c.x, high)).count(),
+        theirs.iter().filter(|c| near(c.x, low)).count(),
+    )
+}
+
+/// The radiance of the 0.6 plastic (red) under the sun, times `scale`: rtrace's direct
+/// term, as [`mixpict_matches_rtrace`] computes a side.
+fn paper(scale: f64) -> f64 {
+    scale * 0.6 * 2e4 * 5.9808e-5 * (1.0 / 1.05f64.sqrt()) / std::f64::consts::PI
+}
+
+/// `brighttext` with inline words (the font named by its absolute path) and with the text
+/// file (found through RAYPATH, with proportional spacing): rays inside glyph strokes, in
+/// the holes and gaps between glyphs, and outside the text's box, ray by ray against rtrace.
+#[test]
+fn brighttext_matches_rtrace_ray_by_ray() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let font = text_fixtures(dir.path());
+    let inline = format!(
+        "void brighttext label 5 {} . SKY LUX OK?\n0\n\
+         11 0.2 2.8 0  0.4 0 0  0 -1.3 0  1 0.25\n",
+        font.display()
+    );
+    let theirs = compare_scene(
+        dir.path(),
+        &text_scene(&inline, false),
+        "brighttext inline",
+        &bin,
+        &lib,
+    );
+    let (inside, outside) = foreground_and_background(&theirs, paper(0.25), paper(1.0));
+    println!("brighttext inline: {inside} rays in glyphs, {outside} elsewhere");
+    assert!(inside >= 40 && outside >= 300, "{inside} in, {outside} out");
+    assert_eq!(inside + outside, theirs.len());
+    // The text file, three lines, proportional spacing 0.15 (a slanted down vector).
+    let file = "void brighttext label 2 block.fnt label.txt\n0\n\
+         12 0.1 2.9 0  0.5 0 0  0.1 -0.9 0  0.9 0.3 0.15\n";
+    let theirs = compare_scene(
+        dir.path(),
+        &text_scene(file, false),
+        "brighttext file, proportional",
+        &bin,
+        &lib,
+    );
+    let (inside, outside) = foreground_and_background(&theirs, paper(0.3), paper(0.9));
+    println!("brighttext file: {inside} rays in glyphs, {outside} elsewhere");
+    assert!(inside >= 60 && outside >= 200, "{inside} in, {outside} out");
+    assert_eq!(inside + outside, theirs.len());
+}
+
+/// `colortext` with squeezed spacing, the whole floor moved by `!xform` (rotated, scaled and
+/// translated: the anchor and the motion vectors go with it).
+#[test]
+fn colortext_under_xform_matches_rtrace_ray_by_ray() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    text_fixtures(dir.path());
+    let label = "void colortext label 5 block.fnt . LUX XYLO. IS\n0\n\
+         16 0.1 2.2 0  0.5 0 0  0 -1.2 0  0.9 0.5 0.2  0.2 0.4 0.7  -0.1\n";
+    std::fs::write(dir.path().join("label.rad"), text_scene(label, false)).unwrap();
+    let scene = "!xform -rz 12 -s 1.1 -t 0.3 -0.25 0 label.rad\n";
+    let theirs = compare_scene(dir.path(), scene, "colortext squeezed, xform", &bin, &lib);
+    // Red and blue change in opposite directions between glyph and background.
+    let glyph = theirs.iter().filter(|c| c.x > 2.0 * c.z).count();
+    let background = theirs.iter().filter(|c| c.z > 2.0 * c.x).count();
+    println!("colortext: {glyph} rays in glyphs, {background} on the background");
+    assert!(
+        glyph >= 40 && background >= 200,
+        "{glyph} in, {background} out"
+    );
+}
+
+/// `mixtext` of two plastics (the text file, spacing given as 0: uniform cells whose width
+/// is the font's mean glyph width, text.c's scale when the spacing argument is present),
+/// and `mixtext` of two patterns over one plastic.
+#[test]
+fn mixtext_matches_rtrace_ray_by_ray() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    text_fixtures(dir.path());
+    let materials = "void plastic red_paint 0 0 5 0.8 0.2 0.2 0 0\n\
+         void plastic blue_paint 0 0 5 0.2 0.2 0.8 0 0\n\
+         void mixtext label 4 red_paint blue_paint block.fnt label.txt\n0\n\
+         10 0.15 2.8 0  0.6 0 0  0 -0.85 0  0\n";
+    let theirs = compare_scene(
+        dir.path(),
+        &text_scene(materials, true),
+        "mixtext of two plastics",
+        &bin,
+        &lib,
+    );
+    let red = theirs.iter().filter(|c| c.x > 2.0 * c.z).count();
+    let blue = theirs.iter().filter(|c| c.z > 2.0 * c.x).count();
+    println!("mixtext: {red} rays red (glyphs), {blue} blue");
+    assert!(
+        red >= 60 && blue >= 300 && red + blue == theirs.len(),
+        "{red} red, {blue} blue"
+    );
+    let patterns = "void brightfunc dim 2 0.4 .\n0\n0\n\
+         void colorfunc warm 4 1 0.7 0.4 .\n0\n0\n\
+         void mixtext label 7 warm dim block.fnt . OK SKY XL\n0\n\
+         9 0.3 2.4 0  0.55 0 0  0 -1 0\n";
+    compare_scene(
+        dir.path(),
+        &text_scene(patterns, false),
+        "mixtext of two patterns",
+        &bin,
+        &lib,
+    );
 }
 
 /// rtrace's radiance along `rays` in `dir`'s `scene.rad`, at `-ab 0` and aimed at the

@@ -70,6 +70,50 @@ fn wrong_argument_counts_name_the_primitive_and_what_it_takes() {
     }
 }
 
+/// The text patterns: too few strings (no text file) or reals (no brightness, colour),
+/// integers, and a `mixtext` naming an undefined modifier.
+#[test]
+fn text_patterns_with_wrong_arguments_name_what_they_take() {
+    let place = "0 0 0 1 0 0 0 -1 0";
+    let cases: &[(String, &[&str])] = &[
+        (
+            format!("void brighttext t 1 font.fnt\n0\n11 {place} 1 0\n"),
+            &["brighttext `t`", "at least 2 (fontfile textfile"],
+        ),
+        (
+            format!("void brighttext t 2 font.fnt a.txt\n0\n10 {place} 1\n"),
+            &[
+                "brighttext `t`",
+                "at least 11 (Ax Ay Az",
+                "foreground background [spacing]",
+            ],
+        ),
+        (
+            format!("void colortext t 3 font.fnt . hello\n0\n11 {place} 1 1\n"),
+            &[
+                "colortext `t`",
+                "at least 15",
+                "rback gback bback [spacing]",
+            ],
+        ),
+        (
+            format!("void colortext t 2 font.fnt a.txt\n1 3\n15 {place} 1 1 1 0 0 0\n"),
+            &["colortext `t`", "integer"],
+        ),
+        (
+            format!("void mixtext t 3 m m font.fnt\n0\n9 {place}\n"),
+            &["mixtext `t`", "at least 4 (foreground background fontfile"],
+        ),
+        (
+            format!("void mixtext t 4 m nothing font.fnt a.txt\n0\n9 {place}\n"),
+            &["mixtext `t`", "background", "`nothing`"],
+        ),
+    ];
+    for (text, fragments) in cases {
+        assert_names(&error(text), 2, fragments);
+    }
+}
+
 #[test]
 fn out_of_range_values_are_refused() {
     assert_names(

@@ -12,6 +12,7 @@ mod campaign;
 mod checks;
 mod data_file;
 mod device;
+mod font;
 mod known_source;
 mod matrix;
 mod pictures;
@@ -38,6 +39,7 @@ pub const TARGETS: &[(&str, Harness)] = &[
     ("dc_matrix", matrix::dc_matrix),
     ("regions", regions::regions),
     ("known_source", known_source::known_source),
+    ("fnt", font::fnt),
 ];
 
 /// The harness named `name`, if this crate has one.

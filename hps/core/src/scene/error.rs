@@ -7,7 +7,7 @@ use std::sync::Arc;
 /// The primitive types Skylux reads, as listed in [`SceneError::UnsupportedType`] messages.
 pub const SUPPORTED_TYPES: &str =
     "plastic, metal, trans, glass, mirror, light, glow, BRTDfunc, mixfunc, brightfunc, colorfunc, \
-     brightdata, colordata, colorpict, texfunc, texdata, mixdata, mixpict, plasfunc, metfunc, \
+     brightdata, colordata, colorpict, texfunc, texdata, mixdata, mixpict, brighttext, colortext, mixtext, plasfunc, metfunc, \
      transfunc, plasdata, metdata, transdata, plastic2, metal2, trans2, BSDF, aBSDF, \
      dielectric, interface, spotlight, illum, antimatter, alias (modifiers) and polygon, \
      sphere, cylinder, ring, cone, source, bubble, tube, cup (surfaces)";

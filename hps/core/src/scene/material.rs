@@ -13,6 +13,7 @@ use super::function::{
     FunctionArgs,
 };
 use super::parse::{PrimitiveType, RawPrimitive};
+use super::text::{text_args, text_pattern, TextArgs, TextPattern};
 use glam::DVec3;
 use std::path::Path;
 
@@ -78,6 +79,12 @@ pub enum ModifierKind {
     BrdfFunc(BrdfFunc),
     /// `plastic2`, `metal2`, `trans2`.
     Anisotropic(Anisotropic),
+    /// `brighttext`: grey values inside and outside the glyphs of a text (`text.rs`).
+    Brighttext(TextPattern),
+    /// `colortext`: colours inside and outside the glyphs.
+    Colortext(TextPattern),
+    /// `mixtext`: one modifier inside the glyphs, another outside.
+    Mixtext(Mixtext),
 }
 
 impl ModifierKind {
@@ -124,6 +131,9 @@ impl ModifierKind {
                 NormalFamily::Metal => "metal2",
                 NormalFamily::Trans => "trans2",
             },
+            ModifierKind::Brighttext(_) => "brighttext",
+            ModifierKind::Colortext(_) => "colortext",
+            ModifierKind::Mixtext(_) => "mixtext",
         }
     }
 
@@ -134,6 +144,7 @@ impl ModifierKind {
         match self {
             ModifierKind::Mixfunc(m) => !m.pattern,
             ModifierKind::Mixdata(m) | ModifierKind::Mixpict(m) => !m.pattern,
+            ModifierKind::Mixtext(m) => !m.pattern,
             _ => !matches!(
                 self,
                 ModifierKind::Brightfunc(_)
@@ -143,12 +154,14 @@ impl ModifierKind {
                     | ModifierKind::Colorpict(_)
                     | ModifierKind::Texfunc(_)
                     | ModifierKind::Texdata(_)
+                    | ModifierKind::Brighttext(_)
+                    | ModifierKind::Colortext(_)
             ),
         }
     }
 
     /// Modifiers whose values are evaluated at each hit (`.cal` expressions, data files,
-    /// pictures): the engine builds them in `engine::function` (a `brightfunc` on a `light`
+    /// pictures, text): the engine builds them in `engine::function` (a `brightfunc` on a `light`
     /// or `glow` aside, which is a sky function).
     pub fn is_evaluated(&self) -> bool {
         matches!(
@@ -166,6 +179,9 @@ impl ModifierKind {
                 | ModifierKind::BrtdFunc(_)
                 | ModifierKind::BrdfFunc(_)
                 | ModifierKind::Anisotropic(_)
+                | ModifierKind::Brighttext(_)
+                | ModifierKind::Colortext(_)
+                | ModifierKind::Mixtext(_)
         )
     }
 
@@ -179,6 +195,7 @@ impl ModifierKind {
             ModifierKind::Mixdata(m) | ModifierKind::Mixpict(m) => {
                 m.pattern = sides_are_patterns(m.foreground, m.background)
             }
+            ModifierKind::Mixtext(m) => m.pattern = sides_are_patterns(m.foreground, m.background),
             _ => {}
         }
     }
@@ -298,6 +315,18 @@ pub struct Mixdata {
     pub background: ModifierRef,
     /// One function (of the interpolated value), one data file, the coordinates.
     pub data: DataPattern,
+    /// As [`Mixfunc::pattern`].
+    pub pattern: bool,
+}
+
+/// `mixtext`: the foreground modifier inside the glyphs of a text, the background one
+/// elsewhere (manual §2.1.6, `src/rt/text.c`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mixtext {
+    pub foreground: ModifierRef,
+    pub background: ModifierRef,
+    /// The font, the text and where it lies (`text.rs`).
+    pub text: TextArgs,
     /// As [`Mixfunc::pattern`].
     pub pattern: bool,
 }
@@ -520,6 +549,18 @@ pub(crate) fn build(
         | PrimitiveType::Transdata => ModifierKind::BrdfFunc(brdf_func(raw)?),
         PrimitiveType::Plastic2 | PrimitiveType::Metal2 | PrimitiveType::Trans2 => {
             ModifierKind::Anisotropic(anisotropic(raw)?)
+        }
+        PrimitiveType::Brighttext => ModifierKind::Brighttext(text_pattern(raw)?),
+        PrimitiveType::Colortext => ModifierKind::Colortext(text_pattern(raw)?),
+        PrimitiveType::Mixtext => {
+            let text = text_args(raw, 2)?;
+            let (foreground, background) = mixture_sides(raw, resolve)?;
+            ModifierKind::Mixtext(Mixtext {
+                foreground,
+                background,
+                text,
+                pattern: false,
+            })
         }
         PrimitiveType::Polygon
         | PrimitiveType::Sphere

@@ -32,6 +32,7 @@ mod parse;
 mod primitive;
 mod sensors;
 mod shape;
+mod text;
 mod xform;
 
 pub use brdf_material::{Anisotropic, BrdfData, BrdfFunc, NormalFamily, NormalFractions};
@@ -41,12 +42,13 @@ pub use expand::{LoadOptions, MAX_INCLUDE_DEPTH, MAX_PRIMITIVES};
 pub use function::{BrtdFunc, DataPattern, FunctionArgs, FunctionTransform};
 pub use material::{
     Antimatter, Brightfunc, Dielectric, Glass, Glow, Illum, Light, Medium, Metal, Mirror, Mixdata,
-    Mixfunc, ModifierId, ModifierKind, ModifierRef, Plastic, Spotlight, Trans,
+    Mixfunc, Mixtext, ModifierId, ModifierKind, ModifierRef, Plastic, Spotlight, Trans,
     GLASS_DEFAULT_REFRACTIVE_INDEX, HARTMANN_MEAN_WAVELENGTH_NM,
 };
 pub use primitive::Primitive;
 pub use sensors::{load_sensors, parse_sensors, Sensor, SensorsError};
 pub use shape::{Cone, Cylinder, DistantSource, Polygon, Ring, Shape, Sphere, MIN_LENGTH_M};
+pub use text::{TextArgs, TextPattern, TextSource};
 pub use xform::MAX_ARRAY_COPIES;
 
 use error::utf8;

@@ -218,6 +218,9 @@ pub(crate) fn build(raw: &RawPrimitive<'_>) -> Result<Shape, SceneError> {
         | PrimitiveType::Texdata
         | PrimitiveType::Mixdata
         | PrimitiveType::Mixpict
+        | PrimitiveType::Brighttext
+        | PrimitiveType::Colortext
+        | PrimitiveType::Mixtext
         | PrimitiveType::BrtdFunc
         | PrimitiveType::Plasfunc
         | PrimitiveType::Metfunc

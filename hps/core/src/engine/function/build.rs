@@ -106,7 +106,10 @@ fn modulation(
         kind if !kind.is_material()
             && matches!(
                 kind,
-                ModifierKind::Mixfunc(_) | ModifierKind::Mixdata(_) | ModifierKind::Mixpict(_)
+                ModifierKind::Mixfunc(_)
+                    | ModifierKind::Mixdata(_)
+                    | ModifierKind::Mixpict(_)
+                    | ModifierKind::Mixtext(_)
             ) =>
         {
             let (coefficient, [f, b]) = mix_parts(m, loader)?.expect("a mixture has two sides");
@@ -126,6 +129,11 @@ fn modulation(
         }
         ModifierKind::Colorpict(d) => Modulation::Data(picture_lookup(m, d, loader)?),
         ModifierKind::Texdata(d) => Modulation::DataTexture(data_lookup(m, d, loader)?),
+        ModifierKind::Brighttext(t) | ModifierKind::Colortext(t) => Modulation::Text {
+            layout: loader.text(m, &t.text)?,
+            foreground_rgb: t.foreground_rgb,
+            background_rgb: t.background_rgb,
+        },
         other => {
             return Err(EngineError::Unsupported {
                 at: m.origin.clone(),
@@ -154,6 +162,10 @@ fn mix_parts(
             MixCoefficient::Data(picture_lookup(m, &x.data, loader)?),
             [x.foreground, x.background],
         ),
+        ModifierKind::Mixtext(x) => (
+            MixCoefficient::Text(loader.text(m, &x.text)?),
+            [x.foreground, x.background],
+        ),
         _ => return Ok(None),
     }))
 }
@@ -163,7 +175,7 @@ fn tilts(modulations: &[Modulation]) -> bool {
     modulations.iter().any(|m| match m {
         Modulation::Texture(_) | Modulation::DataTexture(_) => true,
         Modulation::Mixture { sides, .. } => sides.iter().any(|s| tilts(s)),
-        Modulation::Pattern(_) | Modulation::Data(_) => false,
+        Modulation::Pattern(_) | Modulation::Data(_) | Modulation::Text { .. } => false,
     })
 }
 
@@ -238,7 +250,10 @@ fn base(
         ModifierKind::Anisotropic(a) => {
             VaryingBase::Anisotropic(Box::new(anisotropic(m, a, loader)?))
         }
-        ModifierKind::Mixdata(_) | ModifierKind::Mixpict(_) | ModifierKind::Mixfunc(_) => {
+        ModifierKind::Mixdata(_)
+        | ModifierKind::Mixpict(_)
+        | ModifierKind::Mixfunc(_)
+        | ModifierKind::Mixtext(_) => {
             let (coefficient, sides) = mix_parts(m, loader)?.expect("a mixture has two sides");
             mixture(scene, coefficient, sides, surface, loader)?
         }
@@ -333,7 +348,7 @@ fn anisotropic(
     })
 }
 
-/// A `mixfunc` or `mixdata` of the `sides` (foreground, background).
+/// A `mixfunc`, `mixdata`, `mixpict` or `mixtext` of the `sides` (foreground, background).
 fn mixture(
     scene: &Scene,
     coefficient: MixCoefficient,

@@ -4,9 +4,11 @@
 //! the program, so nothing is parsed per ray.
 
 use super::data::DataArray;
+use super::font::Font;
+use super::text::{text_file_lines, TextLayout};
 use crate::cal::{CalContext, CalError, CalProgram, Evaluator};
 use crate::engine::error::EngineError;
-use crate::scene::{FunctionArgs, Modifier, SourceLocation};
+use crate::scene::{FunctionArgs, Modifier, SourceLocation, TextArgs, TextSource};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -29,7 +31,13 @@ pub struct FunctionLoader {
     data: HashMap<PathBuf, Arc<DataArray>>,
     /// Pictures read as three arrays (red, green, blue), by resolved path.
     pictures: HashMap<PathBuf, [Arc<DataArray>; 3]>,
+    /// Fonts read, by resolved path.
+    fonts: HashMap<PathBuf, Arc<Font>>,
 }
+
+/// Most bytes of a font or text file read: a bound on memory for outside data (RADIANCE's
+/// own font, helvet.fnt, is 60 KB).
+pub const MAX_TEXT_FILE_BYTES: u64 = 16 << 20;
 
 /// A modifier's expressions, compiled with its function file.
 #[derive(Debug)]
@@ -171,6 +179,66 @@ impl FunctionLoader {
         .map(Arc::new);
         self.pictures.insert(path, arrays.clone());
         Ok(arrays)
+    }
+
+    /// The text of a `brighttext`, `colortext` or `mixtext` laid out in its font: the font
+    /// and the text file found as data files are (text.c and font.c look both up on
+    /// RAYPATH), the font read once per file.
+    pub fn text(
+        &mut self,
+        modifier: &Modifier,
+        args: &TextArgs,
+    ) -> Result<Arc<TextLayout>, EngineError> {
+        let fail = |what: String| EngineError::Unsupported {
+            at: modifier.origin.clone(),
+            what: format!("{} `{}`: {what}", modifier.kind.type_name(), modifier.name),
+        };
+        let read = |what: &str, name: &str| -> Result<(PathBuf, Vec<u8>), EngineError> {
+            let path = find(name, &args.scene_dir).ok_or_else(|| {
+                fail(format!(
+                    "{what} file {name} not found on RAYPATH ({}) nor beside the scene file",
+                    raypath().join(":")
+                ))
+            })?;
+            let size = std::fs::metadata(&path)
+                .map_err(|e| fail(format!("{what} file {}: {e}", path.display())))?
+                .len();
+            if size > MAX_TEXT_FILE_BYTES {
+                return Err(fail(format!(
+                    "{what} file {}: {size} bytes, more than the {MAX_TEXT_FILE_BYTES} read",
+                    path.display()
+                )));
+            }
+            let bytes = std::fs::read(&path)
+                .map_err(|e| fail(format!("{what} file {}: {e}", path.display())))?;
+            Ok((path, bytes))
+        };
+        let font = match find(&args.font_file, &args.scene_dir).and_then(|p| self.fonts.get(&p)) {
+            Some(font) => font.clone(),
+            None => {
+                let (path, bytes) = read("font", &args.font_file)?;
+                let font = Arc::new(
+                    Font::parse(&path.display().to_string(), &bytes)
+                        .map_err(|e| fail(e.to_string()))?,
+                );
+                self.fonts.insert(path, font.clone());
+                font
+            }
+        };
+        let lines = match &args.text {
+            TextSource::Inline(words) => vec![words.as_bytes().to_vec()],
+            TextSource::File(name) => text_file_lines(&read("text", name)?.1),
+        };
+        TextLayout::new(
+            font,
+            lines,
+            args.anchor_m,
+            args.right_m,
+            args.down_m,
+            args.spacing,
+        )
+        .map(Arc::new)
+        .map_err(fail)
     }
 
     /// `rayinit.cal` (if RAYPATH has it) and the modifier's file, compiled once per file.

@@ -7,6 +7,7 @@
 use super::data::DataArray;
 use super::loader::CompiledFunction;
 use super::ray::FunctionRay;
+use super::text::TextLayout;
 use crate::engine::material::{
     AnisotropicMaterial, BrdfFunctionMaterial, BrtdMaterial, HitDependent, HitPoint, Material,
     Shading, ShadowCrossing,
@@ -26,8 +27,16 @@ pub enum Modulation {
     Data(DataLookup),
     /// `texdata`: three arrays and functions giving the perturbation.
     DataTexture(DataLookup),
-    /// A `mixfunc`, `mixdata` or `mixpict` of two patterns (or `void`): their colours and
-    /// perturbations blended by the coefficient, clamped to 0..1 (raytrace.c `raymixture`).
+    /// `brighttext` or `colortext`: multiplies the colour by one value inside the glyphs
+    /// and another elsewhere (text.c `do_text`).
+    Text {
+        layout: Arc<TextLayout>,
+        foreground_rgb: DVec3,
+        background_rgb: DVec3,
+    },
+    /// A `mixfunc`, `mixdata`, `mixpict` or `mixtext` of two patterns (or `void`): their
+    /// colours and perturbations blended by the coefficient, clamped to 0..1 (raytrace.c
+    /// `raymixture`; a coefficient of 0 or 1 takes one side alone, as text.c does).
     Mixture {
         coefficient: MixCoefficient,
         /// The foreground's and the background's patterns and textures.
@@ -54,6 +63,8 @@ pub enum MixCoefficient {
     Function(Arc<CompiledFunction>),
     /// `mixdata`: a function of a data file's value.
     Data(DataLookup),
+    /// `mixtext`: 1 inside the glyphs, 0 elsewhere.
+    Text(Arc<TextLayout>),
 }
 
 impl MixCoefficient {
@@ -62,6 +73,7 @@ impl MixCoefficient {
         match self {
             MixCoefficient::Function(f) => f.value(0, &function_ray(f, hit)),
             MixCoefficient::Data(d) => d.evaluate(hit, false).first().copied().unwrap_or(0.0),
+            MixCoefficient::Text(t) => f64::from(u8::from(t.is_foreground(hit.point_m))),
         }
     }
 }
@@ -241,11 +253,33 @@ fn modulate(modulations: &[Modulation], hit: &HitPoint) -> Modulated {
                     m.perturbation += to_scene_perturbation(DVec3::new(x, y, z), &d.coordinates);
                 }
             }
+            Modulation::Text {
+                layout,
+                foreground_rgb,
+                background_rgb,
+            } => {
+                m.color_rgb *= if layout.is_foreground(hit.point_m) {
+                    *foreground_rgb
+                } else {
+                    *background_rgb
+                };
+            }
             Modulation::Mixture { coefficient, sides } => {
                 let c = coefficient.at(hit).clamp(0.0, 1.0);
-                let (f, b) = (modulate(&sides[0], hit), modulate(&sides[1], hit));
-                m.color_rgb *= c * f.color_rgb + (1.0 - c) * b.color_rgb;
-                m.perturbation += c * f.perturbation + (1.0 - c) * b.perturbation;
+                // A coefficient of 1 or 0 takes one side alone (the other is not evaluated).
+                let blend = if c == 1.0 {
+                    modulate(&sides[0], hit)
+                } else if c == 0.0 {
+                    modulate(&sides[1], hit)
+                } else {
+                    let (f, b) = (modulate(&sides[0], hit), modulate(&sides[1], hit));
+                    Modulated {
+                        color_rgb: c * f.color_rgb + (1.0 - c) * b.color_rgb,
+                        perturbation: c * f.perturbation + (1.0 - c) * b.perturbation,
+                    }
+                };
+                m.color_rgb *= blend.color_rgb;
+                m.perturbation += blend.perturbation;
             }
         }
     }

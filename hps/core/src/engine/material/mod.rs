@@ -518,7 +518,10 @@ impl Material {
             | ModifierKind::Mixpict(_)
             | ModifierKind::BrtdFunc(_)
             | ModifierKind::BrdfFunc(_)
-            | ModifierKind::Anisotropic(_) => {
+            | ModifierKind::Anisotropic(_)
+            | ModifierKind::Brighttext(_)
+            | ModifierKind::Colortext(_)
+            | ModifierKind::Mixtext(_) => {
                 return Err(EngineError::Unsupported {
                     at: m.origin.clone(),
                     what: format!(
