@@ -1170,7 +1170,16 @@ impl TrueWorld {
             gain: 1.0,
             seed,
             footprint: crate::sensor::Footprint::Integrated,
-            small_sources: vec![],
+            // The disk can fall between the groups' centres where the circumsolar sky is
+            // too flat to reveal it.
+            small_sources: if sky.sun_cd_m2 > 0.0 {
+                vec![crate::sensor::SmallSource {
+                    direction: sky.sun_direction,
+                    radius_rad: sky.sun_cos_half.clamp(-1.0, 1.0).acos(),
+                }]
+            } else {
+                vec![]
+            },
         };
         let overhead_us = spec.effects.shutter_overhead_us;
         let Some(responses) = &self.responses else {

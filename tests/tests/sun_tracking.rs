@@ -183,11 +183,12 @@ fn partly_covered_is_flagged_at_any_group_size() {
         let size = 160usize;
         let span = (size as u32 / 2) * skip; // full-array pixels the window spans, half
         let even = |v: f64| ((v as i64 - span as i64).max(0) as u32) & !1;
+        // The frames integrate each group's whole cell: binned by the skip.
         let readout = Readout {
             col_start: even(p.x_px),
             row_start: even(p.y_px),
             skip,
-            bin: 1,
+            bin: Readout::largest_bin(skip),
         };
         let r = FrameRenderer {
             camera: &camera,
@@ -195,7 +196,11 @@ fn partly_covered_is_flagged_at_any_group_size() {
             raw_width: size,
             raw_height: size,
             footprint: Footprint::Integrated,
-            small_sources: vec![],
+            // The disk (5.3 px in radius) can fall between the groups' centres (8 px apart).
+            small_sources: vec![skylux_sim::sensor::SmallSource {
+                direction: sun,
+                radius_rad: 0.26645f64.to_radians(),
+            }],
         };
         let frames: Vec<_> = EXPOSURES_S
             .iter()

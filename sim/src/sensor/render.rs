@@ -67,8 +67,8 @@ pub enum Footprint {
 }
 
 /// A source that may be smaller than a group and fall between the groups' centres (the solar
-/// disk in groups of binned pixels): with [`Footprint::AsRead`], the groups within its reach
-/// are probed every 2 pixels.
+/// disk in groups of binned pixels): the groups within its reach are probed every 2 pixels
+/// and, where it is, integrated on a quarter-pixel grid.
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct SmallSource {
     pub direction: DVec3,
@@ -148,27 +148,23 @@ impl FrameRenderer<'_> {
                     }
                 });
                 let (x, y) = centre(i);
-                let near_small =
-                    self.footprint == Footprint::AsRead && self.near_a_small_source(x, y);
-                let (half_px, grid) = match self.footprint {
-                    // Groups are read as the sensor reads them; near a small source the
-                    // integration grid is fine enough (1/4 px) that a solar disk a few pixels
-                    // wide is integrated to within about 1 % (its limb's grid-counting error).
-                    Footprint::AsRead => {
-                        let half = f64::from(self.readout.bin.max(1));
-                        let fine = if near_small {
-                            (8.0 * half).ceil() as usize
-                        } else {
-                            0
-                        };
-                        (half, fine.max(16))
-                    }
-                    _ => (f64::from(self.readout.skip), 16),
+                let near_small = self.near_a_small_source(x, y);
+                let half_px = f64::from(match self.footprint {
+                    Footprint::AsRead => self.readout.bin.max(1),
+                    _ => self.readout.skip,
+                });
+                // Near a small source the integration grid is fine enough (1/4 px) that a
+                // solar disk a few pixels wide is integrated to within about 1 % (its limb's
+                // grid-counting error).
+                let grid = if near_small {
+                    ((8.0 * half_px).ceil() as usize).max(16)
+                } else {
+                    16
                 };
                 // A source smaller than the spacing of the groups (the solar disk in a
-                // group of binned pixels) can lie between all the centres: as read, the
-                // groups within its reach are also probed every 2 pixels, which no disk of
-                // more than 1.5 px radius escapes.
+                // group of binned pixels) can lie between all the centres: the groups
+                // within its reach are also probed every 2 pixels, which no disk of more
+                // than 1.5 px radius escapes.
                 let hidden = near_small && self.differs_inside(luminance_cd_m2, x, y, half_px, l);
                 if bends || hidden {
                     self.footprint_mean(luminance_cd_m2, x, y, half_px, grid, l) * v
