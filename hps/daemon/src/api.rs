@@ -74,6 +74,15 @@ struct Latest<'a> {
     #[serde(skip_serializing_if = "<[_]>::is_empty")]
     views: &'a [crate::views::ViewGlare],
     outdoor_horizontal_lux: f64,
+    /// The values outside physical bounds (`plausibility.rs`): a building acting on the
+    /// numbers must see that they are doubtful.
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    plausibility: &'a [String],
+    /// In simulation, the world's own values beside the measured ones.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    truth_outdoor_horizontal_lux: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    truth_illuminance: Option<&'a Vec<crate::cycle::SensorLux>>,
 }
 
 /// A response: status, content type, body.
@@ -107,6 +116,9 @@ pub fn respond(method: &str, url: &str, state: &ApiState) -> Response {
                     monte_carlo: r.monte_carlo.as_ref(),
                     views: &r.views,
                     outdoor_horizontal_lux: r.outdoor_horizontal_lux,
+                    plausibility: &r.plausibility,
+                    truth_outdoor_horizontal_lux: r.truth_outdoor_horizontal_lux,
+                    truth_illuminance: r.truth_illuminance.as_ref(),
                 })
                 .unwrap_or_default(),
             ),
@@ -325,6 +337,20 @@ mod tests {
             v["config_error"]["message"],
             "skyluxd.toml:3: capture.period_s"
         );
+        // A doubtful record says so in /v1/latest too.
+        let mut record = crate::cycle::CycleRecord::minimal("2017-05-08T12:00:00+02:00", "sim");
+        record.plausibility = vec!["outdoor_above_clear_sky_bound".into()];
+        let flagged = ApiState {
+            latest: Some(record),
+            ..ApiState::default()
+        };
+        let v: serde_json::Value =
+            serde_json::from_str(&respond("GET", "/v1/latest", &flagged).2).unwrap();
+        assert_eq!(
+            v["plausibility"],
+            serde_json::json!(["outdoor_above_clear_sky_bound"])
+        );
+        assert!(v.get("truth_illuminance").is_none(), "{v}");
         let m = respond("GET", "/v1/metrics", &degraded).2;
         assert!(m.contains("skyluxd_consecutive_failures 2"), "{m}");
         assert!(
