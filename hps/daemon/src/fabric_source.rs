@@ -469,6 +469,7 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
             .iter()
             .flat_map(|r| r.clone().map(move |k| (k, k - r.start)))
             .collect();
+        let mut previous_frame_number: Option<u32> = None;
         for (k, index_in_opening) in order {
             let slot = k as u8;
             let captured = self
@@ -481,7 +482,16 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                         "slot {slot}: no frame although the DMA counted it (ring overwritten?)"
                     ))
                 })?;
-            let (frame, flags) = self.unpack(&captured, index_in_opening)?;
+            // The sequencer numbers the frames it triggers: exposure k's frame follows
+            // exposure k-1's, across openings too. A slot holding another frame (a ring
+            // pointer that slipped) may carry the expected exposure index when each opening
+            // holds one exposure; its frame number does not.
+            let number = captured.descriptor.frame_number;
+            let order_flag = previous_frame_number
+                .filter(|p| number.wrapping_sub(*p) != 1)
+                .map(|p| format!("FRAME_ORDER {number} after {p}"));
+            previous_frame_number = Some(number);
+            let (frame, flags) = self.unpack(&captured, index_in_opening, order_flag)?;
             frames.push(frame);
             frame_flags.push(flags);
         }
@@ -533,9 +543,11 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
         &self,
         c: &CapturedFrame,
         exposure_index: usize,
+        order_flag: Option<String>,
     ) -> Result<(RawFrame, Vec<String>), SourceError> {
         let (w, h) = (self.plan.width_px as usize, self.plan.height_px as usize);
         let mut flags: Vec<String> = c.flag_names().iter().map(|n| n.to_string()).collect();
+        flags.extend(order_flag);
         if c.checksum_ok() == Some(false) {
             flags.push("CHECKSUM".into());
         }

@@ -1,0 +1,230 @@
+//! The behavioural fabric model (`skylux_sim::fabric_model`) under the daemon's real fabric
+//! path (`FabricSource` and the `skylux_hps::fpga` drivers):
+//!
+//! - on the tiny window of tests/fabric_sim.rs it returns the same frames, sample for
+//!   sample, and equivalent descriptors as the cycle-accurate core (`--ignored`: the core
+//!   takes about a minute);
+//! - its frames are the sensor model's samples and its exposures the sensor's formula;
+//! - the shield interlock holds: a limit the HPS writes above the ceiling is clamped, a
+//!   sequence that outlives the limit is closed with `SHIELD_LIMIT_HIT`.
+
+#![cfg(not(target_arch = "arm"))]
+
+mod common;
+
+use common::*;
+use skylux_bus::DmaMemory;
+use skylux_hps::fpga::Fabric;
+use skylux_regmap::descriptor::{self, Descriptor};
+use skylux_sim::fabric_model::{fabric_model, FabricModelConfig, ModelMemory, ModelRegisters};
+use skylux_sim::mt9p031::{Mt9p031, SceneSource};
+use skyluxd::config::{Config, Overrides};
+use skyluxd::fabric_source::{fabric_settings, FabricSource};
+use skyluxd::source::CaptureSource;
+use skyluxd::wait::PollWait;
+use std::sync::atomic::AtomicBool;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+const NOON: &str = "2017-05-08T12:00:00+02:00";
+
+/// tests/fabric_sim.rs's configuration: a 128 x 96 array window read with skip 8 (16 x 12
+/// samples), exposures of 300 and 1000 µs at gain 7.875.
+fn tiny_config(dir: &std::path::Path, source: &str) -> std::path::PathBuf {
+    config_with(
+        dir,
+        &[
+            (
+                "exposures_us = [1.0, 26.59, 707.1, 18803.0, 500000.0]",
+                "exposures_us = [300.0, 1000.0]",
+            ),
+            ("source = \"sim\"", &format!("source = \"{source}\"")),
+            ("gain = 1.0", "gain = 7.875"),
+            ("row_start = 54 ", "row_start = 924 "),
+            ("col_start = 16 ", "col_start = 1232 "),
+            ("width = 2592 ", "width = 128 "),
+            ("height = 1944\n", "height = 96\n"),
+            ("skip = 1 ", "skip = 8 "),
+            ("frame_timeout_s = 2.0 ", "frame_timeout_s = 120.0 "),
+        ],
+        "",
+    )
+}
+
+struct Scene(Arc<Mutex<SceneSource>>);
+impl skylux_sim::mt9p031::PixelSource for Scene {
+    fn frame(
+        &mut self,
+        settings: &skylux_sim::mt9p031::FrameSettings,
+        pixclk_hz: f64,
+        frame_index: u64,
+    ) -> skylux_hps::campaign::RawFrame {
+        self.0.lock().unwrap().frame(settings, pixclk_hz, frame_index)
+    }
+}
+
+type ModelSource = FabricSource<ModelRegisters, ModelMemory, PollWait>;
+
+/// `FabricSource` over the model with the core rig's access costs, the noon sky of the
+/// simulated world, and the configuration's seed (as `sim_fabric_source` builds the core).
+fn model_source(
+    config: &Config,
+) -> (
+    ModelSource,
+    skylux_sim::fabric_model::SharedFabric,
+    skylux_hps::camera::DeviceConfig,
+) {
+    let (device, _) = skylux_hps::camera::DeviceConfig::read(&config.camera.device).unwrap();
+    let settings = fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, true);
+    let at = chrono::DateTime::parse_from_rfc3339(NOON).unwrap();
+    let site = skylux_hps::sun::Site {
+        latitude_deg: config.site.latitude_deg,
+        longitude_deg: config.site.longitude_deg,
+        elevation_m: config.site.elevation_m,
+    };
+    let scene = Arc::new(Mutex::new(SceneSource {
+        camera: skylux_hps::camera::CameraModel::new(device.clone()),
+        luminance_cd_m2: Box::new(skyluxd::source::sim_world(&site, config.sim.sky, at).unwrap()),
+        noise_seed: Some(config.sim.seed),
+        channel_response: skylux_sim::sensor::ChannelResponse::GREY,
+    }));
+    let sensor = Mt9p031::new(Box::new(Scene(scene)), settings.pixclk_hz);
+    let (shared, regs, memory) = fabric_model(sensor, FabricModelConfig::new(1 << 20));
+    let wait = PollWait {
+        max_polls: 500_000,
+        pause: Duration::ZERO,
+    };
+    let stop = Arc::new(AtomicBool::new(false));
+    let source = FabricSource::new(regs, memory, wait, settings, stop).unwrap();
+    (source, shared, device)
+}
+
+/// The descriptors left in the ring after a capture (the source clears word 0 of each slot
+/// when it releases it; the rest is as the fabric wrote it).
+fn descriptors(memory: &mut dyn DmaMemory, stride: u64, n: usize) -> Vec<Descriptor> {
+    (0..n)
+        .map(|k| {
+            let mut b = [0u8; descriptor::BYTES as usize];
+            memory.read_bytes(k as u64 * stride, &mut b).unwrap();
+            let mut w = [0u32; descriptor::WORDS];
+            for (i, c) in b.chunks_exact(4).enumerate() {
+                w[i] = u32::from_le_bytes([c[0], c[1], c[2], c[3]]);
+            }
+            w[descriptor::word::FORMAT] = descriptor::FORMAT_ID;
+            Descriptor::decode(&w).unwrap()
+        })
+        .collect()
+}
+
+#[test]
+fn model_frames_are_the_sensor_samples_and_the_interlock_holds() {
+    let tmp = tempfile::tempdir().unwrap();
+    let config = Config::load(&tiny_config(tmp.path(), "fabric-model"), &Overrides::default())
+        .unwrap();
+    let (mut source, shared, _) = model_source(&config);
+    let at = chrono::DateTime::parse_from_rfc3339(NOON).unwrap();
+    let began = Instant::now();
+    let set = source.capture(at).unwrap();
+    assert!(began.elapsed() < Duration::from_secs(5), "{:?}", began.elapsed());
+    assert!(set.frame_flags.iter().all(Vec::is_empty), "{:?}", set.frame_flags);
+    let m = shared.lock().unwrap();
+    assert_eq!(m.log.stuck_events, 0);
+    assert_eq!(m.log.frames.len(), 2);
+    for (got, sent) in set.frames.iter().zip(&m.log.frames) {
+        assert_eq!((got.width, got.height), (16, 12));
+        assert_eq!(got, sent);
+    }
+    // The exposures recorded are the sensor model's formula for the shutter widths written.
+    let g = skylux_sim::mt9p031::FrameGeometry::from_registers(&m.sensor.registers);
+    for (slot, e) in source.plan().slots.iter().zip(&set.config.exposure) {
+        let model = skylux_sim::mt9p031::timing::exposure_pixclk(
+            &g,
+            slot.shutter_width_rows,
+            0,
+            skylux_sim::mt9p031::ShutterOverhead::VariantA,
+        ) as f64
+            / 96e6
+            * 1e6;
+        assert!((e.exposure_us - model).abs() < 1e-9, "{} vs {model}", e.exposure_us);
+    }
+    assert!(m.log.shield_open_cycles_max > 0);
+    drop(m);
+
+    // The interlock: a limit above the ceiling is clamped; an exposure of 0.6 s outlives it.
+    // Polls of a microsecond each: the sequence runs 0.55 s of simulated time.
+    shared.lock().unwrap().config.read_cycles = 100;
+    let regs = ModelRegisters(shared.clone());
+    let mut fabric = Fabric::bring_up(regs).unwrap();
+    use skylux_bus::RegisterAccess;
+    use skylux_regmap::seq;
+    let bus = fabric.bus();
+    bus.write_reg(&seq::shield_limit::REG, 0, u32::MAX).unwrap();
+    let rows = (0.6 * 96e6 / source.plan().row_pixclk as f64) as u32;
+    fabric
+        .set_exposures(&[skylux_hps::fpga::ExposureSlot {
+            shutter_width_rows: rows,
+            shutter_delay: 0,
+            gain_code: 8,
+        }])
+        .unwrap();
+    let e = fabric.run_sequence(u64::MAX).unwrap_err();
+    assert!(
+        matches!(e, skylux_hps::fpga::sequence::SequenceError::ShieldLimit { frames: 1 }),
+        "{e}"
+    );
+    let m = shared.lock().unwrap();
+    assert!(
+        m.log.shield_open_cycles_max <= 55_000_000,
+        "{}",
+        m.log.shield_open_cycles_max
+    );
+    assert!(m.log.shield_open_cycles_max > 54_000_000);
+}
+
+/// The model against the cycle-accurate core on tests/fabric_sim.rs's window: the same
+/// samples, and descriptors equal but for the timestamps (which depend on the I2C master's
+/// clock-level timing the model approximates; they agree within 1 %).
+#[test]
+#[ignore = "runs the slow cycle-accurate core once (~1-3 min): run with --ignored"]
+fn model_and_cycle_accurate_core_give_the_same_frames_and_descriptors() {
+    let tmp = tempfile::tempdir().unwrap();
+    let config = Config::load(&tiny_config(tmp.path(), "fabric"), &Overrides::default()).unwrap();
+    let at = chrono::DateTime::parse_from_rfc3339(NOON).unwrap();
+    let (device, _) = skylux_hps::camera::DeviceConfig::read(&config.camera.device).unwrap();
+    let began = Instant::now();
+    let mut core =
+        skyluxd::fabric_source::sim_fabric_source(&config, &device, Arc::new(AtomicBool::new(false)))
+            .unwrap();
+    let core_set = core.capture(at).unwrap();
+    eprintln!("core capture: {:.1} s", began.elapsed().as_secs_f64());
+    let began = Instant::now();
+    let (mut model, shared, _) = model_source(&config);
+    let model_set = model.capture(at).unwrap();
+    eprintln!("model capture: {:.3} s", began.elapsed().as_secs_f64());
+    assert_eq!(core_set.frames.len(), 2);
+    assert_eq!(model_set.frames, core_set.frames, "samples differ");
+    assert_eq!(model_set.frame_flags, core_set.frame_flags);
+    assert_eq!(model_set.config.exposure, core_set.config.exposure);
+    let stride = {
+        let mut r = skylux_hps::fpga::CaptureConfig::fitted(16, 12, 0, 2);
+        r.grouping.raw = true;
+        r.slot_bytes_needed()
+    };
+    let mut core_memory = skylux_sim::core_rig::SimCoreMemory {
+        shared: core.rig.clone(),
+        port: skylux_sim::core_rig::Port::Frames,
+    };
+    let mut model_memory = ModelMemory(shared.clone());
+    let a = descriptors(&mut core_memory, stride, 2);
+    let b = descriptors(&mut model_memory, stride, 2);
+    for (k, (c, m)) in a.iter().zip(&b).enumerate() {
+        eprintln!("slot {k}: core {c:?}\n        model {m:?}");
+        let strip = |d: &Descriptor| Descriptor {
+            timestamp_cycles: 0,
+            ..*d
+        };
+        assert_eq!(strip(m), strip(c), "slot {k}");
+        let (tc, tm) = (c.timestamp_cycles as f64, m.timestamp_cycles as f64);
+        assert!((tm / tc - 1.0).abs() < 0.01, "slot {k}: timestamps {tc} vs {tm}");
+    }
+}
