@@ -29,7 +29,7 @@ pub struct FrameRx {
     pub width: u32,
     pub height: u32,
     pub bayer: BayerConfig,
-    /// The ingest opened the frame for the DMA (engine enabled and writer idle).
+    /// The ingest takes the frame for the DMA (the engine was enabled at its start marker).
     pub dma_taken: bool,
     pub tag_index: u32,
     pub tag_frame: u32,
@@ -88,7 +88,7 @@ impl FabricModel {
             width: capture::window::WIDTH.get(window),
             height: capture::window::HEIGHT.get(window),
             bayer,
-            dma_taken: dma_enabled && self.dma.job.is_none(),
+            dma_taken: dma_enabled,
             tag_index: s.tag_index,
             tag_frame: s.tag_frame,
             tag_time: s.tag_time,
@@ -195,7 +195,23 @@ impl FabricModel {
         self.capture.high_water = high_water as u32;
         self.capture_status(flags);
         if rx.dma_taken {
-            let latency = self.pix_to_sys(END_MARKER_DELAY) + stall;
+            // The stall begins a quarter into the frame (where its words are lost); the last
+            // beats leave once it has ended and the FIFOs have drained.
+            let (rise, fall) = self
+                .timeline
+                .frame
+                .as_ref()
+                .map(|f| (f.rise_at, f.fall_at))
+                .unwrap_or((self.now, self.now));
+            let stall_end = rise + (fall.saturating_sub(rise)) / 4 + stall;
+            let drained = if stall > 0 {
+                stall_end + STALL_CAPACITY_WORDS / 2
+            } else {
+                0
+            };
+            let latency = self
+                .pix_to_sys(END_MARKER_DELAY)
+                .max(drained.saturating_sub(self.now));
             let corrupt = faults.iter().find_map(|f| match *f {
                 HardwareFault::CorruptWord { word, xor } => Some((word, xor)),
                 _ => None,

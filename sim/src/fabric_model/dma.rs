@@ -41,7 +41,9 @@ pub struct DmaJob {
 /// The engine's state.
 #[derive(Clone, Debug, Default)]
 pub struct DmaEngine {
-    pub job: Option<DmaJob>,
+    /// Frames closed by the ingest, in order (a frame whose start marker found the writer
+    /// busy waits behind the one being written, as its marker waits in the FIFO).
+    pub jobs: std::collections::VecDeque<DmaJob>,
     /// Slot being written, or next to be written.
     pub slot: u8,
     /// `dma.frames_written`.
@@ -54,7 +56,7 @@ pub struct DmaEngine {
 
 impl DmaEngine {
     pub fn next_event(&self) -> Option<u64> {
-        self.job.as_ref().map(|j| j.done_at)
+        self.jobs.front().map(|j| j.done_at)
     }
 }
 
@@ -64,13 +66,16 @@ impl FabricModel {
     pub(super) fn dma_frame(&mut self, frame: FrameOut) {
         // The remainder burst (at most MAX_BURST_BEATS) and the descriptor burst.
         let beats = (frame.words.len() as u64).div_ceil(2).min(MAX_BURST_BEATS);
-        let done_at = self.now + frame.ready_after + beats + DESCRIPTOR_BEATS + 2;
-        self.dma.job = Some(DmaJob { done_at, frame });
+        let mut done_at = self.now + frame.ready_after + beats + DESCRIPTOR_BEATS + 2;
+        if let Some(last) = self.dma.jobs.back() {
+            done_at = done_at.max(last.done_at + beats + DESCRIPTOR_BEATS);
+        }
+        self.dma.jobs.push_back(DmaJob { done_at, frame });
     }
 
     /// `dma.ctrl.RESET`.
     pub(super) fn dma_restart(&mut self) {
-        if self.dma.job.is_some() {
+        if !self.dma.jobs.is_empty() {
             self.dma.restart_pending = true;
         } else {
             self.dma.slot = 0;
@@ -93,7 +98,10 @@ impl FabricModel {
     }
 
     pub(super) fn dma_events(&mut self) {
-        let Some(job) = self.dma.job.take_if(|j| j.done_at <= self.now) else {
+        if self.dma.jobs.front().is_none_or(|j| j.done_at > self.now) {
+            return;
+        }
+        let Some(job) = self.dma.jobs.pop_front() else {
             return;
         };
         let f = job.frame;
@@ -171,7 +179,7 @@ impl FabricModel {
     }
 
     pub(super) fn dma_inputs(&mut self) {
-        let busy = self.dma.job.is_some()
+        let busy = !self.dma.jobs.is_empty()
             || self.capture.current.as_ref().is_some_and(|c| c.dma_taken);
         let status = dma::status::BUSY.word(busy.into()) | dma::status::SLOT.word(self.dma.slot.into());
         self.regs.fabric_inputs.insert(dma::status::REG.offset, status);

@@ -226,26 +226,31 @@ impl FabricModel {
         self.regs.set_bits(sys::irq_status::REG.offset, field.mask());
     }
 
-    /// RO fields as they are now.
-    fn refresh_inputs(&mut self) {
-        let now = self.now;
-        let inputs = [
-            (sys::time_lo::REG.offset, now as u32),
-            (sys::time_hi::REG.offset, (now >> 32) as u32),
-        ];
-        for (o, v) in inputs {
-            self.regs.fabric_inputs.insert(o, v);
+    /// RO fields of the block at `offset` as they are now.
+    fn refresh_inputs(&mut self, offset: u32) {
+        use skylux_regmap::{capture, dma, i2c, seq};
+        match offset & !(skylux_regmap::BLOCK_SPAN_BYTES - 1) {
+            b if b == sys::BLOCK.base => {
+                let now = self.now;
+                self.regs
+                    .fabric_inputs
+                    .insert(sys::time_lo::REG.offset, now as u32);
+                self.regs
+                    .fabric_inputs
+                    .insert(sys::time_hi::REG.offset, (now >> 32) as u32);
+            }
+            b if b == i2c::BLOCK.base => self.i2c_inputs(),
+            b if b == seq::BLOCK.base => self.sequencer_inputs(),
+            b if b == capture::BLOCK.base => self.capture_inputs(),
+            b if b == dma::BLOCK.base => self.dma_inputs(),
+            _ => {}
         }
-        self.i2c_inputs();
-        self.sequencer_inputs();
-        self.capture_inputs();
-        self.dma_inputs();
     }
 
     /// A register read from the HPS.
     pub fn read_register(&mut self, offset: u32) -> u32 {
         self.run(self.config.read_cycles.saturating_sub(1));
-        self.refresh_inputs();
+        self.refresh_inputs(offset);
         let v = self.regs.read(offset);
         self.run(1.min(self.config.read_cycles));
         v
