@@ -1161,6 +1161,14 @@ dir = "out"
             .unwrap_err()
             .to_string();
         assert!(e.contains("gremlins"), "{e}");
+        // Hardware faults are the fabric model's: refused with the `sim` source, naming the
+        // field; accepted with `fabric-model`, refused with the cycle-accurate `fabric`.
+        let hw = text.replace("i2c_nack", "pixclk_stopped");
+        let e = parse(&hw).unwrap_err().to_string();
+        assert!(e.contains("sim.fault") && e.contains("fabric-model"), "{e}");
+        let model = hw.replace("[sim]\n", "[sim]\nsource = \"fabric-model\"\n");
+        assert_eq!(parse(&model).unwrap().sim.source, SimSourceKind::FabricModel);
+        assert!(parse(&model.replace("fabric-model", "fabric")).is_err());
     }
 
     #[test]
