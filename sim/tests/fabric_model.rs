@@ -26,7 +26,12 @@ const SHIELD: ShieldConfig = ShieldConfig {
 };
 
 /// A 32 x 16 window (skip 1), configured, with one exposure of 2 rows.
-fn rig() -> (SharedFabric, Fabric<ModelRegisters>, ModelMemory, CaptureConfig) {
+fn rig() -> (
+    SharedFabric,
+    Fabric<ModelRegisters>,
+    ModelMemory,
+    CaptureConfig,
+) {
     let sensor = Mt9p031::new(Box::new(RampSource), 96e6);
     let (shared, regs, memory) = fabric_model(sensor, FabricModelConfig::new(1 << 16));
     let mut f = Fabric::bring_up(regs).unwrap();
@@ -54,10 +59,7 @@ fn rig() -> (SharedFabric, Fabric<ModelRegisters>, ModelMemory, CaptureConfig) {
 #[test]
 fn i2c_watchdog_and_refusal() {
     let (shared, mut f, _, _) = rig();
-    shared
-        .lock()
-        .unwrap()
-        .inject(HardwareFault::SclStuckLow);
+    shared.lock().unwrap().inject(HardwareFault::SclStuckLow);
     let before = shared.lock().unwrap().now;
     assert!(matches!(
         f.sensor_read(0),
@@ -68,12 +70,16 @@ fn i2c_watchdog_and_refusal() {
     shared.lock().unwrap().clear_faults();
     assert_eq!(f.sensor_read(0).unwrap(), 0x1801);
     // The sequencer owns the master while it runs: an HPS transaction is refused.
-    f.bus().strobe(&seq::ctrl::REG, 0, &seq::ctrl::START).unwrap();
+    f.bus()
+        .strobe(&seq::ctrl::REG, 0, &seq::ctrl::START)
+        .unwrap();
     assert!(matches!(
         f.sensor_read(0),
         Err(SensorError::Refused { reg: 0 })
     ));
-    f.bus().strobe(&seq::ctrl::REG, 0, &seq::ctrl::ABORT).unwrap();
+    f.bus()
+        .strobe(&seq::ctrl::REG, 0, &seq::ctrl::ABORT)
+        .unwrap();
 }
 
 #[test]
@@ -110,7 +116,10 @@ fn grouped_words_are_the_golden_models_and_raw_the_samples() {
             skylux_rtl::bayer::golden::expected_words(&frame, &config)
         );
         assert_eq!(got.descriptor.raw, raw);
-        assert_eq!((got.descriptor.last_line_pixels, got.descriptor.lines), (32, 16));
+        assert_eq!(
+            (got.descriptor.last_line_pixels, got.descriptor.lines),
+            (32, 16)
+        );
     }
 }
 
@@ -141,7 +150,9 @@ fn ring_window_checks_truncation_and_abort() {
     f.bus()
         .write_reg(&dma::window_size::REG, 0, ring.window_size_bytes)
         .unwrap();
-    f.bus().strobe(&dma::ctrl::REG, 0, &dma::ctrl::RESET).unwrap();
+    f.bus()
+        .strobe(&dma::ctrl::REG, 0, &dma::ctrl::RESET)
+        .unwrap();
     f.run_sequence(1_000_000).unwrap();
     for _ in 0..100_000 {
         if f.frames_written().unwrap() >= 2 {
@@ -158,8 +169,12 @@ fn ring_window_checks_truncation_and_abort() {
         gain_code: 8,
     }])
     .unwrap();
-    f.bus().strobe(&seq::ctrl::REG, 0, &seq::ctrl::START).unwrap();
-    f.bus().strobe(&seq::ctrl::REG, 0, &seq::ctrl::ABORT).unwrap();
+    f.bus()
+        .strobe(&seq::ctrl::REG, 0, &seq::ctrl::START)
+        .unwrap();
+    f.bus()
+        .strobe(&seq::ctrl::REG, 0, &seq::ctrl::ABORT)
+        .unwrap();
     assert!(matches!(
         f.run_sequence(1_000_000),
         Err(SequenceError::Refused) | Err(SequenceError::Aborted { .. })
@@ -189,7 +204,10 @@ fn no_register_value_panics_the_model() {
         }
     }
     // Unmapped offsets and whatever the blocks now hold: still answers.
-    assert_eq!(bus.read32(0x0FF0).unwrap(), skylux_regmap::UNMAPPED_READ_VALUE);
+    assert_eq!(
+        bus.read32(0x0FF0).unwrap(),
+        skylux_regmap::UNMAPPED_READ_VALUE
+    );
     let m = shared.lock().unwrap();
     assert_eq!(m.log.stuck_events, 0);
 }

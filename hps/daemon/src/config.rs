@@ -835,7 +835,7 @@ impl SimConfig {
             if let Some(f) = self.faults.iter().find(|f| f.kind.hardware_only()) {
                 return refuse(
                     "fault",
-                    &format!(
+                    format!(
                         "kind \"{}\" is a hardware fault of the fabric model: set [sim] \
                          source = \"fabric-model\"",
                         f.kind.name()
@@ -1167,7 +1167,10 @@ dir = "out"
         let e = parse(&hw).unwrap_err().to_string();
         assert!(e.contains("sim.fault") && e.contains("fabric-model"), "{e}");
         let model = hw.replace("[sim]\n", "[sim]\nsource = \"fabric-model\"\n");
-        assert_eq!(parse(&model).unwrap().sim.source, SimSourceKind::FabricModel);
+        assert_eq!(
+            parse(&model).unwrap().sim.source,
+            SimSourceKind::FabricModel
+        );
         assert!(parse(&model.replace("fabric-model", "fabric")).is_err());
     }
 

@@ -432,9 +432,9 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                     frames_expected: expected,
                     waited_ms: (polls as f64 / clock * 1e3) as u64,
                 },
-                other => SourceError::Other(format!(
-                    "sequence (opening {opening}): {other}{status}"
-                )),
+                other => {
+                    SourceError::Other(format!("sequence (opening {opening}): {other}{status}"))
+                }
             })?;
             let timeout = s_timeout(&self.settings, self.plan.open_time_us[opening]);
             let n = range.len() as u32;

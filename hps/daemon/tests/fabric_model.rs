@@ -59,7 +59,10 @@ impl skylux_sim::mt9p031::PixelSource for Scene {
         pixclk_hz: f64,
         frame_index: u64,
     ) -> skylux_hps::campaign::RawFrame {
-        self.0.lock().unwrap().frame(settings, pixclk_hz, frame_index)
+        self.0
+            .lock()
+            .unwrap()
+            .frame(settings, pixclk_hz, frame_index)
     }
 }
 
@@ -119,14 +122,25 @@ fn descriptors(memory: &mut dyn DmaMemory, stride: u64, n: usize) -> Vec<Descrip
 #[test]
 fn model_frames_are_the_sensor_samples_and_the_interlock_holds() {
     let tmp = tempfile::tempdir().unwrap();
-    let config = Config::load(&tiny_config(tmp.path(), "fabric-model"), &Overrides::default())
-        .unwrap();
+    let config = Config::load(
+        &tiny_config(tmp.path(), "fabric-model"),
+        &Overrides::default(),
+    )
+    .unwrap();
     let (mut source, shared, _) = model_source(&config);
     let at = chrono::DateTime::parse_from_rfc3339(NOON).unwrap();
     let began = Instant::now();
     let set = source.capture(at).unwrap();
-    assert!(began.elapsed() < Duration::from_secs(5), "{:?}", began.elapsed());
-    assert!(set.frame_flags.iter().all(Vec::is_empty), "{:?}", set.frame_flags);
+    assert!(
+        began.elapsed() < Duration::from_secs(5),
+        "{:?}",
+        began.elapsed()
+    );
+    assert!(
+        set.frame_flags.iter().all(Vec::is_empty),
+        "{:?}",
+        set.frame_flags
+    );
     let m = shared.lock().unwrap();
     assert_eq!(m.log.stuck_events, 0);
     assert_eq!(m.log.frames.len(), 2);
@@ -145,7 +159,11 @@ fn model_frames_are_the_sensor_samples_and_the_interlock_holds() {
         ) as f64
             / 96e6
             * 1e6;
-        assert!((e.exposure_us - model).abs() < 1e-9, "{} vs {model}", e.exposure_us);
+        assert!(
+            (e.exposure_us - model).abs() < 1e-9,
+            "{} vs {model}",
+            e.exposure_us
+        );
     }
     assert!(m.log.shield_open_cycles_max > 0);
     drop(m);
@@ -169,7 +187,10 @@ fn model_frames_are_the_sensor_samples_and_the_interlock_holds() {
         .unwrap();
     let e = fabric.run_sequence(u64::MAX).unwrap_err();
     assert!(
-        matches!(e, skylux_hps::fpga::sequence::SequenceError::ShieldLimit { frames: 1 }),
+        matches!(
+            e,
+            skylux_hps::fpga::sequence::SequenceError::ShieldLimit { frames: 1 }
+        ),
         "{e}"
     );
     let m = shared.lock().unwrap();
@@ -192,9 +213,12 @@ fn model_and_cycle_accurate_core_give_the_same_frames_and_descriptors() {
     let at = chrono::DateTime::parse_from_rfc3339(NOON).unwrap();
     let (device, _) = skylux_hps::camera::DeviceConfig::read(&config.camera.device).unwrap();
     let began = Instant::now();
-    let mut core =
-        skyluxd::fabric_source::sim_fabric_source(&config, &device, Arc::new(AtomicBool::new(false)))
-            .unwrap();
+    let mut core = skyluxd::fabric_source::sim_fabric_source(
+        &config,
+        &device,
+        Arc::new(AtomicBool::new(false)),
+    )
+    .unwrap();
     let core_set = core.capture(at).unwrap();
     eprintln!("core capture: {:.1} s", began.elapsed().as_secs_f64());
     let began = Instant::now();
@@ -225,7 +249,10 @@ fn model_and_cycle_accurate_core_give_the_same_frames_and_descriptors() {
         };
         assert_eq!(strip(m), strip(c), "slot {k}");
         let (tc, tm) = (c.timestamp_cycles as f64, m.timestamp_cycles as f64);
-        assert!((tm / tc - 1.0).abs() < 0.01, "slot {k}: timestamps {tc} vs {tm}");
+        assert!(
+            (tm / tc - 1.0).abs() < 0.01,
+            "slot {k}: timestamps {tc} vs {tm}"
+        );
     }
 }
 
@@ -257,7 +284,10 @@ fn daemon_day(sky: &str, cycles: u64) -> Vec<serde_json::Value> {
     let text = std::fs::read_to_string(&log).unwrap();
     assert_eq!(status.code(), Some(0), "{text}");
     assert!(!text.contains("panicked"), "{text}");
-    eprintln!("{cycles} {sky} cycles in {:.1} s", began.elapsed().as_secs_f64());
+    eprintln!(
+        "{cycles} {sky} cycles in {:.1} s",
+        began.elapsed().as_secs_f64()
+    );
     let lines = complete_lines(&out.join("results.jsonl"));
     assert_eq!(lines.len() as u64, cycles, "{text}");
     lines
@@ -302,7 +332,10 @@ fn skyluxd_runs_daylight_cycles_on_the_fabric_model_at_full_frame() {
         r["outdoor_horizontal_lux"].as_f64().unwrap(),
         r["truth_outdoor_horizontal_lux"].as_f64().unwrap(),
     );
-    assert!(measured > 0.05 * truth && measured < 0.6 * truth, "{measured} vs {truth}");
+    assert!(
+        measured > 0.05 * truth && measured < 0.6 * truth,
+        "{measured} vs {truth}"
+    );
 }
 
 /// `skyluxd --sim` on the fabric model (full frame, skip 8: 324 x 244 samples) with the
@@ -357,7 +390,11 @@ fn fault_is_flagged_survived_and_followed_by_a_good_cycle(
     let message = h["last_error"]["message"].as_str().unwrap();
     assert!(message.contains(cause), "{message}");
     assert_eq!(h["status"], "ok", "{h}");
-    assert_eq!((h["cycles_ok"].as_u64(), h["cycles_failed"].as_u64()), (Some(2), Some(1)), "{h}");
+    assert_eq!(
+        (h["cycles_ok"].as_u64(), h["cycles_failed"].as_u64()),
+        (Some(2), Some(1)),
+        "{h}"
+    );
     // The good cycle after the fault: its frames were clean (a record), one capture later.
     let times: Vec<String> = complete_lines(&results)
         .iter()

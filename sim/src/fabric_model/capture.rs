@@ -245,7 +245,13 @@ impl FabricModel {
         let n = (lines as usize).min(h).min(rx.height as usize);
         let kept = w.min(rx.width as usize);
         let forwarded: Vec<Vec<u16>> = (0..n)
-            .map(|y| rx.samples.samples_dn[y * w..y * w + kept].to_vec())
+            .map(|y| {
+                rx.samples
+                    .samples_dn
+                    .get(y * w..y * w + kept)
+                    .map(<[u16]>::to_vec)
+                    .unwrap_or_default()
+            })
             .collect();
         let words = self.words_of(&forwarded, rx.width, &rx.bayer);
         self.capture_status(flag::PIXCLK_STOPPED);

@@ -108,7 +108,9 @@ impl FabricModel {
         let base = u64::from(self.stored(dma::window_base::REG.offset));
         let size = u64::from(self.stored(dma::window_size::REG.offset));
         let stride = u64::from(self.stored(dma::slot_stride::REG.offset));
-        let slots = dma::slots::COUNT.get(self.stored(dma::slots::REG.offset)).max(1) as u8;
+        let slots = dma::slots::COUNT
+            .get(self.stored(dma::slots::REG.offset))
+            .max(1) as u8;
         let mut slot = self.dma.slot % slots;
         let mut next = (slot + 1) % slots;
         if let Some(back) = self.dma.swap_back.take() {
@@ -179,10 +181,13 @@ impl FabricModel {
     }
 
     pub(super) fn dma_inputs(&mut self) {
-        let busy = !self.dma.jobs.is_empty()
-            || self.capture.current.as_ref().is_some_and(|c| c.dma_taken);
-        let status = dma::status::BUSY.word(busy.into()) | dma::status::SLOT.word(self.dma.slot.into());
-        self.regs.fabric_inputs.insert(dma::status::REG.offset, status);
+        let busy =
+            !self.dma.jobs.is_empty() || self.capture.current.as_ref().is_some_and(|c| c.dma_taken);
+        let status =
+            dma::status::BUSY.word(busy.into()) | dma::status::SLOT.word(self.dma.slot.into());
+        self.regs
+            .fabric_inputs
+            .insert(dma::status::REG.offset, status);
         self.regs
             .fabric_inputs
             .insert(dma::frames_written::REG.offset, self.dma.frames_written);

@@ -186,7 +186,9 @@ impl FabricModel {
 
     pub(super) fn i2c_inputs(&mut self) {
         let busy = i2c::status::BUSY.word(self.i2c.busy().into());
-        self.regs.fabric_inputs.insert(i2c::status::REG.offset, busy);
+        self.regs
+            .fabric_inputs
+            .insert(i2c::status::REG.offset, busy);
         self.regs.fabric_inputs.insert(
             i2c::read_data::REG.offset,
             i2c::read_data::DATA.word(self.i2c.read_data.into()),

@@ -223,7 +223,8 @@ impl FabricModel {
 
     /// Raises causes in `sys.irq_status`.
     fn irq(&mut self, field: &skylux_regmap::Field) {
-        self.regs.set_bits(sys::irq_status::REG.offset, field.mask());
+        self.regs
+            .set_bits(sys::irq_status::REG.offset, field.mask());
     }
 
     /// RO fields of the block at `offset` as they are now.

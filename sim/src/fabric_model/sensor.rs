@@ -64,8 +64,7 @@ impl SensorTimeline {
     /// FRAME_VALID at clock `t` (as the sensor drives it).
     pub fn frame_valid(&self, t: u64) -> bool {
         self.frame.as_ref().is_some_and(|f| {
-            t >= f.rise_at
-                && (t < f.fall_at || f.stops_at.is_some_and(|s| s < f.fall_at))
+            t >= f.rise_at && (t < f.fall_at || f.stops_at.is_some_and(|s| s < f.fall_at))
         })
     }
 
@@ -174,7 +173,10 @@ impl FabricModel {
             .timeline
             .frame
             .as_ref()
-            .map(|f| self.pix_to_sys(f.settings.geometry.row_pixclk().max(1)).max(1))
+            .map(|f| {
+                self.pix_to_sys(f.settings.geometry.row_pixclk().max(1))
+                    .max(1)
+            })
             .unwrap_or(1);
         let Some(f) = self.timeline.frame.as_mut() else {
             return;

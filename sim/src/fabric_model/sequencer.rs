@@ -110,13 +110,17 @@ impl FabricModel {
         };
         let s = &mut self.seq;
         s.count = count;
-        let limit = u64::from(seq::shield_limit::CYCLES.get(self.regs.read(seq::shield_limit::REG.offset)));
-        let steps = u64::from(seq::shield_steps::STEPS.get(self.regs.read(seq::shield_steps::REG.offset)));
+        let limit =
+            u64::from(seq::shield_limit::CYCLES.get(self.regs.read(seq::shield_limit::REG.offset)));
+        let steps =
+            u64::from(seq::shield_steps::STEPS.get(self.regs.read(seq::shield_steps::REG.offset)));
         let period = u64::from(
-            seq::shield_step_period::CYCLES.get(self.regs.read(seq::shield_step_period::REG.offset)),
+            seq::shield_step_period::CYCLES
+                .get(self.regs.read(seq::shield_step_period::REG.offset)),
         );
-        let pulse =
-            u64::from(seq::trigger_pulse::CYCLES.get(self.regs.read(seq::trigger_pulse::REG.offset)));
+        let pulse = u64::from(
+            seq::trigger_pulse::CYCLES.get(self.regs.read(seq::trigger_pulse::REG.offset)),
+        );
         for i in 0..8u32 {
             let sw = read(self, &seq::exp_shutter_width::REG, i);
             let sd = read(self, &seq::exp_shutter_delay::REG, i);
@@ -303,7 +307,9 @@ impl FabricModel {
             | seq::status::INDEX.word(s.idx & 7)
             | seq::status::SHIELD_OPEN.word((s.position(self.now) != 0).into());
         let frames = s.frames;
-        self.regs.fabric_inputs.insert(seq::status::REG.offset, status);
+        self.regs
+            .fabric_inputs
+            .insert(seq::status::REG.offset, status);
         self.regs
             .fabric_inputs
             .insert(seq::frame_number::REG.offset, frames);

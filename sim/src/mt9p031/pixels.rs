@@ -177,9 +177,15 @@ mod tests {
         let (m1, s1) = stats(&source.frame(&frame_with(0), 96e6, 0));
         let (m2, s2) = stats(&source.frame(&frame_with(1), 96e6, 0));
         assert!(m1 > 500.0 && m1 < 3000.0, "{m1}");
-        assert!((m2 / m1 - 1.0).abs() < 0.01, "mean {m1} unbinned, {m2} binned");
+        assert!(
+            (m2 / m1 - 1.0).abs() < 0.01,
+            "mean {m1} unbinned, {m2} binned"
+        );
         // Shot noise dominates the 2 DN read noise at these levels: the spread halves.
         let ratio = s2 / s1;
-        assert!((0.45..0.6).contains(&ratio), "spread {s1} unbinned, {s2} binned: {ratio}");
+        assert!(
+            (0.45..0.6).contains(&ratio),
+            "spread {s1} unbinned, {s2} binned: {ratio}"
+        );
     }
 }

@@ -119,8 +119,7 @@ pub fn plan_openings_with_gaps(
                     .max(0.0),
             });
         }
-        if cost.open_time_with_gaps_us(&exposures_us[start..=i], &gap(start..=i)) > cost.limit_us
-        {
+        if cost.open_time_with_gaps_us(&exposures_us[start..=i], &gap(start..=i)) > cost.limit_us {
             runs.push(start..i);
             start = i;
         }
