@@ -211,3 +211,26 @@ fn no_register_value_panics_the_model() {
     let m = shared.lock().unwrap();
     assert_eq!(m.log.stuck_events, 0);
 }
+
+#[test]
+fn a_failed_exposure_write_closes_the_shield_and_is_flagged() {
+    let (shared, mut f, _, ring) = rig();
+    f.capture_configure(&ring).unwrap();
+    // Global_Gain (0x35), the sequencer's fourth write per exposure, is not acknowledged.
+    shared
+        .lock()
+        .unwrap()
+        .inject(HardwareFault::NackRegister(0x35));
+    match f.run_sequence(1_000_000) {
+        Err(SequenceError::I2c {
+            frames: 0,
+            i2c_status,
+        }) => {
+            assert_ne!(skylux_regmap::i2c::status::NACK.get(i2c_status), 0)
+        }
+        other => panic!("{other:?}"),
+    }
+    let status = f.bus().read_reg(&seq::status::REG, 0).unwrap();
+    assert_eq!(seq::status::SHIELD_OPEN.get(status), 0);
+    assert!(shared.lock().unwrap().log.frames.is_empty());
+}
