@@ -168,6 +168,32 @@ fn model_frames_are_the_sensor_samples_and_the_interlock_holds() {
     assert!(m.log.shield_open_cycles_max > 0);
     drop(m);
 
+    // Frames out of order (the two frames land in each other's slots): both flagged, the
+    // second by its frame number too.
+    shared
+        .lock()
+        .unwrap()
+        .inject(skylux_sim::fabric_model::HardwareFault::SwapSlots);
+    let swapped = source.capture(at).unwrap();
+    assert_eq!(
+        swapped.frame_flags[0],
+        vec!["EXPOSURE_INDEX 1 (expected 0)".to_string()]
+    );
+    assert!(
+        swapped.frame_flags[1]
+            .iter()
+            .any(|f| f.starts_with("FRAME_ORDER 2 after 3")),
+        "{:?}",
+        swapped.frame_flags
+    );
+    // And the next capture is clean again.
+    let again = source.capture(at).unwrap();
+    assert!(
+        again.frame_flags.iter().all(Vec::is_empty),
+        "{:?}",
+        again.frame_flags
+    );
+
     // The interlock: a limit above the ceiling is clamped; an exposure of 0.6 s outlives it.
     // Polls of a microsecond each: the sequence runs 0.55 s of simulated time.
     shared.lock().unwrap().config.read_cycles = 100;
