@@ -12,6 +12,7 @@ pub mod capture;
 pub mod capture_path;
 pub mod core_rig;
 pub mod dc_case;
+pub mod fabric_model;
 pub mod hdr_case;
 pub mod mt9p031;
 pub mod pixel_bus;

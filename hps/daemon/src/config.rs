@@ -333,6 +333,11 @@ pub enum SimSourceKind {
     #[default]
     Sim,
     Fabric,
+    /// The behavioural fabric model (`skylux_sim::fabric_model`) behind the same
+    /// `FabricSource`: fast enough for the `[fabric]` window at full frame, and its
+    /// `[[sim.fault]]`s are hardware faults made at their source.
+    #[serde(rename = "fabric-model")]
+    FabricModel,
 }
 
 /// `[fabric]`: the sensor window the fabric source reads, in the sensor's register units
@@ -454,6 +459,24 @@ pub enum FaultKind {
     /// The simulated clock steps back [`CLOCK_BACK_S`] before the attempt (a host fault:
     /// an RTC reset or a bad time server).
     ClockBack,
+    // Hardware faults of the fabric model only (`[sim] source = "fabric-model"`), made where
+    // they happen (`skylux_sim::fabric_model::HardwareFault`).
+    /// A device holds SDA low: the I2C master finds the bus stuck.
+    I2cBusStuck,
+    /// PIXCLK stops in the middle of the first frame.
+    PixclkStopped,
+    /// One line of the first frame is two pixels short, or long.
+    LineShort,
+    LineLong,
+    /// The first frame has one line fewer, or more, than the window.
+    FrameShort,
+    FrameLong,
+    /// The f2sdram port stalls during the first frame until the FIFOs overflow.
+    FifoOverflow,
+    /// One payload word of the first frame is corrupted on the port (checksum mismatch).
+    BadChecksum,
+    /// The first two frames land in each other's ring slots.
+    OutOfOrder,
 }
 
 /// How far a `clock_back` fault steps the simulated clock back, seconds.
@@ -468,7 +491,29 @@ impl FaultKind {
             Self::FlaggedFrame => "flagged_frame",
             Self::DiskFull => "disk_full",
             Self::ClockBack => "clock_back",
+            Self::I2cBusStuck => "i2c_bus_stuck",
+            Self::PixclkStopped => "pixclk_stopped",
+            Self::LineShort => "line_short",
+            Self::LineLong => "line_long",
+            Self::FrameShort => "frame_short",
+            Self::FrameLong => "frame_long",
+            Self::FifoOverflow => "fifo_overflow",
+            Self::BadChecksum => "bad_checksum",
+            Self::OutOfOrder => "out_of_order",
         }
+    }
+
+    /// Faults only the fabric model can make (at their source in the hardware).
+    pub fn hardware_only(self) -> bool {
+        !matches!(
+            self,
+            Self::SensorAbsent
+                | Self::I2cNack
+                | Self::DmaTimeout
+                | Self::FlaggedFrame
+                | Self::DiskFull
+                | Self::ClockBack
+        )
     }
 }
 
@@ -781,9 +826,22 @@ impl SimConfig {
         if self.source == SimSourceKind::Fabric && !self.faults.is_empty() {
             return refuse(
                 "source",
-                "injected faults ([[sim.fault]]) belong to the `sim` source; the fabric \
-                 source's faults are the simulated hardware's",
+                "injected faults ([[sim.fault]]) belong to the `sim` and `fabric-model` \
+                 sources; the cycle-accurate fabric source's faults are the simulated \
+                 hardware's",
             );
+        }
+        if self.source == SimSourceKind::Sim {
+            if let Some(f) = self.faults.iter().find(|f| f.kind.hardware_only()) {
+                return refuse(
+                    "fault",
+                    format!(
+                        "kind \"{}\" is a hardware fault of the fabric model: set [sim] \
+                         source = \"fabric-model\"",
+                        f.kind.name()
+                    ),
+                );
+            }
         }
         Ok(())
     }
@@ -1103,6 +1161,17 @@ dir = "out"
             .unwrap_err()
             .to_string();
         assert!(e.contains("gremlins"), "{e}");
+        // Hardware faults are the fabric model's: refused with the `sim` source, naming the
+        // field; accepted with `fabric-model`, refused with the cycle-accurate `fabric`.
+        let hw = text.replace("i2c_nack", "pixclk_stopped");
+        let e = parse(&hw).unwrap_err().to_string();
+        assert!(e.contains("sim.fault") && e.contains("fabric-model"), "{e}");
+        let model = hw.replace("[sim]\n", "[sim]\nsource = \"fabric-model\"\n");
+        assert_eq!(
+            parse(&model).unwrap().sim.source,
+            SimSourceKind::FabricModel
+        );
+        assert!(parse(&model.replace("fabric-model", "fabric")).is_err());
     }
 
     #[test]

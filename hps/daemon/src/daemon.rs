@@ -286,6 +286,7 @@ fn open_source(
         match config.sim.source {
             SimSourceKind::Sim => SourceKind::Sim,
             SimSourceKind::Fabric => SourceKind::FabricSim,
+            SimSourceKind::FabricModel => SourceKind::FabricModelSim,
         }
     } else {
         SourceKind::Board(Some(map_hardware(config)?))
@@ -735,6 +736,8 @@ enum SourceKind {
     Sim,
     /// `--sim` with `[sim] source = "fabric"`: the cycle-accurate core.
     FabricSim,
+    /// `--sim` with `[sim] source = "fabric-model"`: the behavioural fabric model.
+    FabricModelSim,
     /// The board; the windows are taken by the first source built.
     Board(Option<crate::hardware::Windows>),
 }
@@ -773,6 +776,9 @@ fn make_source(
             &device()?,
             stop,
         )?),
+        SourceKind::FabricModelSim => Box::new(
+            crate::fabric_model_source::sim_fabric_model_source(config, &device()?, stop)?,
+        ),
         SourceKind::Board(windows) => {
             let Some(w) = windows.take() else {
                 return Err(SourceError::Other(

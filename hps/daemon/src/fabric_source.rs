@@ -5,7 +5,7 @@
 //!
 //! One capture: release and configure the sensor (Chip_Version, window, skip, modes, each
 //! register read back), program the capture path and the DMA ring (one slot per exposure),
-//! split the exposure table into shield openings (`plan_openings`), run each opening's
+//! split the exposure table into shield openings (`plan_openings_with_gaps`), run each opening's
 //! sequence, wait for its frames ([`FrameWait`]: the UIO interrupt or polling, with a
 //! timeout), then read every slot, check its descriptor and checksum, release it, and hand the
 //! frames over.
@@ -31,7 +31,7 @@ use skylux_hps::campaign::{BayerPattern, CaptureConfig, ExposureEntry, RawFrame,
 use skylux_hps::fpga::frames::CapturedFrame;
 use skylux_hps::fpga::sensor::{reg, I2cTiming, SensorConfig, SensorError};
 use skylux_hps::fpga::sequence::{SequenceError, ShieldConfig};
-use skylux_hps::fpga::shield_plan::{plan_openings, OpeningCost};
+use skylux_hps::fpga::shield_plan::{plan_openings_with_gaps, OpeningCost};
 use skylux_hps::fpga::{
     CaptureConfig as RingConfig, CaptureFaults, ExposureSlot, Fabric, MAX_EXPOSURES,
 };
@@ -177,10 +177,24 @@ pub fn plan_exposures(s: &FabricSettings, sys_clock_hz: u32) -> Result<ExposureP
             * 1e6,
         limit_us: f64::from(s.shield.limit_cycles) / clock * 1e6,
     };
-    let openings = plan_openings(&exposures_us, &cost).map_err(|e| e.to_string())?;
+    // The sensor holds a trigger until its vertical blanking ends, and the blanking grows
+    // with the shutter width: `max(VB, max(8, SW − H) + 1)` rows (hardware-facts.md §1.5),
+    // beyond the `max(VB, 9)` rows in the readout.
+    let h = output_size(s.sensor.height, s.sensor.skip);
+    let vb = s.sensor.vertical_blank + 1;
+    let gaps_us: Vec<f64> = slots
+        .iter()
+        .map(|slot| {
+            let blank = vb.max(8u32.max(slot.shutter_width_rows.saturating_sub(h)) + 1);
+            let extra = blank.saturating_sub(vb.max(9));
+            (u64::from(extra) * row) as f64 / s.pixclk_hz * 1e6
+        })
+        .collect();
+    let openings =
+        plan_openings_with_gaps(&exposures_us, &gaps_us, &cost).map_err(|e| e.to_string())?;
     let open_time_us = openings
         .iter()
-        .map(|r| cost.open_time_us(&exposures_us[r.clone()]))
+        .map(|r| cost.open_time_with_gaps_us(&exposures_us[r.clone()], &gaps_us[r.clone()]))
         .collect();
     Ok(ExposurePlan {
         slots,
@@ -393,7 +407,18 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
             // margin, bounds a sequence that never ends.
             let open_cycles = self.plan.open_time_us[opening] * 1e-6 * clock;
             let max_polls = (2.0 * open_cycles) as u64 + 200_000;
-            f.run_sequence(max_polls).map_err(|e| match e {
+            let outcome = f.run_sequence(max_polls);
+            // A sequence that ended early: the capture path's sticky status says what the
+            // frame went through (a stopped PIXCLK keeps FRAME_VALID high, so the sequencer
+            // waits until the shield's limit closes it); read and report it with the cause.
+            let status = match &outcome {
+                Err(SequenceError::I2c { .. }) | Ok(_) => String::new(),
+                Err(_) => match self.fabric.capture_take_faults() {
+                    Ok(c) if c.any() => format!("; capture status {c:?}"),
+                    _ => String::new(),
+                },
+            };
+            outcome.map_err(|e| match e {
                 SequenceError::I2c { frames, i2c_status } => SourceError::I2cNack {
                     register: reg::SHUTTER_WIDTH_LOWER,
                     detail: format!(
@@ -407,7 +432,9 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                     frames_expected: expected,
                     waited_ms: (polls as f64 / clock * 1e3) as u64,
                 },
-                other => SourceError::Other(format!("sequence (opening {opening}): {other}")),
+                other => {
+                    SourceError::Other(format!("sequence (opening {opening}): {other}{status}"))
+                }
             })?;
             let timeout = s_timeout(&self.settings, self.plan.open_time_us[opening]);
             let n = range.len() as u32;
@@ -469,6 +496,7 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
             .iter()
             .flat_map(|r| r.clone().map(move |k| (k, k - r.start)))
             .collect();
+        let mut previous_frame_number: Option<u32> = None;
         for (k, index_in_opening) in order {
             let slot = k as u8;
             let captured = self
@@ -481,7 +509,16 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                         "slot {slot}: no frame although the DMA counted it (ring overwritten?)"
                     ))
                 })?;
-            let (frame, flags) = self.unpack(&captured, index_in_opening)?;
+            // The sequencer numbers the frames it triggers: exposure k's frame follows
+            // exposure k-1's, across openings too. A slot holding another frame (a ring
+            // pointer that slipped) may carry the expected exposure index when each opening
+            // holds one exposure; its frame number does not.
+            let number = captured.descriptor.frame_number;
+            let order_flag = previous_frame_number
+                .filter(|p| number.wrapping_sub(*p) != 1)
+                .map(|p| format!("FRAME_ORDER {number} after {p}"));
+            previous_frame_number = Some(number);
+            let (frame, flags) = self.unpack(&captured, index_in_opening, order_flag)?;
             frames.push(frame);
             frame_flags.push(flags);
         }
@@ -533,9 +570,11 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
         &self,
         c: &CapturedFrame,
         exposure_index: usize,
+        order_flag: Option<String>,
     ) -> Result<(RawFrame, Vec<String>), SourceError> {
         let (w, h) = (self.plan.width_px as usize, self.plan.height_px as usize);
         let mut flags: Vec<String> = c.flag_names().iter().map(|n| n.to_string()).collect();
+        flags.extend(order_flag);
         if c.checksum_ok() == Some(false) {
             flags.push("CHECKSUM".into());
         }

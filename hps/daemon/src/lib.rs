@@ -8,6 +8,7 @@
 //! | [`config`] | `skyluxd.toml`, validated (including which physical memory may be mapped) |
 //! | [`source`] | the capture source trait and the simulated source |
 //! | [`fabric_source`] | the fabric source (board and cycle-accurate simulation), raw frames |
+//! | [`fabric_model_source`] | the fabric source over the behavioural fabric model, with hardware faults |
 //! | [`wait`] | waiting for frames: UIO interrupt or polling, with a timeout |
 //! | [`budget`] | `--bench-cycle`: the cycle budget by stage |
 //! | [`cycle`] | capture → HDR → sun → illuminance → record |
@@ -26,6 +27,7 @@ pub mod config;
 pub mod cycle;
 pub mod daemon;
 pub mod drivers;
+pub mod fabric_model_source;
 pub mod fabric_source;
 pub mod fuzzing;
 pub mod hardware;

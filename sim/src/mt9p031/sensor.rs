@@ -120,6 +120,16 @@ impl Mt9p031 {
         PixelBus { timing, data }
     }
 
+    /// Renders the frame a snapshot with `settings` reads out (the sensor's frame number
+    /// `frame_index`, counting from 0 as [`Self::tick_pixclk`] does), keeps it as
+    /// [`Self::frame_samples`] and returns it: for transaction-level models of the fabric,
+    /// which do not tick PIXCLK (`crate::fabric_model`).
+    pub fn render_frame(&mut self, settings: &FrameSettings, frame_index: u64) -> RawFrame {
+        let frame = self.pixels.frame(settings, self.pixclk_hz, frame_index);
+        self.frame = Some(frame.clone());
+        frame
+    }
+
     /// The samples of the frame on the bus (or the last one).
     pub fn frame_samples(&self) -> Option<&RawFrame> {
         self.frame.as_ref()

@@ -36,6 +36,16 @@ impl OpeningCost {
                 .map(|e| e + self.readout_us + self.per_frame_us)
                 .sum::<f64>()
     }
+
+    /// Light time of a group of exposures whose frames are each followed by a gap (`gaps_us`,
+    /// one per exposure): the sensor's vertical blanking beyond the one in `readout_us`, during
+    /// which it holds the next trigger (hardware-facts.md §1.5: `VB_MIN = max(8, SW − H) + 1`
+    /// rows, so a long exposure is followed by a long blanking). The last frame's gap is not
+    /// in the opening: the shield closes once its readout ends.
+    pub fn open_time_with_gaps_us(&self, exposures_us: &[f64], gaps_us: &[f64]) -> f64 {
+        let n = exposures_us.len().saturating_sub(1);
+        self.open_time_us(exposures_us) + gaps_us.iter().take(n).sum::<f64>()
+    }
 }
 
 /// Why a capture cannot be planned.
@@ -63,6 +73,22 @@ pub fn plan_openings(
     exposures_us: &[f64],
     cost: &OpeningCost,
 ) -> Result<Vec<std::ops::Range<usize>>, ShieldPlanError> {
+    plan_openings_with_gaps(exposures_us, &[], cost)
+}
+
+/// [`plan_openings`] with the sensor's blanking gap after each frame
+/// ([`OpeningCost::open_time_with_gaps_us`]); a missing gap counts as 0.
+pub fn plan_openings_with_gaps(
+    exposures_us: &[f64],
+    gaps_us: &[f64],
+    cost: &OpeningCost,
+) -> Result<Vec<std::ops::Range<usize>>, ShieldPlanError> {
+    if gaps_us.iter().any(|g| !(g.is_finite() && *g >= 0.0)) {
+        return Err(ShieldPlanError::BadCost);
+    }
+    let gap = |r: std::ops::RangeInclusive<usize>| -> Vec<f64> {
+        r.map(|k| gaps_us.get(k).copied().unwrap_or(0.0)).collect()
+    };
     let ok = |v: f64| v.is_finite() && v >= 0.0;
     let costs_ok = ok(cost.motion_us) && ok(cost.readout_us) && ok(cost.per_frame_us);
     if !costs_ok || !cost.limit_us.is_finite() || cost.limit_us <= 0.0 {
@@ -93,7 +119,7 @@ pub fn plan_openings(
                     .max(0.0),
             });
         }
-        if cost.open_time_us(&exposures_us[start..=i]) > cost.limit_us {
+        if cost.open_time_with_gaps_us(&exposures_us[start..=i], &gap(start..=i)) > cost.limit_us {
             runs.push(start..i);
             start = i;
         }
@@ -107,6 +133,33 @@ pub fn plan_openings(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A long blanking after a frame is counted only when another frame of the same opening
+    /// follows it.
+    #[test]
+    fn blanking_gaps_split_openings_but_not_after_the_last_frame() {
+        let cost = OpeningCost {
+            motion_us: 0.0,
+            readout_us: 10.0,
+            per_frame_us: 0.0,
+            limit_us: 100.0,
+        };
+        let e = [20.0, 50.0];
+        assert_eq!(plan_openings(&e, &cost).unwrap(), vec![0..2]);
+        assert_eq!(
+            plan_openings_with_gaps(&e, &[30.0, 500.0], &cost).unwrap(),
+            vec![0..1, 1..2]
+        );
+        assert_eq!(
+            plan_openings_with_gaps(&e, &[5.0, 500.0], &cost).unwrap(),
+            vec![0..2]
+        );
+        assert_eq!(cost.open_time_with_gaps_us(&e, &[5.0, 500.0]), 95.0);
+        assert_eq!(
+            plan_openings_with_gaps(&e, &[f64::NAN], &cost),
+            Err(ShieldPlanError::BadCost)
+        );
+    }
 
     /// Full frame at 96 MHz: 1944 rows x 3492 PIXCLK (hardware-facts.md §1.5); a 0.55 s
     /// limit; shield motion 2 x 20 ms.

@@ -1,0 +1,199 @@
+//! The fabric source over the behavioural fabric model (`[sim] source = "fabric-model"`):
+//! the same `FabricSource` and drivers as the board and the cycle-accurate core, over
+//! `skylux_sim::fabric_model`, which runs a full-frame HDR capture in well under a second.
+//! It exists so the daemon's real fabric path runs whole cycles at a realistic window, and so
+//! `[[sim.fault]]` can make hardware faults at their source (an absent sensor, a stuck bus,
+//! a stopped PIXCLK, malformed frames, FIFO overflow, a corrupted word, frames out of
+//! order) which the drivers must find by themselves.
+
+use crate::config::{Config, FaultKind};
+use crate::fabric_source::{fabric_settings, plan_exposures, FabricSource};
+use crate::source::{CaptureSet, CaptureSource, SimSource, SourceError};
+use crate::wait::PollWait;
+use chrono::{DateTime, FixedOffset};
+use skylux_hps::fpga::CaptureConfig as RingConfig;
+use skylux_sim::fabric_model::{
+    fabric_model, FabricModelConfig, HardwareFault, ModelMemory, ModelRegisters, SharedFabric,
+};
+use skylux_sim::mt9p031::SceneSource;
+use std::sync::atomic::AtomicBool;
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
+
+/// System clocks one register read costs in the daemon's model: about a microsecond, the
+/// order of a lightweight-bridge read from the HPS (not measured on the board), so that
+/// polling a half-second shield opening takes ~10^5 reads instead of ~10^7 at the core rig's
+/// two clocks. Writes are posted: a few clocks.
+pub const READ_CYCLES: u64 = 100;
+pub const WRITE_CYCLES: u64 = 4;
+
+/// The fabric source over the fabric model, imaging the simulated world.
+pub struct SimFabricModelSource {
+    pub inner: FabricSource<ModelRegisters, ModelMemory, PollWait>,
+    pub model: SharedFabric,
+    scene: Arc<Mutex<SceneSource>>,
+    site: skylux_hps::sun::Site,
+    sky: crate::config::SimSky,
+    interior: Option<crate::interior_truth::InteriorTruth>,
+    faults: Vec<crate::config::FaultRule>,
+    attempts: u64,
+    /// Lines of the window (where a stopped PIXCLK stops: half-way).
+    lines: u32,
+}
+
+/// The scene shared between the source (which sets the sky before each capture) and the
+/// sensor model (which renders it).
+struct SharedScene(Arc<Mutex<SceneSource>>);
+
+impl skylux_sim::mt9p031::PixelSource for SharedScene {
+    fn frame(
+        &mut self,
+        settings: &skylux_sim::mt9p031::FrameSettings,
+        pixclk_hz: f64,
+        frame_index: u64,
+    ) -> skylux_hps::campaign::RawFrame {
+        match self.0.lock() {
+            Ok(mut s) => s.frame(settings, pixclk_hz, frame_index),
+            Err(p) => p.into_inner().frame(settings, pixclk_hz, frame_index),
+        }
+    }
+}
+
+/// The hardware fault a `[[sim.fault]]` kind makes in the model (`None`: a host fault the
+/// daemon makes itself, `disk_full` and `clock_back`).
+pub fn hardware_fault(kind: FaultKind, lines: u32) -> Option<HardwareFault> {
+    Some(match kind {
+        FaultKind::SensorAbsent => HardwareFault::SensorAbsent,
+        // Shutter_Width_Lower: written at configuration and before every exposure.
+        FaultKind::I2cNack => HardwareFault::NackRegister(0x09),
+        FaultKind::I2cBusStuck => HardwareFault::SdaStuckLow,
+        FaultKind::DmaTimeout | FaultKind::PixclkStopped => HardwareFault::PixclkStops {
+            after_lines: (lines / 2).max(1),
+        },
+        // 2 ms of waitrequest: far beyond the FIFOs (~630 words), within dma.bus_timeout.
+        FaultKind::FlaggedFrame | FaultKind::FifoOverflow => {
+            HardwareFault::PortStall { cycles: 200_000 }
+        }
+        FaultKind::LineShort => HardwareFault::LineLength {
+            line: 1,
+            delta_px: -2,
+        },
+        FaultKind::LineLong => HardwareFault::LineLength {
+            line: 1,
+            delta_px: 2,
+        },
+        FaultKind::FrameShort => HardwareFault::FrameLength { delta_lines: -1 },
+        FaultKind::FrameLong => HardwareFault::FrameLength { delta_lines: 1 },
+        FaultKind::BadChecksum => HardwareFault::CorruptWord {
+            word: 5,
+            xor: 0x0000_0010,
+        },
+        FaultKind::OutOfOrder => HardwareFault::SwapSlots,
+        FaultKind::DiskFull | FaultKind::ClockBack => return None,
+    })
+}
+
+/// Builds [`SimFabricModelSource`] from the configuration: the `[fabric]` window and the
+/// camera's exposures, the simulated fabric's I2C and shield timing (`fabric_settings` with
+/// `sim`), a frame buffer just large enough for the ring.
+pub fn sim_fabric_model_source(
+    config: &Config,
+    device: &skylux_hps::camera::DeviceConfig,
+    stop: Arc<AtomicBool>,
+) -> Result<SimFabricModelSource, SourceError> {
+    let settings = fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, true);
+    let plan =
+        plan_exposures(&settings, skylux_regmap::SYS_CLOCK_HZ).map_err(SourceError::Other)?;
+    let mut ring = RingConfig::fitted(
+        plan.width_px,
+        plan.height_px,
+        0,
+        settings.exposures_us.len() as u8,
+    );
+    ring.grouping.raw = true;
+    let memory_bytes = (ring.slot_bytes_needed() as usize) * settings.exposures_us.len() + 4096;
+    let scene = Arc::new(Mutex::new(SceneSource {
+        camera: skylux_hps::camera::CameraModel::new(device.clone()),
+        luminance_cd_m2: Box::new(|_| 0.0),
+        noise_seed: Some(config.sim.seed),
+        channel_response: skylux_sim::sensor::ChannelResponse::GREY,
+    }));
+    let sensor =
+        skylux_sim::mt9p031::Mt9p031::new(Box::new(SharedScene(scene.clone())), settings.pixclk_hz);
+    let (model, regs, memory) = fabric_model(
+        sensor,
+        FabricModelConfig {
+            read_cycles: READ_CYCLES,
+            write_cycles: WRITE_CYCLES,
+            ..FabricModelConfig::new(memory_bytes)
+        },
+    );
+    let wait = PollWait {
+        // 0.5 simulated seconds of polling beyond the sequence's end.
+        max_polls: 500_000,
+        pause: Duration::ZERO,
+    };
+    let inner = FabricSource::new(regs, memory, wait, settings, stop)?;
+    Ok(SimFabricModelSource {
+        inner,
+        model,
+        scene,
+        site: skylux_hps::sun::Site {
+            latitude_deg: config.site.latitude_deg,
+            longitude_deg: config.site.longitude_deg,
+            elevation_m: config.site.elevation_m,
+        },
+        sky: config.sim.sky,
+        interior: crate::interior_truth::InteriorTruth::for_config(config)
+            .map_err(SourceError::Other)?,
+        faults: config.sim.faults.clone(),
+        attempts: 0,
+        lines: plan.height_px,
+    })
+}
+
+impl SimFabricModelSource {
+    fn with_model<T>(&self, f: impl FnOnce(&mut skylux_sim::fabric_model::FabricModel) -> T) -> T {
+        match self.model.lock() {
+            Ok(mut m) => f(&mut m),
+            Err(p) => f(&mut p.into_inner()),
+        }
+    }
+}
+
+impl CaptureSource for SimFabricModelSource {
+    fn name(&self) -> &'static str {
+        "fabric-model"
+    }
+
+    fn capture(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
+        self.attempts += 1;
+        let fault = SimSource::fault_for(&self.faults, self.attempts)
+            .and_then(|k| hardware_fault(k, self.lines));
+        if let Some(f) = fault {
+            tracing::info!(attempt = self.attempts, fault = ?f, "fabric model: hardware fault");
+            self.with_model(|m| m.inject(f));
+        }
+        let world =
+            crate::source::sim_world(&self.site, self.sky, at).map_err(SourceError::Other)?;
+        match self.scene.lock() {
+            Ok(mut s) => s.luminance_cd_m2 = Box::new(world),
+            Err(p) => p.into_inner().luminance_cd_m2 = Box::new(world),
+        }
+        let result = self.inner.capture(at);
+        // A fault lasts one attempt (a stopped PIXCLK until the next configuration's reset).
+        self.with_model(|m| m.clear_faults());
+        let mut set = result?;
+        set.truth_outdoor_horizontal_lux = Some(
+            crate::source::sim_outdoor_horizontal_lux(&self.site, self.sky, at)
+                .map_err(SourceError::Other)?,
+        );
+        if let Some(room) = &mut self.interior {
+            set.truth_interior_lux = Some(
+                room.illuminance_lux(&self.site, self.sky, at)
+                    .map_err(SourceError::Other)?,
+            );
+        }
+        Ok(set)
+    }
+}
