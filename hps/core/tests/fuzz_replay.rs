@@ -19,6 +19,24 @@ fn every_corpus_file_replays_without_panic() {
 /// The `exr` fuzzer's finding (2026-11-27): 1,455 bytes whose header declares a layer of
 /// billions of pixels made the exr crate try a 34 GB allocation and abort. Both readers now
 /// refuse it from the header, naming the file.
+/// The `exr` fuzzer's second finding (2026-11-27): 3,122 bytes declaring tiles of 64 x
+/// 4,194,368 pixels over an 8 x 8 image, which made the exr crate allocate 1.8 GB and take
+/// 1.7 s (a libFuzzer timeout on a loaded machine). Refused from the header now.
+#[test]
+fn an_exr_declaring_tiles_larger_than_its_image_is_refused_before_decoding() {
+    let bytes = include_bytes!(
+        "../../../fuzz/regressions/exr/timeout-dfdf7e8793853d534ee561a71f2d8c6224d53f49"
+    );
+    let path = Path::new("tiles.exr");
+    let e = skylux_hps::picture::exr::parse_exr_luminance(path, bytes).unwrap_err();
+    assert!(e.to_string().contains("tiles.exr"), "{e}");
+    let e = skylux_hps::hdr::parse_exr(path, bytes)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("tiles.exr") && e.contains("tiles of"), "{e}");
+    println!("{e}");
+}
+
 #[test]
 fn an_exr_declaring_billions_of_pixels_is_refused_before_decoding() {
     let bytes = include_bytes!(
