@@ -134,6 +134,7 @@ fn the_sensor_model_images_a_scene_through_the_channel_response() {
         luminance_cd_m2: Box::new(|_| 2.0e5),
         noise_seed: None,
         channel_response: response,
+        small_sources: vec![],
     };
     // A 64 x 48 window in the middle of the array, 400 rows of exposure at 96 MHz.
     let mut registers = Registers::default();

@@ -357,6 +357,10 @@ pub struct FabricConfig {
     /// Row and column skip, 1 to 8 (hardware-facts.md §1.4).
     #[serde(default = "one_u32")]
     pub skip: u32,
+    /// Row and column binning, 1, 2 or 4 dividing `skip` (docs/readout.md): each sample the
+    /// mean of bin x bin pixels. 1 (the sensor's reset value) unless set.
+    #[serde(default = "one_u32")]
+    pub bin: u32,
     /// Stepper steps from closed to open.
     #[serde(default = "default_shield_steps")]
     pub shield_steps: u32,
@@ -395,6 +399,7 @@ impl Default for FabricConfig {
             width: default_fabric_width(),
             height: default_fabric_height(),
             skip: 1,
+            bin: 1,
             shield_steps: default_shield_steps(),
             frame_timeout_s: default_frame_timeout_s(),
         }
@@ -865,6 +870,7 @@ impl FabricConfig {
             width: self.width,
             height: self.height,
             skip: self.skip,
+            bin: self.bin,
             ..Default::default()
         };
         if let Err(skylux_hps::fpga::sensor::SensorError::OutOfRange {
@@ -878,6 +884,7 @@ impl FabricConfig {
                 "col_start" => "col_start",
                 "height" => "height",
                 "width" => "width",
+                "bin" => "bin",
                 _ => "skip",
             };
             return refuse(key, format!("{value} is out of range ({allowed})"));
@@ -1172,6 +1179,28 @@ dir = "out"
             SimSourceKind::FabricModel
         );
         assert!(parse(&model.replace("fabric-model", "fabric")).is_err());
+    }
+
+    /// Binning as the sensor allows it (1, 2, 4 dividing skip), in `[sim]` and `[fabric]`,
+    /// refused otherwise with the field named; `[sim]`'s default is the Linux driver's choice.
+    #[test]
+    fn binning_is_checked_and_defaults_as_linux_picks() {
+        let c = parse(&format!("{MINIMAL}[sim]\nskip = 8\n")).unwrap();
+        assert_eq!(c.sim.readout().bin, 4);
+        let c = parse(&format!("{MINIMAL}[sim]\nskip = 6\n")).unwrap();
+        assert_eq!(c.sim.readout().bin, 2);
+        let e = parse(&format!("{MINIMAL}[sim]\nskip = 6\nbin = 4\n"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("sim.bin"), "{e}");
+        let c = parse(&format!("{MINIMAL}[fabric]\nskip = 4\nbin = 4\n")).unwrap();
+        assert_eq!((c.fabric.skip, c.fabric.bin), (4, 4));
+        for bad in ["skip = 4\nbin = 3", "skip = 2\nbin = 4"] {
+            let e = parse(&format!("{MINIMAL}[fabric]\n{bad}\n"))
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains("fabric.bin"), "{bad}: {e}");
+        }
     }
 
     #[test]

@@ -117,6 +117,7 @@ pub fn sim_fabric_model_source(
         luminance_cd_m2: Box::new(|_| 0.0),
         noise_seed: Some(config.sim.seed),
         channel_response: skylux_sim::sensor::ChannelResponse::GREY,
+        small_sources: vec![],
     }));
     let sensor =
         skylux_sim::mt9p031::Mt9p031::new(Box::new(SharedScene(scene.clone())), settings.pixclk_hz);
@@ -176,10 +177,15 @@ impl CaptureSource for SimFabricModelSource {
         }
         let world =
             crate::source::sim_world(&self.site, self.sky, at).map_err(SourceError::Other)?;
-        match self.scene.lock() {
-            Ok(mut s) => s.luminance_cd_m2 = Box::new(world),
-            Err(p) => p.into_inner().luminance_cd_m2 = Box::new(world),
-        }
+        let small_sources = crate::source::sim_small_sources(&self.site, self.sky, at)
+            .map_err(SourceError::Other)?;
+        let mut scene = match self.scene.lock() {
+            Ok(s) => s,
+            Err(p) => p.into_inner(),
+        };
+        scene.luminance_cd_m2 = Box::new(world);
+        scene.small_sources = small_sources;
+        drop(scene);
         let result = self.inner.capture(at);
         // A fault lasts one attempt (a stopped PIXCLK until the next configuration's reset).
         self.with_model(|m| m.clear_faults());

@@ -42,9 +42,18 @@ use std::sync::Arc;
 use std::time::Duration;
 
 /// Shutter overhead of the MT9P031 exposure formula, variant A (hardware-facts.md §0 item 2:
-/// the Linux drivers' constants), with Row_Bin 0 and Shutter_Delay 0: `SO = 208 + 98 + 1 −
-/// 94 = 213` PIXCLK. The bench settles A against B (§1.6); the simulated sensor uses A.
-const SHUTTER_OVERHEAD_PIXCLK: u64 = 213;
+/// the Linux drivers' constants), with Shutter_Delay 0: `SO = 208 (Row_Bin + 1) + 98 + 1 −
+/// 94` PIXCLK, 213 without binning. The bench settles A against B (§1.6); the simulated
+/// sensor uses A.
+fn shutter_overhead_pixclk(sensor: &SensorConfig) -> u64 {
+    208 * u64::from(row_bin_field(sensor.bin) + 1) + 98 + 1 - 94
+}
+
+/// The Row_Bin / Column_Bin field of a bin factor (hardware-facts.md §1, register 0x22: 0, 1,
+/// 3 for 1x, 2x, 4x).
+fn row_bin_field(bin: u32) -> u32 {
+    bin.max(1) - 1
+}
 /// I2C register writes the sequencer makes before each exposure's trigger (shutter upper and
 /// lower, shutter delay, gain) and the bits of one write (start, address, register, two data
 /// bytes, each with its acknowledge, stop): for the per-frame cost of a shield opening.
@@ -96,13 +105,21 @@ fn output_size(size: u32, skip: u32) -> u32 {
     2 * size.div_ceil(2 * skip.max(1))
 }
 
-/// Row time in PIXCLK (hardware-facts.md §0 item 1) for no binning:
-/// `2 max(W/2 + max(HB, 450), 41 + 346 + 99)`.
+/// Row time in PIXCLK (hardware-facts.md §0 item 1, §1.5):
+/// `2 max(W/2 + max(HB, HB_MIN), 41 + 346 (Row_Bin + 1) + 99)` with
+/// `HB_MIN = 346 (Row_Bin + 1) + 64 + W_DC / 2`, W_DC 80, 40, 20 for Column_Bin 0, 1, 3
+/// (450 PIXCLK without binning). Row and column bin alike.
 pub fn row_pixclk(sensor: &SensorConfig) -> u64 {
     let w = output_size(sensor.width, sensor.skip);
     let hb = sensor.horizontal_blank + 1;
-    let a = w / 2 + hb.max(346 + 64 + 40);
-    let b = 41 + 346 + 99;
+    let rb = row_bin_field(sensor.bin);
+    let w_dc = match rb {
+        0 => 80,
+        1 => 40,
+        _ => 20,
+    };
+    let a = w / 2 + hb.max(346 * (rb + 1) + 64 + w_dc / 2);
+    let b = 41 + 346 * (rb + 1) + 99;
     2 * u64::from(a.max(b))
 }
 
@@ -117,9 +134,6 @@ pub fn readout_pixclk(sensor: &SensorConfig) -> u64 {
 /// the shield openings. Every refusal names the field.
 pub fn plan_exposures(s: &FabricSettings, sys_clock_hz: u32) -> Result<ExposurePlan, String> {
     s.sensor.validate().map_err(|e| e.to_string())?;
-    if s.sensor.bin != 1 {
-        return Err("fabric: sensor binning is not supported by the exposure plan".into());
-    }
     if !(s.pixclk_hz.is_finite() && s.pixclk_hz > 0.0) {
         return Err(format!(
             "fabric: pixclk_hz {} is not a frequency",
@@ -149,11 +163,11 @@ pub fn plan_exposures(s: &FabricSettings, sys_clock_hz: u32) -> Result<ExposureP
                 "camera.exposures_us[{i}]: {e} is not a positive time"
             ));
         }
-        let wanted = e * 1e-6 * s.pixclk_hz + 2.0 * SHUTTER_OVERHEAD_PIXCLK as f64;
+        let wanted = e * 1e-6 * s.pixclk_hz + 2.0 * shutter_overhead_pixclk(&s.sensor) as f64;
         let sw = (wanted / row as f64)
             .round()
             .clamp(1.0, ((1 << 20) - 1) as f64) as u32;
-        let pixclk = (u64::from(sw) * row).saturating_sub(2 * SHUTTER_OVERHEAD_PIXCLK);
+        let pixclk = (u64::from(sw) * row).saturating_sub(2 * shutter_overhead_pixclk(&s.sensor));
         if pixclk == 0 {
             return Err(format!(
                 "camera.exposures_us[{i}]: {e} µs is below the sensor's shortest exposure here"
@@ -680,6 +694,7 @@ pub fn fabric_settings(
             width: w.width,
             height: w.height,
             skip: w.skip,
+            bin: w.bin,
             ..SensorConfig::default()
         },
         i2c: if sim {
@@ -776,6 +791,7 @@ pub fn sim_fabric_source(
         luminance_cd_m2: Box::new(|_| 0.0),
         noise_seed: Some(config.sim.seed),
         channel_response: skylux_sim::sensor::ChannelResponse::GREY,
+        small_sources: vec![],
     }));
     let sensor =
         skylux_sim::mt9p031::Mt9p031::new(Box::new(SharedScene(scene.clone())), settings.pixclk_hz);
@@ -812,10 +828,15 @@ impl CaptureSource for SimFabricSource {
     fn capture(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
         let world =
             crate::source::sim_world(&self.site, self.sky, at).map_err(SourceError::Other)?;
-        match self.scene.lock() {
-            Ok(mut s) => s.luminance_cd_m2 = Box::new(world),
-            Err(p) => p.into_inner().luminance_cd_m2 = Box::new(world),
-        }
+        let small_sources = crate::source::sim_small_sources(&self.site, self.sky, at)
+            .map_err(SourceError::Other)?;
+        let mut scene = match self.scene.lock() {
+            Ok(s) => s,
+            Err(p) => p.into_inner(),
+        };
+        scene.luminance_cd_m2 = Box::new(world);
+        scene.small_sources = small_sources;
+        drop(scene);
         let mut set = self.inner.capture(at)?;
         set.truth_outdoor_horizontal_lux = Some(
             crate::source::sim_outdoor_horizontal_lux(&self.site, self.sky, at)

@@ -159,7 +159,7 @@ impl SimSource {
 
 /// The world's solar disk, when it shows one: a source smaller than the groups of a coarse
 /// readout, which the renderer must not let fall between their centres.
-fn sim_small_sources(
+pub(crate) fn sim_small_sources(
     site: &Site,
     sky_kind: SimSky,
     at: DateTime<FixedOffset>,

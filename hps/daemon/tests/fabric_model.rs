@@ -90,6 +90,7 @@ fn model_source(
         luminance_cd_m2: Box::new(skyluxd::source::sim_world(&site, config.sim.sky, at).unwrap()),
         noise_seed: Some(config.sim.seed),
         channel_response: skylux_sim::sensor::ChannelResponse::GREY,
+        small_sources: vec![],
     }));
     let sensor = Mt9p031::new(Box::new(Scene(scene)), settings.pixclk_hz);
     let (shared, regs, memory) = fabric_model(sensor, FabricModelConfig::new(1 << 20));
@@ -282,13 +283,17 @@ fn model_and_cycle_accurate_core_give_the_same_frames_and_descriptors() {
     }
 }
 
-/// Outdoor horizontal illuminance through the fabric path against the world's, under an
-/// overcast May sky (09:00, 12:00, 15:00). Measured: -0.5 % on each cycle, as the `sim`
-/// source reads at the same readout (skip 4, bin 1).
-const FABRIC_OUTDOOR_TOLERANCE: f64 = 0.03;
+/// Outdoor horizontal illuminance through the fabric path against the world's (issue 24: 5 %).
+/// Measured: −0.5 % under the overcast sky at skip 4 without binning, as the `sim` source
+/// reads at the same readout.
+const FABRIC_OUTDOOR_TOLERANCE: f64 = 0.05;
+/// Interior illuminance per sensor through the fabric path, median over the cycles, against
+/// the world traced directly (issue 24: 5 %).
+const FABRIC_INTERIOR_TOLERANCE: f64 = 0.05;
 
-/// The records of `cycles` cycles of `skyluxd --sim` on the fabric model, 3 h apart from 09:00.
-fn daemon_day(sky: &str, cycles: u64) -> Vec<serde_json::Value> {
+/// The records of `cycles` cycles of `skyluxd --sim` on the fabric model, 3 h apart from 09:00,
+/// read with `[fabric] bin = bin`.
+fn daemon_day(sky: &str, cycles: u64, bin: u32) -> Vec<serde_json::Value> {
     let tmp = tempfile::tempdir().unwrap();
     let out = tmp.path().join("out");
     let log = tmp.path().join("stderr.log");
@@ -297,6 +302,7 @@ fn daemon_day(sky: &str, cycles: u64) -> Vec<serde_json::Value> {
         &[
             ("source = \"sim\"", "source = \"fabric-model\""),
             ("skip = 1 ", "skip = 4 "),
+            ("bin = 1 ", &format!("bin = {bin} ")),
             ("sky = \"clear\"", &format!("sky = \"{sky}\"")),
         ],
         "",
@@ -334,24 +340,81 @@ fn daemon_day(sky: &str, cycles: u64) -> Vec<serde_json::Value> {
         .collect()
 }
 
+/// Per sensor, the median over `records` of measured / world − 1.
+fn interior_medians(records: &[serde_json::Value]) -> Vec<(String, f64)> {
+    let mut ratios: Vec<(String, Vec<f64>)> = vec![];
+    for r in records {
+        let truth = r["truth_illuminance"]
+            .as_array()
+            .expect("the world's interior");
+        for (k, (m, t)) in r["illuminance"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .zip(truth)
+            .enumerate()
+        {
+            if ratios.len() <= k {
+                ratios.push((m["sensor"].as_str().unwrap().to_string(), vec![]));
+            }
+            ratios[k]
+                .1
+                .push(m["lux"].as_f64().unwrap() / t["lux"].as_f64().unwrap() - 1.0);
+        }
+    }
+    ratios
+        .into_iter()
+        .map(|(name, mut v)| {
+            v.sort_by(f64::total_cmp);
+            (name, v[v.len() / 2])
+        })
+        .collect()
+}
+
 /// Whole cycles through the real `FabricSource` on the model at the `[fabric]` window, full
-/// frame with skip 4 (648 x 486 samples), the example's five exposures (1 µs to 0.5 s, in two
-/// shield openings). The fabric cannot bin (`plan_exposures`), so in a clear sky the disk is
-/// smaller than its groups and the daemon declines to measure it (`no_sun:undersampled`,
-/// docs/readout.md): the outdoor value is then the sky's alone, below the world's. Under an
-/// overcast sky there is no disk, and the measurement is the world's.
+/// frame read binned 4 x 4 at skip 4 (648 x 486 samples), the example's five exposures (1 µs
+/// to 0.5 s). Under an overcast sky the outdoor value is the world's within 5 % in every cycle
+/// and the interior medians within 5 % (issue 24, "with the fabric source"; measured −0.5 %
+/// outdoors, −1.9 % to +1.5 % inside).
+///
+/// Under a clear sky the sensor itself is the limit: its shutter counts whole rows, and
+/// binned 4 x 4 a row lasts 3564 PIXCLK, so the shortest exposure it makes is
+/// `1 · 3564 − 2 · 837` PIXCLK = 19.7 µs (hardware-facts.md §0 item 2, §1.5; 11.7 µs without
+/// binning), where the 1 µs the example asks for would keep a 1.2e9 cd/m² disk under full
+/// scale. The disk saturates every frame and the daemon says so (`no_sun:not_measurable`)
+/// rather than reading it. Read without binning, the disk is also smaller than its groups
+/// (`no_sun:undersampled`, docs/readout.md). Either way the outdoor value is the sky's alone.
 #[test]
 fn skyluxd_runs_daylight_cycles_on_the_fabric_model_at_full_frame() {
-    for r in daemon_day("overcast", 3) {
-        let measured = r["outdoor_horizontal_lux"].as_f64().unwrap();
-        let truth = r["truth_outdoor_horizontal_lux"].as_f64().unwrap();
-        assert!(
-            (measured / truth - 1.0).abs() < FABRIC_OUTDOOR_TOLERANCE,
-            "{}: {measured} lx vs {truth} lx",
-            r["time"]
-        );
+    let clear = &daemon_day("clear", 1, 4)[0];
+    assert_eq!(
+        clear["sun"]["flags"],
+        serde_json::json!(["no_sun:not_measurable"]),
+        "{clear}"
+    );
+    for sky in ["overcast"] {
+        let records = daemon_day(sky, 3, 4);
+        for r in &records {
+            let measured = r["outdoor_horizontal_lux"].as_f64().unwrap();
+            let truth = r["truth_outdoor_horizontal_lux"].as_f64().unwrap();
+            assert!(
+                (measured / truth - 1.0).abs() < FABRIC_OUTDOOR_TOLERANCE,
+                "{sky}, {}: {measured} lx vs {truth} lx",
+                r["time"]
+            );
+            assert!(r.get("plausibility").is_none(), "{r}");
+        }
+        let medians = interior_medians(&records);
+        eprintln!("{sky}: interior medians {medians:?}");
+        for (name, e) in medians {
+            assert!(
+                e.abs() < FABRIC_INTERIOR_TOLERANCE,
+                "{sky}: {name} median {:+.1} %",
+                100.0 * e
+            );
+        }
     }
-    let r = &daemon_day("clear", 1)[0];
+    let r = &daemon_day("clear", 1, 1)[0];
     let flags = r["sun"]["flags"].to_string();
     assert!(flags.contains("undersampled"), "{r}");
     let (measured, truth) = (

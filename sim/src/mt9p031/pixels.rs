@@ -43,6 +43,9 @@ pub struct SceneSource {
     /// Each channel's response to the scene's spectrum ([`ChannelResponse::GREY`]: a
     /// spectrally grey scene, or the device's calibration spectrum).
     pub channel_response: ChannelResponse,
+    /// Sources smaller than a group (the solar disk) that binned groups must not miss
+    /// (`crate::sensor::SmallSource`).
+    pub small_sources: Vec<crate::sensor::SmallSource>,
 }
 
 impl PixelSource for SceneSource {
@@ -66,7 +69,7 @@ impl PixelSource for SceneSource {
             } else {
                 Footprint::Centre
             },
-            small_sources: vec![],
+            small_sources: self.small_sources.clone(),
         };
         let noise = match self.noise_seed {
             Some(seed) => Noise::Sensor {
@@ -148,6 +151,7 @@ mod tests {
             luminance_cd_m2: Box::new(|_| 1.0e6),
             noise_seed: Some(7),
             channel_response: ChannelResponse::GREY,
+            small_sources: vec![],
         };
         let frame_with = |bin_field: u32| FrameSettings {
             geometry: super::super::timing::FrameGeometry {
