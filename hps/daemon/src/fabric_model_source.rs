@@ -15,9 +15,8 @@ use skylux_hps::fpga::CaptureConfig as RingConfig;
 use skylux_sim::fabric_model::{
     fabric_model, FabricModelConfig, HardwareFault, ModelMemory, ModelRegisters, SharedFabric,
 };
-use skylux_sim::mt9p031::SceneSource;
 use std::sync::atomic::AtomicBool;
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 use std::time::Duration;
 
 /// System clocks one register read costs in the daemon's model: about a microsecond, the
@@ -31,32 +30,11 @@ pub const WRITE_CYCLES: u64 = 4;
 pub struct SimFabricModelSource {
     pub inner: FabricSource<ModelRegisters, ModelMemory, PollWait>,
     pub model: SharedFabric,
-    scene: Arc<Mutex<SceneSource>>,
-    site: skylux_hps::sun::Site,
-    sky: crate::config::SimSky,
-    interior: Option<crate::interior_truth::InteriorTruth>,
+    world: crate::sim_stage::WorldStage,
     faults: Vec<crate::config::FaultRule>,
     attempts: u64,
     /// Lines of the window (where a stopped PIXCLK stops: half-way).
     lines: u32,
-}
-
-/// The scene shared between the source (which sets the sky before each capture) and the
-/// sensor model (which renders it).
-struct SharedScene(Arc<Mutex<SceneSource>>);
-
-impl skylux_sim::mt9p031::PixelSource for SharedScene {
-    fn frame(
-        &mut self,
-        settings: &skylux_sim::mt9p031::FrameSettings,
-        pixclk_hz: f64,
-        frame_index: u64,
-    ) -> skylux_hps::campaign::RawFrame {
-        match self.0.lock() {
-            Ok(mut s) => s.frame(settings, pixclk_hz, frame_index),
-            Err(p) => p.into_inner().frame(settings, pixclk_hz, frame_index),
-        }
-    }
 }
 
 /// The hardware fault a `[[sim.fault]]` kind makes in the model (`None`: a host fault the
@@ -112,15 +90,8 @@ pub fn sim_fabric_model_source(
     );
     ring.grouping.raw = true;
     let memory_bytes = (ring.slot_bytes_needed() as usize) * settings.exposures_us.len() + 4096;
-    let scene = Arc::new(Mutex::new(SceneSource {
-        camera: skylux_hps::camera::CameraModel::new(device.clone()),
-        luminance_cd_m2: Box::new(|_| 0.0),
-        noise_seed: Some(config.sim.seed),
-        channel_response: skylux_sim::sensor::ChannelResponse::GREY,
-        small_sources: vec![],
-    }));
-    let sensor =
-        skylux_sim::mt9p031::Mt9p031::new(Box::new(SharedScene(scene.clone())), settings.pixclk_hz);
+    let world = crate::sim_stage::WorldStage::new(config, device)?;
+    let sensor = skylux_sim::mt9p031::Mt9p031::new(world.pixel_source(), settings.pixclk_hz);
     let (model, regs, memory) = fabric_model(
         sensor,
         FabricModelConfig {
@@ -138,15 +109,7 @@ pub fn sim_fabric_model_source(
     Ok(SimFabricModelSource {
         inner,
         model,
-        scene,
-        site: skylux_hps::sun::Site {
-            latitude_deg: config.site.latitude_deg,
-            longitude_deg: config.site.longitude_deg,
-            elevation_m: config.site.elevation_m,
-        },
-        sky: config.sim.sky,
-        interior: crate::interior_truth::InteriorTruth::for_config(config)
-            .map_err(SourceError::Other)?,
+        world,
         faults: config.sim.faults.clone(),
         attempts: 0,
         lines: plan.height_px,
@@ -175,31 +138,12 @@ impl CaptureSource for SimFabricModelSource {
             tracing::info!(attempt = self.attempts, fault = ?f, "fabric model: hardware fault");
             self.with_model(|m| m.inject(f));
         }
-        let world =
-            crate::source::sim_world(&self.site, self.sky, at).map_err(SourceError::Other)?;
-        let small_sources = crate::source::sim_small_sources(&self.site, self.sky, at)
-            .map_err(SourceError::Other)?;
-        let mut scene = match self.scene.lock() {
-            Ok(s) => s,
-            Err(p) => p.into_inner(),
-        };
-        scene.luminance_cd_m2 = Box::new(world);
-        scene.small_sources = small_sources;
-        drop(scene);
+        self.world.stage(at)?;
         let result = self.inner.capture(at);
         // A fault lasts one attempt (a stopped PIXCLK until the next configuration's reset).
         self.with_model(|m| m.clear_faults());
         let mut set = result?;
-        set.truth_outdoor_horizontal_lux = Some(
-            crate::source::sim_outdoor_horizontal_lux(&self.site, self.sky, at)
-                .map_err(SourceError::Other)?,
-        );
-        if let Some(room) = &mut self.interior {
-            set.truth_interior_lux = Some(
-                room.illuminance_lux(&self.site, self.sky, at)
-                    .map_err(SourceError::Other)?,
-            );
-        }
+        self.world.attach_truth(&mut set, at)?;
         Ok(set)
     }
 }

@@ -733,24 +733,6 @@ pub fn fabric_settings(
     }
 }
 
-/// The simulated sensor's pixels: the camera imaging the simulated world, whose sky is
-/// replaced before each capture (the rig owns the pixel source, so it is shared).
-struct SharedScene(Arc<std::sync::Mutex<skylux_sim::mt9p031::SceneSource>>);
-
-impl skylux_sim::mt9p031::PixelSource for SharedScene {
-    fn frame(
-        &mut self,
-        settings: &skylux_sim::mt9p031::FrameSettings,
-        pixclk_hz: f64,
-        frame_index: u64,
-    ) -> RawFrame {
-        match self.0.lock() {
-            Ok(mut s) => s.frame(settings, pixclk_hz, frame_index),
-            Err(p) => p.into_inner().frame(settings, pixclk_hz, frame_index),
-        }
-    }
-}
-
 /// The fabric source over the cycle-accurate core (`[sim] source = "fabric"`): the whole
 /// fabric with an MT9P031 model imaging the simulated world through the declared camera, and
 /// SDRAM models with random back-pressure, driven through the same `FabricSource` as the
@@ -762,10 +744,7 @@ pub struct SimFabricSource {
         PollWait,
     >,
     pub rig: skylux_sim::core_rig::SharedCore,
-    scene: Arc<std::sync::Mutex<skylux_sim::mt9p031::SceneSource>>,
-    site: skylux_hps::sun::Site,
-    sky: crate::config::SimSky,
-    interior: Option<crate::interior_truth::InteriorTruth>,
+    world: crate::sim_stage::WorldStage,
 }
 
 /// Builds [`SimFabricSource`] from the configuration.
@@ -786,15 +765,8 @@ pub fn sim_fabric_source(
     );
     ring.grouping.raw = true;
     let memory_bytes = (ring.slot_bytes_needed() as usize) * settings.exposures_us.len() + 4096;
-    let scene = Arc::new(std::sync::Mutex::new(skylux_sim::mt9p031::SceneSource {
-        camera: skylux_hps::camera::CameraModel::new(device.clone()),
-        luminance_cd_m2: Box::new(|_| 0.0),
-        noise_seed: Some(config.sim.seed),
-        channel_response: skylux_sim::sensor::ChannelResponse::GREY,
-        small_sources: vec![],
-    }));
-    let sensor =
-        skylux_sim::mt9p031::Mt9p031::new(Box::new(SharedScene(scene.clone())), settings.pixclk_hz);
+    let world = crate::sim_stage::WorldStage::new(config, device)?;
+    let sensor = skylux_sim::mt9p031::Mt9p031::new(world.pixel_source(), settings.pixclk_hz);
     // Back-pressure on the frame port as in tests/tests/core_system.rs.
     let (rig, regs, memory, _raybox) =
         sim_core(sensor, CoreRigConfig::new(memory_bytes, 4096, 0.3));
@@ -805,19 +777,7 @@ pub fn sim_fabric_source(
         pause: Duration::ZERO,
     };
     let inner = FabricSource::new(regs, memory, wait, settings, stop)?;
-    Ok(SimFabricSource {
-        inner,
-        rig,
-        scene,
-        site: skylux_hps::sun::Site {
-            latitude_deg: config.site.latitude_deg,
-            longitude_deg: config.site.longitude_deg,
-            elevation_m: config.site.elevation_m,
-        },
-        sky: config.sim.sky,
-        interior: crate::interior_truth::InteriorTruth::for_config(config)
-            .map_err(SourceError::Other)?,
-    })
+    Ok(SimFabricSource { inner, rig, world })
 }
 
 impl CaptureSource for SimFabricSource {
@@ -826,28 +786,9 @@ impl CaptureSource for SimFabricSource {
     }
 
     fn capture(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
-        let world =
-            crate::source::sim_world(&self.site, self.sky, at).map_err(SourceError::Other)?;
-        let small_sources = crate::source::sim_small_sources(&self.site, self.sky, at)
-            .map_err(SourceError::Other)?;
-        let mut scene = match self.scene.lock() {
-            Ok(s) => s,
-            Err(p) => p.into_inner(),
-        };
-        scene.luminance_cd_m2 = Box::new(world);
-        scene.small_sources = small_sources;
-        drop(scene);
+        self.world.stage(at)?;
         let mut set = self.inner.capture(at)?;
-        set.truth_outdoor_horizontal_lux = Some(
-            crate::source::sim_outdoor_horizontal_lux(&self.site, self.sky, at)
-                .map_err(SourceError::Other)?,
-        );
-        if let Some(room) = &mut self.interior {
-            set.truth_interior_lux = Some(
-                room.illuminance_lux(&self.site, self.sky, at)
-                    .map_err(SourceError::Other)?,
-            );
-        }
+        self.world.attach_truth(&mut set, at)?;
         Ok(set)
     }
 }

@@ -36,6 +36,7 @@ pub mod notify;
 pub mod output;
 pub mod plausibility;
 pub mod privilege;
+pub mod sim_stage;
 pub mod source;
 pub mod spawn;
 pub mod views;

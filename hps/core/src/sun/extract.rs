@@ -267,6 +267,36 @@ fn bright_components(
     components
 }
 
+/// A group not much smaller than the solar disk (more than a quarter of its solid angle): a
+/// readout that skips pixels between its samples (no binning) reads a disk smaller than
+/// about two such groups by whichever samples it happens to cover, or by none.
+fn coarse_group(geometry: &GroupGeometry, i: usize) -> bool {
+    geometry.solid_angle_sr[i] as f64 > SOLAR_DISK_SR / 4.0
+}
+
+/// Why no group is a candidate: a skipping readout whose groups near the predicted sun are
+/// coarse cannot tell (`Undersampled`); otherwise nothing reaches the threshold.
+fn no_component(geometry: &GroupGeometry, search: &SunSearch) -> NoSun {
+    let cos_limit = search.max_offset_deg.to_radians().cos();
+    let near = |i: usize| {
+        geometry.direction[i].is_finite()
+            && search
+                .predicted_direction
+                .is_none_or(|p| geometry.direction[i].as_dvec3().dot(p) >= cos_limit)
+    };
+    let n = geometry.direction.len();
+    if geometry.fill_factor < 1.0 && (0..n).any(|i| near(i) && coarse_group(geometry, i)) {
+        NoSun::Undersampled {
+            fill_factor: geometry.fill_factor,
+            groups: vec![],
+        }
+    } else {
+        NoSun::BelowThreshold {
+            threshold_cd_m2: search.threshold_cd_m2,
+        }
+    }
+}
+
 /// Finds and measures the sun in `map`.
 pub fn extract_sun(
     map: &LuminanceMap,
@@ -287,26 +317,8 @@ pub fn extract_sun(
         }
     }
     let components = bright_components(map, geometry, search);
-    // A readout that skips pixels between its samples (no binning) reads a disk smaller than
-    // about two cells by whichever samples it happens to cover, or by none: unmeasurable.
-    let coarse = |i: usize| geometry.solid_angle_sr[i] as f64 > SOLAR_DISK_SR / 4.0;
-    let undersampled = |groups: Vec<usize>| NoSun::Undersampled {
-        fill_factor: geometry.fill_factor,
-        groups,
-    };
     if components.is_empty() {
-        let cos_limit = search.max_offset_deg.to_radians().cos();
-        let near = |i: usize| {
-            search
-                .predicted_direction
-                .is_none_or(|p| geometry.direction[i].as_dvec3().dot(p) >= cos_limit)
-        };
-        if geometry.fill_factor < 1.0 && (0..n).any(|i| seen(i) && near(i) && coarse(i)) {
-            return Err(undersampled(vec![]));
-        }
-        return Err(NoSun::BelowThreshold {
-            threshold_cd_m2: search.threshold_cd_m2,
-        });
+        return Err(no_component(geometry, search));
     }
     let mean_direction = |members: &[usize]| -> DVec3 {
         members
@@ -345,8 +357,11 @@ pub fn extract_sun(
             .expect("at least one component"),
     };
     let core = &components[chosen];
-    if geometry.fill_factor < 1.0 && core.iter().any(|&i| coarse(i)) {
-        return Err(undersampled(core.clone()));
+    if geometry.fill_factor < 1.0 && core.iter().any(|&i| coarse_group(geometry, i)) {
+        return Err(NoSun::Undersampled {
+            fill_factor: geometry.fill_factor,
+            groups: core.clone(),
+        });
     }
     let mut flags = vec![];
     if components.len() > 1 {
