@@ -37,6 +37,24 @@ fn an_exr_declaring_tiles_larger_than_its_image_is_refused_before_decoding() {
     println!("{e}");
 }
 
+/// The `exr` fuzzer's third finding (2026-11-27): a map whose tile block contradicts its
+/// header made the exr crate panic on an assertion (`line should have been filtered`). The
+/// readers catch it and say the file is unreadable, naming it.
+#[test]
+fn an_exr_whose_blocks_contradict_its_header_is_an_error_not_a_panic() {
+    let bytes = include_bytes!(
+        "../../../fuzz/regressions/exr/crash-f91ab14ec2ba4f8169390b7e0e17efbf94361aca"
+    );
+    let path = Path::new("blocks.exr");
+    let e = skylux_hps::picture::exr::parse_exr_luminance(path, bytes).unwrap_err();
+    assert!(e.to_string().contains("blocks.exr"), "{e}");
+    let e = skylux_hps::hdr::parse_exr(path, bytes)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("blocks.exr") && e.contains("contradict"), "{e}");
+    println!("{e}");
+}
+
 #[test]
 fn an_exr_declaring_billions_of_pixels_is_refused_before_decoding() {
     let bytes = include_bytes!(

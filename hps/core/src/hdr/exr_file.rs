@@ -102,26 +102,16 @@ fn decode_exr(
     path: &Path,
     mut source: impl std::io::Read + std::io::Seek,
 ) -> std::result::Result<(LuminanceMap, DeviceConfig, Readout), MapFileError> {
-    let exr_error = |e: exr::error::Error| MapFileError::Exr {
-        path: path.into(),
-        message: e.to_string(),
-    };
-    crate::picture::exr::check_declared_size(&mut source).map_err(|message| MapFileError::Exr {
+    let exr_error = |message: String| MapFileError::Exr {
         path: path.into(),
         message,
-    })?;
+    };
+    crate::picture::exr::check_declared_size(&mut source).map_err(exr_error)?;
     let invalid = |what: String| MapFileError::Invalid {
         path: path.into(),
         what,
     };
-    let image = read()
-        .no_deep_data()
-        .largest_resolution_level()
-        .all_channels()
-        .first_valid_layer()
-        .all_attributes()
-        .from_buffered(source)
-        .map_err(exr_error)?;
+    let image = crate::picture::exr::read_first_layer(source).map_err(exr_error)?;
     let attribute = |name: &str| match image.layer_data.attributes.other.get(&Text::from(name)) {
         Some(AttributeValue::Text(t)) => Ok(t.to_string()),
         _ => Err(invalid(format!("header attribute {name} is missing"))),

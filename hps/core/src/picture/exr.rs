@@ -80,14 +80,8 @@ fn decode_exr_luminance(
     };
     check_declared_size(&mut source)
         .map_err(|e| fail(format!("not a readable OpenEXR file: {e}")))?;
-    let image = read()
-        .no_deep_data()
-        .largest_resolution_level()
-        .all_channels()
-        .first_valid_layer()
-        .all_attributes()
-        .from_buffered(source)
-        .map_err(|e| fail(format!("not a readable OpenEXR file: {e}")))?;
+    let image =
+        read_first_layer(source).map_err(|e| fail(format!("not a readable OpenEXR file: {e}")))?;
     let layer = image.layer_data;
     let (w, h) = (layer.size.width(), layer.size.height());
     if (w as u64) * (h as u64) > super::rgbe::MAX_READ_PIXELS {
@@ -125,6 +119,40 @@ fn decode_exr_luminance(
 /// [`super::rgbe::MAX_READ_PIXELS`] before anything is decoded, and rewinds `source` for the
 /// decoder. The exr crate allocates what a header declares, so a few bytes could otherwise
 /// ask for gigabytes (the fuzzer's `exr` finding of 2026-11-27: 34 GB, an abort).
+/// The first valid layer of an OpenEXR file, every channel and attribute, at its largest
+/// resolution. The exr crate asserts on some malformed blocks instead of returning an error
+/// (the fuzzer's third finding, 2026-11-27: `line should have been filtered` on a tile whose
+/// coordinates disagree with its header, fuzz/regressions/exr): its panic is caught here and
+/// becomes an error, so no file stops the daemon or a tool.
+pub fn read_first_layer(
+    source: impl std::io::Read + std::io::Seek,
+) -> Result<
+    exr::image::Image<exr::image::Layer<exr::image::AnyChannels<exr::image::FlatSamples>>>,
+    String,
+> {
+    use exr::prelude::*;
+    let decoded = std::panic::catch_unwind(std::panic::AssertUnwindSafe(move || {
+        read()
+            .no_deep_data()
+            .largest_resolution_level()
+            .all_channels()
+            .first_valid_layer()
+            .all_attributes()
+            .from_buffered(source)
+    }));
+    match decoded {
+        Ok(result) => result.map_err(|e| e.to_string()),
+        Err(panic) => Err(format!(
+            "the file's blocks contradict its header (the exr decoder failed: {})",
+            panic
+                .downcast_ref::<String>()
+                .map(String::as_str)
+                .or_else(|| panic.downcast_ref::<&str>().copied())
+                .unwrap_or("a panic")
+        )),
+    }
+}
+
 pub fn check_declared_size(
     source: &mut (impl std::io::Read + std::io::Seek),
 ) -> Result<(), String> {
