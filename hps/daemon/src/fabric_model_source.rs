@@ -7,11 +7,10 @@
 //! order) which the drivers must find by themselves.
 
 use crate::config::{Config, FaultKind};
-use crate::fabric_source::{fabric_settings, plan_exposures, FabricSource};
+use crate::fabric_source::FabricSource;
 use crate::source::{CaptureSet, CaptureSource, SimSource, SourceError};
 use crate::wait::PollWait;
 use chrono::{DateTime, FixedOffset};
-use skylux_hps::fpga::CaptureConfig as RingConfig;
 use skylux_sim::fabric_model::{
     fabric_model, FabricModelConfig, HardwareFault, ModelMemory, ModelRegisters, SharedFabric,
 };
@@ -79,17 +78,7 @@ pub fn sim_fabric_model_source(
     device: &skylux_hps::camera::DeviceConfig,
     stop: Arc<AtomicBool>,
 ) -> Result<SimFabricModelSource, SourceError> {
-    let settings = fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, true);
-    let plan =
-        plan_exposures(&settings, skylux_regmap::SYS_CLOCK_HZ).map_err(SourceError::Other)?;
-    let mut ring = RingConfig::fitted(
-        plan.width_px,
-        plan.height_px,
-        0,
-        settings.exposures_us.len() as u8,
-    );
-    ring.grouping.raw = true;
-    let memory_bytes = (ring.slot_bytes_needed() as usize) * settings.exposures_us.len() + 4096;
+    let (settings, plan, memory_bytes) = crate::fabric_source::sim_fabric_plan(config)?;
     let world = crate::sim_stage::WorldStage::new(config, device)?;
     let sensor = skylux_sim::mt9p031::Mt9p031::new(world.pixel_source(), settings.pixclk_hz);
     let (model, regs, memory) = fabric_model(

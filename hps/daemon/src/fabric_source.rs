@@ -747,13 +747,11 @@ pub struct SimFabricSource {
     world: crate::sim_stage::WorldStage,
 }
 
-/// Builds [`SimFabricSource`] from the configuration.
-pub fn sim_fabric_source(
+/// A simulated fabric's settings (`fabric_settings` with `sim`), its exposure plan and a frame
+/// buffer just large enough for its ring (one raw slot per exposure).
+pub fn sim_fabric_plan(
     config: &crate::config::Config,
-    device: &skylux_hps::camera::DeviceConfig,
-    stop: Arc<AtomicBool>,
-) -> Result<SimFabricSource, SourceError> {
-    use skylux_sim::core_rig::{sim_core, CoreRigConfig};
+) -> Result<(FabricSettings, ExposurePlan, usize), SourceError> {
     let settings = fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, true);
     let plan =
         plan_exposures(&settings, skylux_regmap::SYS_CLOCK_HZ).map_err(SourceError::Other)?;
@@ -765,6 +763,17 @@ pub fn sim_fabric_source(
     );
     ring.grouping.raw = true;
     let memory_bytes = (ring.slot_bytes_needed() as usize) * settings.exposures_us.len() + 4096;
+    Ok((settings, plan, memory_bytes))
+}
+
+/// Builds [`SimFabricSource`] from the configuration.
+pub fn sim_fabric_source(
+    config: &crate::config::Config,
+    device: &skylux_hps::camera::DeviceConfig,
+    stop: Arc<AtomicBool>,
+) -> Result<SimFabricSource, SourceError> {
+    use skylux_sim::core_rig::{sim_core, CoreRigConfig};
+    let (settings, _plan, memory_bytes) = sim_fabric_plan(config)?;
     let world = crate::sim_stage::WorldStage::new(config, device)?;
     let sensor = skylux_sim::mt9p031::Mt9p031::new(world.pixel_source(), settings.pixclk_hz);
     // Back-pressure on the frame port as in tests/tests/core_system.rs.
