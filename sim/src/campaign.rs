@@ -1167,7 +1167,7 @@ impl TrueWorld {
             raw_width: self.raw_width,
             raw_height: self.raw_height,
             exposures_us: spec.exposures_us.clone(),
-            gain: 1.0,
+            gains: vec![1.0],
             seed,
             footprint: crate::sensor::Footprint::Integrated,
             // The disk can fall between the groups' centres where the circumsolar sky is

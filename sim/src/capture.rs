@@ -53,7 +53,8 @@ pub struct CaptureSpec {
     pub raw_width: usize,
     pub raw_height: usize,
     pub exposures_us: Vec<f64>,
-    pub gain: f64,
+    /// Analog gain per exposure; a single value applies to every exposure.
+    pub gains: Vec<f64>,
     pub seed: u64,
     /// How each group integrates the scene (real pixels: `Footprint::Integrated`).
     pub footprint: crate::sensor::Footprint,
@@ -62,6 +63,15 @@ pub struct CaptureSpec {
 }
 
 impl CaptureSpec {
+    /// The analog gain of exposure `k` (`gains[k]`, or the one gain of all; 1 when none).
+    pub fn gain_of(&self, k: usize) -> f64 {
+        match self.gains.as_slice() {
+            [] => 1.0,
+            [g] => *g,
+            gains => gains.get(k).copied().unwrap_or(1.0),
+        }
+    }
+
     /// The frame renderer for this capture's readout through `camera`.
     pub fn renderer<'a>(
         &self,
@@ -109,7 +119,7 @@ pub fn simulate_frames(
             renderer.render_scene(
                 &scene,
                 t * 1e-6,
-                spec.gain,
+                spec.gain_of(k),
                 Noise::Sensor {
                     seed: spec.seed.wrapping_add(k as u64),
                 },
@@ -146,7 +156,7 @@ fn spec_config(spec: &CaptureSpec) -> CaptureConfig {
             .map(|(k, &t)| ExposureEntry {
                 file: format!("e{k}.pgm"),
                 exposure_us: t,
-                gain: spec.gain,
+                gain: spec.gain_of(k),
                 offset_ms: 0.0,
             })
             .collect(),
@@ -180,7 +190,7 @@ pub fn write_example_capture(
         raw_width: 128,
         raw_height: 96,
         exposures_us: vec![10.0, 1000.0, 100_000.0],
-        gain: 1.0,
+        gains: vec![1.0],
         seed,
         footprint: crate::sensor::Footprint::Integrated,
         small_sources: vec![],

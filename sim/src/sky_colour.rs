@@ -196,7 +196,7 @@ pub fn simulate_capture_coloured(
             renderer.render_scene_channels(
                 &scenes,
                 (t + overhead_us) * 1e-6,
-                spec.gain,
+                spec.gain_of(k),
                 Noise::Sensor {
                     seed: spec.seed.wrapping_add(k as u64),
                 },

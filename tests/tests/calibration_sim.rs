@@ -40,7 +40,7 @@ fn spec(exposures_us: Vec<f64>, seed: u64) -> CaptureSpec {
         raw_width: 648,
         raw_height: 486,
         exposures_us,
-        gain: 1.0,
+        gains: vec![1.0],
         seed,
         footprint: Footprint::Centre,
         small_sources: vec![],

@@ -87,7 +87,7 @@ fn a_measured_sky_map_lights_the_room_as_in_rtrace() {
             raw_width: 648,
             raw_height: 486,
             exposures_us: vec![10.0, 100.0, 1000.0, 10_000.0, 100_000.0],
-            gain: 1.0,
+            gains: vec![1.0],
             seed: 5,
             footprint: skylux_sim::sensor::Footprint::Integrated,
             small_sources: vec![],

@@ -131,9 +131,10 @@ impl CaptureModel {
             },
             pixclk_hz: PIXCLK_HZ,
             exposures_us: exposures_us.clone(),
-            gain: 1.0,
+            gains: vec![1.0; exposures_us.len()],
             frame_timeout: std::time::Duration::from_secs(2),
             reset_settle: std::time::Duration::from_millis(2),
+            poll_pause: std::time::Duration::from_millis(1),
             active_origin: (16, 54),
         };
         let exposure_ms: Vec<f64> = exposures_us

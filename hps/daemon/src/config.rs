@@ -113,12 +113,34 @@ pub struct CameraConfig {
     pub device: PathBuf,
     /// Integration times, µs, in the order they are taken.
     pub exposures_us: Vec<f64>,
-    #[serde(default = "one")]
-    pub gain: f64,
+    /// Analog gain: one for every exposure, or one per exposure (a high gain on the longest
+    /// lifts a dim sky above the floor without saturating the sun in the shortest).
+    #[serde(default)]
+    pub gain: Gain,
 }
 
-fn one() -> f64 {
-    1.0
+/// `camera.gain`: a number, or an array with one gain per exposure.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(untagged)]
+pub enum Gain {
+    All(f64),
+    PerExposure(Vec<f64>),
+}
+
+impl Default for Gain {
+    fn default() -> Self {
+        Self::All(1.0)
+    }
+}
+
+impl CameraConfig {
+    /// The analog gain of every exposure, in capture order.
+    pub fn gains(&self) -> Vec<f64> {
+        match &self.gain {
+            Gain::All(g) => vec![*g; self.exposures_us.len()],
+            Gain::PerExposure(g) => g.clone(),
+        }
+    }
 }
 
 /// `[room]`: the RADIANCE scene and sensor points, as `skylux dc` and `skylux loop` take them.
@@ -712,8 +734,20 @@ impl CameraConfig {
                 format!("{t} must be a positive time up to 10 s"),
             );
         }
-        if !(self.gain.is_finite() && (1.0..=64.0).contains(&self.gain)) {
-            return refuse("gain", format!("{} is outside [1, 64]", self.gain));
+        if let Gain::PerExposure(g) = &self.gain {
+            if g.len() != n {
+                return refuse(
+                    "gain",
+                    format!("{} gains for {n} exposures: give one per exposure", g.len()),
+                );
+            }
+        }
+        if let Some(g) = self
+            .gains()
+            .iter()
+            .find(|g| !(g.is_finite() && (1.0..=64.0).contains(*g)))
+        {
+            return refuse("gain", format!("{g} is outside [1, 64]"));
         }
         Ok(())
     }
@@ -1091,6 +1125,30 @@ dir = "out"
         let text = MINIMAL.replace("[output]", "[output]\ncolour = 3");
         let e = parse(&text).unwrap_err().to_string();
         assert!(e.contains("colour"), "{e}");
+    }
+
+    /// `camera.gain` is one number for all exposures or one per exposure; a list of the wrong
+    /// length or a gain out of range is refused by name.
+    #[test]
+    fn gain_is_one_for_all_or_one_per_exposure() {
+        let with = |gain: &str| {
+            parse(&MINIMAL.replace(
+                "exposures_us = [1.0, 100.0]",
+                &format!("exposures_us = [1.0, 100.0]\ngain = {gain}"),
+            ))
+        };
+        assert_eq!(parse(MINIMAL).unwrap().camera.gains(), [1.0, 1.0]);
+        assert_eq!(with("2.5").unwrap().camera.gains(), [2.5, 2.5]);
+        assert_eq!(with("[1.0, 7.875]").unwrap().camera.gains(), [1.0, 7.875]);
+        for (bad, words) in [
+            ("[1.0]", "1 gains for 2 exposures"),
+            ("[1.0, 2.0, 3.0]", "3 gains for 2 exposures"),
+            ("[1.0, 0.5]", "0.5 is outside [1, 64]"),
+            ("[1.0, nan]", "NaN is outside [1, 64]"),
+        ] {
+            let e = with(bad).unwrap_err().to_string();
+            assert!(e.contains("camera.gain") && e.contains(words), "{bad}: {e}");
+        }
     }
 
     #[test]

@@ -764,7 +764,7 @@ fn make_source(
                 },
                 config.sim.clone(),
                 config.camera.exposures_us.clone(),
-                config.camera.gain,
+                config.camera.gains(),
             )
             .with_interior(
                 crate::interior_truth::InteriorTruth::for_config(config)

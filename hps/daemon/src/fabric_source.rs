@@ -71,13 +71,16 @@ pub struct FabricSettings {
     pub pixclk_hz: f64,
     /// Integration times wanted, µs, in capture order (`camera.exposures_us`).
     pub exposures_us: Vec<f64>,
-    /// Analog gain (`camera.gain`): 1 to 7.875, in the sensor's 1/8 steps.
-    pub gain: f64,
+    /// Analog gain per exposure (`camera.gain`): 1 to 7.875, in the sensor's 1/8 steps.
+    pub gains: Vec<f64>,
     /// Longest wait for one opening's frames beyond its expected duration.
     pub frame_timeout: Duration,
     /// Pause after releasing RESET_BAR before the first I2C access (hardware-facts.md §1.7:
     /// 1-2 ms on the board; 0 in simulation, where the model answers at once).
     pub reset_settle: Duration,
+    /// Pause between reads of the fabric's clock while waiting out a blanking between
+    /// openings (0 in simulation, where time advances only with register accesses).
+    pub poll_pause: Duration,
     /// Register value of the first active column and row: the capture's `readout` is in
     /// active pixels (campaign.md), the sensor's `Column_Start`/`Row_Start` in array pixels.
     pub active_origin: (u32, u32),
@@ -89,9 +92,14 @@ pub struct ExposurePlan {
     pub slots: Vec<ExposureSlot>,
     /// What each slot integrates, µs (the formula applied to the rounded shutter width).
     pub exposures_us: Vec<f64>,
-    pub gain: f64,
+    /// What each slot's gain code gives.
+    pub gains: Vec<f64>,
     /// The shield openings, as ranges of the table.
     pub openings: Vec<Range<usize>>,
+    /// Per opening, how long to wait with the shield closed before starting it, µs: the
+    /// vertical blanking the previous opening's last frame leaves, during which the sensor
+    /// would hold the first trigger while the shield's open-time limit runs (0 for the first).
+    pub settle_before_us: Vec<f64>,
     /// Light time of each opening, µs.
     pub open_time_us: Vec<f64>,
     /// Output size of the window, pixels.
@@ -146,13 +154,23 @@ pub fn plan_exposures(s: &FabricSettings, sys_clock_hz: u32) -> Result<ExposureP
             s.exposures_us.len()
         ));
     }
-    let code = (8.0 * s.gain).round();
-    if !(s.gain.is_finite() && (8.0..=63.0).contains(&code)) {
+    if s.gains.len() != s.exposures_us.len() {
         return Err(format!(
-            "camera.gain: {} is outside the sensor's analog gain 1 to 7.875 (Global_Gain \
-             codes 8 to 63, hardware-facts.md §1.4)",
-            s.gain
+            "camera.gain: {} gains for {} exposures",
+            s.gains.len(),
+            s.exposures_us.len()
         ));
+    }
+    let mut codes = Vec::with_capacity(s.gains.len());
+    for (i, &g) in s.gains.iter().enumerate() {
+        let code = (8.0 * g).round();
+        if !(g.is_finite() && (8.0..=63.0).contains(&code)) {
+            return Err(format!(
+                "camera.gain[{i}]: {g} is outside the sensor's analog gain 1 to 7.875 \
+                 (Global_Gain codes 8 to 63, hardware-facts.md §1.4)"
+            ));
+        }
+        codes.push(code);
     }
     let row = row_pixclk(&s.sensor);
     let mut slots = Vec::new();
@@ -176,7 +194,7 @@ pub fn plan_exposures(s: &FabricSettings, sys_clock_hz: u32) -> Result<ExposureP
         slots.push(ExposureSlot {
             shutter_width_rows: sw,
             shutter_delay: 0,
-            gain_code: code as u32,
+            gain_code: codes[i] as u32,
         });
         exposures_us.push(pixclk as f64 / s.pixclk_hz * 1e6);
     }
@@ -210,11 +228,19 @@ pub fn plan_exposures(s: &FabricSettings, sys_clock_hz: u32) -> Result<ExposureP
         .iter()
         .map(|r| cost.open_time_with_gaps_us(&exposures_us[r.clone()], &gaps_us[r.clone()]))
         .collect();
+    let settle_before_us = openings
+        .iter()
+        .map(|r| match r.start {
+            0 => 0.0,
+            k => gaps_us[k - 1],
+        })
+        .collect();
     Ok(ExposurePlan {
         slots,
         exposures_us,
-        gain: code / 8.0,
+        gains: codes.iter().map(|c| c / 8.0).collect(),
         openings,
+        settle_before_us,
         open_time_us,
         width_px: output_size(s.sensor.width, s.sensor.skip),
         height_px: output_size(s.sensor.height, s.sensor.skip),
@@ -412,6 +438,11 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
         let mut received = 0usize;
         for (opening, range) in self.plan.openings.clone().iter().enumerate() {
             let f = &mut self.fabric;
+            let settle_cycles = (self.plan.settle_before_us[opening] * 1e-6 * clock).ceil() as u64;
+            if settle_cycles > 0 {
+                f.wait_cycles(settle_cycles, self.settings.poll_pause)
+                    .map_err(|e| other("fabric clock")(e.to_string()))?;
+            }
             f.set_exposures(&self.plan.slots[range.clone()])
                 .map_err(|e| SourceError::Other(format!("exposure table: {e}")))?;
             let start = f
@@ -571,7 +602,7 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                 .map(|(i, &e)| ExposureEntry {
                     file: format!("exp{i}.pgm"),
                     exposure_us: e,
-                    gain: self.plan.gain,
+                    gain: self.plan.gains[i],
                     offset_ms: 0.0,
                 })
                 .collect(),
@@ -721,12 +752,17 @@ pub fn fabric_settings(
         },
         pixclk_hz: 96e6,
         exposures_us: config.camera.exposures_us.clone(),
-        gain: config.camera.gain,
+        gains: config.camera.gains(),
         frame_timeout: Duration::from_secs_f64(w.frame_timeout_s),
         reset_settle: if sim {
             Duration::ZERO
         } else {
             Duration::from_millis(2)
+        },
+        poll_pause: if sim {
+            Duration::ZERO
+        } else {
+            Duration::from_millis(1)
         },
         // The simulated sensor renders its register window as active coordinates.
         active_origin: if sim { (0, 0) } else { (16, 54) },

@@ -5,7 +5,7 @@
 //! daemon with the world, not with itself.
 
 use crate::config::SimSky;
-use crate::source::{sim_sky, GROUND_REFLECTANCE};
+use crate::source::{sim_outdoor_horizontal_lux, sim_sky, GROUND_REFLECTANCE};
 use chrono::{DateTime, FixedOffset};
 use glam::DVec3;
 use skylux_hps::engine::sky::DistantEmitter;
@@ -74,14 +74,8 @@ impl InteriorTruth {
         let Some((perez, with_sun)) = sky else {
             return Ok(vec![0.0; self.sensors.len()]);
         };
-        let beam_lux = if with_sun {
-            perez.direct_normal_illuminance_lux() * sun_direction.z.max(0.0)
-        } else {
-            0.0
-        };
         // The world's ground, as `source::sim_world` renders it for the camera.
-        let ground_cd_m2 = GROUND_REFLECTANCE
-            * (perez.diffuse_horizontal_illuminance_lux() + beam_lux)
+        let ground_cd_m2 = GROUND_REFLECTANCE * sim_outdoor_horizontal_lux(site, sky_kind, at)?
             / std::f64::consts::PI;
         let sun_cd_m2 = if with_sun {
             perez.sun_luminance_cd_m2()

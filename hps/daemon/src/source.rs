@@ -99,7 +99,8 @@ pub struct SimSource {
     site: Site,
     sim: SimConfig,
     exposures_us: Vec<f64>,
-    gain: f64,
+    /// Analog gain per exposure.
+    gains: Vec<f64>,
     attempts: u64,
     interior: Option<InteriorTruth>,
 }
@@ -118,14 +119,14 @@ impl SimSource {
         site: Site,
         sim: SimConfig,
         exposures_us: Vec<f64>,
-        gain: f64,
+        gains: Vec<f64>,
     ) -> Self {
         Self {
             camera: CameraModel::new(device),
             site,
             sim,
             exposures_us,
-            gain,
+            gains,
             attempts: 0,
             interior: None,
         }
@@ -212,9 +213,12 @@ pub(crate) fn sim_sky(
     Ok((Some((perez, dni > 0.0)), sun_dir))
 }
 
-/// The simulated world's own outdoor global horizontal illuminance at `at`, lux: the Perez
-/// sky's diffuse horizontal plus the beam on the horizontal, as the world is defined (not as
-/// the device measures it): the truth the daemon's measurement is checked against.
+/// The simulated world's own outdoor global horizontal illuminance at `at`, lux: its sky as
+/// rendered ([`PerezSky::luminance_cd_m2`] integrated with cos θ on a 0.5° grid) plus the beam
+/// on the horizontal: the truth the daemon's measurement is checked against. Not the
+/// diffuse illuminance the Perez sky is normalised to: gendaylit normalises with a 145-point
+/// sum, whose error (2-3 % of the diffuse light, most with a low sun) a measurement that
+/// sums the same 145 patches would share.
 pub fn sim_outdoor_horizontal_lux(
     site: &Site,
     sky_kind: SimSky,
@@ -223,7 +227,7 @@ pub fn sim_outdoor_horizontal_lux(
     let (sky, sun_dir) = sim_sky(site, sky_kind, at)?;
     Ok(match &sky {
         Some((p, with_sun)) => {
-            p.diffuse_horizontal_illuminance_lux()
+            p.sky_horizontal_illuminance_lux(Default::default())
                 + if *with_sun {
                     p.direct_normal_illuminance_lux() * sun_dir.z.max(0.0)
                 } else {
@@ -318,7 +322,7 @@ impl CaptureSource for SimSource {
             raw_width: (2592 / skip as usize) & !1,
             raw_height: (1944 / skip as usize) & !1,
             exposures_us: self.exposures_us.clone(),
-            gain: self.gain,
+            gains: self.gains.clone(),
             // The same time gives the same frames.
             seed: self.sim.seed ^ (at.timestamp() as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15),
             // The pixels the readout reads: binning keeps their light, skipping loses the rest.
@@ -412,7 +416,7 @@ mod tests {
             },
             sim,
             vec![10.0, 1000.0, 100_000.0],
-            1.0,
+            vec![1.0; 3],
         );
         let t = DateTime::parse_from_rfc3339("2017-05-08T12:00:00+02:00").unwrap();
         let e = s.capture(t).unwrap_err();

@@ -39,11 +39,11 @@ fn fabric_config(dir: &std::path::Path) -> std::path::PathBuf {
         dir,
         &[
             (
-                "exposures_us = [1.0, 26.59, 707.1, 18803.0, 500000.0]",
+                "exposures_us = [20.0, 421.0, 8870.0, 186900.0, 500000.0]",
                 "exposures_us = [300.0, 1000.0]",
             ),
             ("source = \"sim\"", "source = \"fabric\""),
-            ("gain = 1.0", "gain = 7.875"),
+            ("gain = [1.0, 1.0, 1.0, 1.0, 7.875]", "gain = 7.875"),
             ("row_start = 54 ", "row_start = 924 "),
             ("col_start = 16 ", "col_start = 1232 "),
             ("width = 2592 ", "width = 128 "),

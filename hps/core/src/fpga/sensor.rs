@@ -368,8 +368,10 @@ impl<B: RegisterBus> Fabric<B> {
         self.sensor_transaction(reg_addr, Some(value)).map(|_| ())
     }
 
-    /// Waits at least `cycles` system clocks, timed by the fabric's free-running counter.
-    fn wait_cycles(&mut self, cycles: u64) -> Result<(), SensorError> {
+    /// Waits at least `cycles` system clocks (under 2^32), timed by the fabric's free-running
+    /// counter, reading it every `pause` (zero where time advances only with accesses, as in
+    /// the simulated fabrics; a millisecond on the board keeps the core free).
+    pub fn wait_cycles(&mut self, cycles: u64, pause: std::time::Duration) -> Result<(), BusError> {
         use skylux_regmap::sys;
         let bus = self.bus();
         let start = bus.read_reg(&sys::time_lo::REG, 0)?;
@@ -377,6 +379,9 @@ impl<B: RegisterBus> Fabric<B> {
             let now = bus.read_reg(&sys::time_lo::REG, 0)?;
             if u64::from(now.wrapping_sub(start)) >= cycles {
                 return Ok(());
+            }
+            if !pause.is_zero() {
+                std::thread::sleep(pause);
             }
         }
     }
@@ -398,7 +403,7 @@ impl<B: RegisterBus> Fabric<B> {
             self.sensor_write(reg::PLL_CONFIG_2, (p.p1 - 1) as u16)?;
             // PLL lock: at least 1 ms (Linux mt9p031 pll_enable, S1).
             let clock_hz = u64::from(self.info().sys_clock_hz);
-            self.wait_cycles(clock_hz.div_ceil(1000))?;
+            self.wait_cycles(clock_hz.div_ceil(1000), std::time::Duration::ZERO)?;
             self.sensor_write(reg::PLL_CONTROL, 0x0053)?;
         }
         let mut writes = config.register_writes();

@@ -119,14 +119,33 @@ fn bins(
             seen[n + p] = false;
         }
     }
+    // Horizontal illuminance: Σ L cos θ ω over the measured groups of each patch (the
+    // patch's mean of L cos θ times its solid angle), the patch centre's cosine only where a
+    // patch was filled rather than seen. The centre's cosine alone is gendaylit's 145-point
+    // quadrature, whose error (2-3 % of the diffuse light, most with a low sun) a sky
+    // normalised by that same sum would hide.
+    let (mut sum_cos, mut omega_sky) = (vec![0.0f64; n], vec![0.0f64; n]);
+    for i in 0..map.luminance_cd_m2.len() {
+        let d = geometry.direction[i];
+        let w = geometry.solid_angle_sr[i] as f64;
+        if map.flags[i] != MapFlag::Valid || !d.is_finite() || w <= 0.0 {
+            continue;
+        }
+        let d = d.as_dvec3();
+        if let Some(p) = patches.patch_of(d) {
+            sum_cos[p] += w * map.luminance_cd_m2[i] as f64 * d.z.max(0.0);
+            omega_sky[p] += w;
+        }
+    }
     let horizontal: f64 = (0..n)
         .map(|p| {
-            let c = patches.centre(p);
             let l = sky.luminance_cd_m2[p];
-            if l.is_finite() {
-                l * c.z * patches.solid_angle_sr(p)
-            } else {
+            if !l.is_finite() {
                 0.0
+            } else if seen[p] && omega_sky[p] > 0.0 {
+                sum_cos[p] / omega_sky[p] * patches.solid_angle_sr(p)
+            } else {
+                l * patches.centre(p).z * patches.solid_angle_sr(p)
             }
         })
         .sum();
