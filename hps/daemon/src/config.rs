@@ -504,6 +504,9 @@ pub enum FaultKind {
     BadChecksum,
     /// The first two frames land in each other's ring slots.
     OutOfOrder,
+    /// The f2sdram port holds waitrequest during the first frame longer than the driver's
+    /// `dma.bus_timeout`: the DMA's sticky `BUS_TIMEOUT`.
+    DmaBusTimeout,
 }
 
 /// How far a `clock_back` fault steps the simulated clock back, seconds.
@@ -527,6 +530,7 @@ impl FaultKind {
             Self::FifoOverflow => "fifo_overflow",
             Self::BadChecksum => "bad_checksum",
             Self::OutOfOrder => "out_of_order",
+            Self::DmaBusTimeout => "dma_bus_timeout",
         }
     }
 
@@ -1226,6 +1230,11 @@ dir = "out"
             .unwrap_err()
             .to_string();
         assert!(e.contains("gremlins"), "{e}");
+        // The error lists the kinds there are, the newest included.
+        assert!(
+            e.contains("dma_bus_timeout") && e.contains("out_of_order"),
+            "{e}"
+        );
         // Hardware faults are the fabric model's: refused with the `sim` source, naming the
         // field; accepted with `fabric-model`, refused with the cycle-accurate `fabric`.
         let hw = text.replace("i2c_nack", "pixclk_stopped");
@@ -1237,6 +1246,18 @@ dir = "out"
             SimSourceKind::FabricModel
         );
         assert!(parse(&model.replace("fabric-model", "fabric")).is_err());
+        // A DMA bus timeout is one of them: the plain simulator has no DMA to time out.
+        let bus = text.replace("i2c_nack", "dma_bus_timeout");
+        let e = parse(&bus).unwrap_err().to_string();
+        assert!(
+            e.contains("dma_bus_timeout") && e.contains("fabric-model"),
+            "{e}"
+        );
+        let model = bus.replace("[sim]\n", "[sim]\nsource = \"fabric-model\"\n");
+        assert_eq!(
+            parse(&model).unwrap().sim.faults[0].kind,
+            FaultKind::DmaBusTimeout
+        );
     }
 
     /// Binning as the sensor allows it (1, 2, 4 dividing skip), in `[sim]` and `[fabric]`,

@@ -3,8 +3,8 @@
 //! `skylux_sim::fabric_model`, which runs a full-frame HDR capture in well under a second.
 //! It exists so the daemon's real fabric path runs whole cycles at a realistic window, and so
 //! `[[sim.fault]]` can make hardware faults at their source (an absent sensor, a stuck bus,
-//! a stopped PIXCLK, malformed frames, FIFO overflow, a corrupted word, frames out of
-//! order) which the drivers must find by themselves.
+//! a stopped PIXCLK, malformed frames, FIFO overflow, a DMA bus timeout, a corrupted word,
+//! frames out of order) which the drivers must find by themselves.
 
 use crate::config::{Config, FaultKind};
 use crate::fabric_source::FabricSource;
@@ -36,6 +36,15 @@ pub struct SimFabricModelSource {
     lines: u32,
 }
 
+/// The f2sdram stall of a `dma_bus_timeout` fault, system clocks: twice the watchdog the
+/// driver programs (`CaptureConfig::fitted` leaves `dma.bus_timeout` at its reset value,
+/// 1,000,000 clocks = 10 ms, and `FabricSource` keeps it), so the stall is beyond it by a
+/// margin no rounding in the model removes; 20 ms is still far inside the frame wait
+/// (`frame_timeout_s`), so the frames do arrive and it is the DMA's sticky `BUS_TIMEOUT`,
+/// not a missing frame, that fails the capture.
+pub const DMA_BUS_TIMEOUT_STALL_CYCLES: u64 =
+    2 * skylux_regmap::dma::bus_timeout::CYCLES.reset as u64;
+
 /// The hardware fault a `[[sim.fault]]` kind makes in the model (`None`: a host fault the
 /// daemon makes itself, `disk_full` and `clock_back`).
 pub fn hardware_fault(kind: FaultKind, lines: u32) -> Option<HardwareFault> {
@@ -66,6 +75,9 @@ pub fn hardware_fault(kind: FaultKind, lines: u32) -> Option<HardwareFault> {
             xor: 0x0000_0010,
         },
         FaultKind::OutOfOrder => HardwareFault::SwapSlots,
+        FaultKind::DmaBusTimeout => HardwareFault::PortStall {
+            cycles: DMA_BUS_TIMEOUT_STALL_CYCLES,
+        },
         FaultKind::DiskFull | FaultKind::ClockBack => return None,
     })
 }

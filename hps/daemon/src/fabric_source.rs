@@ -515,12 +515,9 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
             .capture_take_faults()
             .map_err(|e| other("capture status")(e.to_string()))?;
         if faults.dma_bus_timeout {
-            return Err(SourceError::Other(
-                "DMA bus timeout: the FPGA-to-SDRAM port never accepted a burst (ports held in \
-                 reset: fpgaportrst at 0xFFC25080 must be set from U-Boot before the FPGA \
-                 touches SDRAM, hardware-facts.md §3.3)"
-                    .into(),
-            ));
+            return Err(SourceError::DmaBusTimeout {
+                timeout_cycles: self.ring.bus_timeout_cycles,
+            });
         }
         Ok(faults)
     }

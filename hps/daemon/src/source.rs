@@ -66,6 +66,17 @@ pub enum SourceError {
         frames_expected: usize,
         waited_ms: u64,
     },
+    /// The DMA's sticky `dma.status.BUS_TIMEOUT`: the port stalled one burst beyond the
+    /// watchdog, so the frames of the capture cannot be trusted whatever their descriptors
+    /// say. Its own kind because its remedy is on the board (the f2sdram port's reset, the
+    /// SDRAM controller), not in the sensor or the frame.
+    #[error(
+        "DMA bus timeout: the FPGA-to-SDRAM port held waitrequest longer than dma.bus_timeout \
+         ({timeout_cycles} system clocks); a port that never accepts a burst is held in reset: \
+         fpgaportrst at 0xFFC25080 must be set from U-Boot before the FPGA touches SDRAM \
+         (hardware-facts.md §3.3)"
+    )]
+    DmaBusTimeout { timeout_cycles: u32 },
     #[error("capture source: {0}")]
     Other(String),
 }
@@ -77,6 +88,7 @@ impl SourceError {
             Self::SensorAbsent { .. } => "sensor_absent",
             Self::I2cNack { .. } => "i2c_nack",
             Self::DmaTimeout { .. } => "dma_timeout",
+            Self::DmaBusTimeout { .. } => "dma_bus_timeout",
             Self::Other(_) => "source",
         }
     }

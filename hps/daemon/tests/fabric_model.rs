@@ -655,3 +655,15 @@ fn fault_out_of_order() {
         "EXPOSURE_INDEX 1 (expected 0)",
     );
 }
+
+#[test]
+fn fault_dma_bus_timeout() {
+    // The port stalls twice the programmed dma.bus_timeout: the DMA's sticky BUS_TIMEOUT,
+    // read after the openings, fails the capture with its own kind and the watchdog figure.
+    fault_is_flagged_survived_and_followed_by_a_good_cycle(
+        "dma_bus_timeout",
+        "dma_bus_timeout",
+        "held waitrequest longer than dma.bus_timeout (1000000 system clocks); a port that \
+         never accepts a burst is held in reset: fpgaportrst",
+    );
+}
