@@ -138,6 +138,9 @@ pub fn read_first_layer(
             .all_channels()
             .first_valid_layer()
             .all_attributes()
+            // Decoded on this thread: a panic on the crate's own decoding threads would abort
+            // the process, out of this catch_unwind's reach.
+            .non_parallel()
             .from_buffered(source)
     }));
     match decoded {
