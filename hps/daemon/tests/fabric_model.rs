@@ -44,7 +44,8 @@ fn tiny_config(dir: &std::path::Path, source: &str) -> std::path::PathBuf {
             ("col_start = 16 ", "col_start = 1232 "),
             ("width = 2592 ", "width = 128 "),
             ("height = 1944\n", "height = 96\n"),
-            ("skip = 1 ", "skip = 8 "),
+            ("skip = 4 ", "skip = 8 "),
+            ("bin = 4 ", "bin = 1 "),
             ("frame_timeout_s = 2.0 ", "frame_timeout_s = 120.0 "),
         ],
         "",
@@ -267,8 +268,8 @@ proptest::proptest! {
                 ("col_start = 16 ", "col_start = 1232 "),
                 ("width = 2592 ", &format!("width = {width} ")),
                 ("height = 1944\n", &format!("height = {height}\n")),
-                ("skip = 1 ", &format!("skip = {skip} ")),
-                ("bin = 1 ", &format!("bin = {bin} ")),
+                ("skip = 4 ", &format!("skip = {skip} ")),
+                ("bin = 4 ", &format!("bin = {bin} ")),
                 ("frame_timeout_s = 2.0 ", "frame_timeout_s = 120.0 "),
             ],
             "",
@@ -364,11 +365,7 @@ fn model_and_cycle_accurate_core_give_the_same_frames_and_descriptors() {
 #[test]
 fn the_plan_waits_out_the_blanking_between_openings() {
     let tmp = tempfile::tempdir().unwrap();
-    let path = config_with(
-        tmp.path(),
-        &[("skip = 1 ", "skip = 4 "), ("bin = 1 ", "bin = 4 ")],
-        "",
-    );
+    let path = config_with(tmp.path(), &[], "");
     let config = Config::load(&path, &Overrides::default()).unwrap();
     let (settings, plan, _) = skyluxd::fabric_source::sim_fabric_plan(&config).unwrap();
     assert_eq!(plan.openings, [0..4, 4..5]);
@@ -416,8 +413,7 @@ fn daemon_day(sky: &str, cycles: u64, bin: u32, bare_sensor: bool) -> Vec<serde_
             "source = \"sim\"".to_string(),
             "source = \"fabric-model\"".to_string(),
         ),
-        ("skip = 1 ".into(), "skip = 4 ".into()),
-        ("bin = 1 ".into(), format!("bin = {bin} ")),
+        ("bin = 4 ".into(), format!("bin = {bin} ")),
         ("sky = \"clear\"".into(), format!("sky = \"{sky}\"")),
     ];
     if bare_sensor {
@@ -579,7 +575,8 @@ fn fault_is_flagged_survived_and_followed_by_a_good_cycle(
         tmp.path(),
         &[
             ("source = \"sim\"", "source = \"fabric-model\""),
-            ("skip = 1 ", "skip = 8 "),
+            ("skip = 4 ", "skip = 8 "),
+            ("bin = 4 ", "bin = 1 "),
         ],
         &extra,
     );

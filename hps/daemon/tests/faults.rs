@@ -14,7 +14,7 @@ use std::time::Duration;
 const T0: &str = "2017-05-08T10:00:00+02:00";
 /// Smaller frames than the example's (81 x 60 samples): these tests run many cycles, also
 /// under qemu-arm on a shared machine.
-const SMALL: (&str, &str) = ("skip = 4 ", "skip = 32 ");
+const SMALL: (&str, &str) = (SIM_SKIP, "skip = 32 # 2592/32");
 
 #[test]
 fn injected_faults_are_logged_retried_with_backoff_and_survived() {

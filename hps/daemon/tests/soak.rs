@@ -123,7 +123,7 @@ fn a_long_run_with_random_faults_stays_flat_records_every_cycle_once_and_keeps_r
         &[
             // The soak's world stays small (162 x 120 samples): it measures the daemon,
             // not the sensor.
-            ("skip = 4 ", "skip = 16 "),
+            (SIM_SKIP, "skip = 16 # 2592/16"),
             ("max_maps = 48 ", &format!("max_maps = {MAX_MAPS} ")),
             (
                 "max_captures = 24 ",

@@ -17,6 +17,10 @@ pub fn example_config() -> PathBuf {
 /// The example configuration with its relative paths made absolute and `extra` appended
 /// (the example ends in its `[sim]` section, so `[[sim.fault]]` tables can follow), written
 /// into `dir`.
+/// The `[sim]` section's skip line of the example (the `[fabric]` section also reads
+/// `skip = 4`): tests that shrink the simulated camera replace this.
+pub const SIM_SKIP: &str = "skip = 4                      # 2592/4";
+
 pub fn config_with(dir: &Path, replace: &[(&str, &str)], extra: &str) -> PathBuf {
     let hps = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let mut text = std::fs::read_to_string(example_config()).unwrap();
