@@ -270,9 +270,13 @@ fn sensor_error(e: SensorError, what: &str) -> SourceError {
         SensorError::WrongChip { found } => SourceError::SensorAbsent {
             detail: format!("{what}: Chip_Version reads {found:#06x}, not an MT9P031 (0x1801)"),
         },
+        SensorError::Timeout { reg: r } | SensorError::BusStuck { reg: r } => {
+            SourceError::I2cBusStuck {
+                register: r,
+                detail: format!("{what}: {e}"),
+            }
+        }
         SensorError::Nack { reg: r }
-        | SensorError::Timeout { reg: r }
-        | SensorError::BusStuck { reg: r }
         | SensorError::Verify { reg: r, .. }
         | SensorError::Refused { reg: r }
         | SensorError::NoCompletion { reg: r, .. } => SourceError::I2cNack {

@@ -60,6 +60,10 @@ pub enum SourceError {
     SensorAbsent { detail: String },
     #[error("I2C NACK at sensor register {register:#04x}: {detail}")]
     I2cNack { register: u8, detail: String },
+    /// SDA or SCL held low: no transaction completes, whoever answers (a device or a short on
+    /// the bus, or a sensor hung mid-transfer; hardware-facts.md §1.7).
+    #[error("I2C bus stuck at sensor register {register:#04x}: {detail}")]
+    I2cBusStuck { register: u8, detail: String },
     #[error("DMA timeout: {frames_received} of {frames_expected} frames after {waited_ms} ms")]
     DmaTimeout {
         frames_received: usize,
@@ -87,6 +91,7 @@ impl SourceError {
         match self {
             Self::SensorAbsent { .. } => "sensor_absent",
             Self::I2cNack { .. } => "i2c_nack",
+            Self::I2cBusStuck { .. } => "i2c_bus_stuck",
             Self::DmaTimeout { .. } => "dma_timeout",
             Self::DmaBusTimeout { .. } => "dma_bus_timeout",
             Self::Other(_) => "source",

@@ -646,7 +646,7 @@ fn fault_i2c_nack() {
 fn fault_i2c_bus_stuck() {
     fault_is_flagged_survived_and_followed_by_a_good_cycle(
         "i2c_bus_stuck",
-        "i2c_nack",
+        "i2c_bus_stuck",
         "SDA is held low by a device on the bus",
     );
 }
