@@ -28,30 +28,6 @@ use std::time::{Duration, Instant};
 
 const NOON: &str = "2017-05-08T12:00:00+02:00";
 
-/// tests/fabric_sim.rs's configuration: a 128 x 96 array window read with skip 8 (16 x 12
-/// samples), exposures of 300 and 1000 µs at gain 7.875.
-fn tiny_config(dir: &std::path::Path, source: &str) -> std::path::PathBuf {
-    config_with(
-        dir,
-        &[
-            (
-                "exposures_us = [20.0, 421.0, 8870.0, 186900.0, 500000.0]",
-                "exposures_us = [300.0, 1000.0]",
-            ),
-            ("source = \"sim\"", &format!("source = \"{source}\"")),
-            ("gain = [1.0, 1.0, 1.0, 1.0, 7.875]", "gain = 7.875"),
-            ("row_start = 54 ", "row_start = 924 "),
-            ("col_start = 16 ", "col_start = 1232 "),
-            ("width = 2592 ", "width = 128 "),
-            ("height = 1944\n", "height = 96\n"),
-            ("skip = 4 ", "skip = 8 "),
-            ("bin = 4 ", "bin = 1 "),
-            ("frame_timeout_s = 2.0 ", "frame_timeout_s = 120.0 "),
-        ],
-        "",
-    )
-}
-
 struct Scene(Arc<Mutex<SceneSource>>);
 impl skylux_sim::mt9p031::PixelSource for Scene {
     fn frame(
@@ -125,7 +101,7 @@ fn descriptors(memory: &mut dyn DmaMemory, stride: u64, n: usize) -> Vec<Descrip
 fn model_frames_are_the_sensor_samples_and_the_interlock_holds() {
     let tmp = tempfile::tempdir().unwrap();
     let config = Config::load(
-        &tiny_config(tmp.path(), "fabric-model"),
+        &tiny_fabric_config(tmp.path(), "fabric-model"),
         &Overrides::default(),
     )
     .unwrap();
@@ -309,7 +285,11 @@ proptest::proptest! {
 #[ignore = "runs the slow cycle-accurate core once (~1-3 min): run with --ignored"]
 fn model_and_cycle_accurate_core_give_the_same_frames_and_descriptors() {
     let tmp = tempfile::tempdir().unwrap();
-    let config = Config::load(&tiny_config(tmp.path(), "fabric"), &Overrides::default()).unwrap();
+    let config = Config::load(
+        &tiny_fabric_config(tmp.path(), "fabric"),
+        &Overrides::default(),
+    )
+    .unwrap();
     let at = chrono::DateTime::parse_from_rfc3339(NOON).unwrap();
     let (device, _) = skylux_hps::camera::DeviceConfig::read(&config.camera.device).unwrap();
     let began = Instant::now();
@@ -466,37 +446,6 @@ fn daemon_day(sky: &str, cycles: u64, bin: u32, bare_sensor: bool) -> Vec<serde_
         .collect()
 }
 
-/// Per sensor, the median over `records` of measured / world − 1.
-fn interior_medians(records: &[serde_json::Value]) -> Vec<(String, f64)> {
-    let mut ratios: Vec<(String, Vec<f64>)> = vec![];
-    for r in records {
-        let truth = r["truth_illuminance"]
-            .as_array()
-            .expect("the world's interior");
-        for (k, (m, t)) in r["illuminance"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .zip(truth)
-            .enumerate()
-        {
-            if ratios.len() <= k {
-                ratios.push((m["sensor"].as_str().unwrap().to_string(), vec![]));
-            }
-            ratios[k]
-                .1
-                .push(m["lux"].as_f64().unwrap() / t["lux"].as_f64().unwrap() - 1.0);
-        }
-    }
-    ratios
-        .into_iter()
-        .map(|(name, mut v)| {
-            v.sort_by(f64::total_cmp);
-            (name, v[v.len() / 2])
-        })
-        .collect()
-}
-
 /// Whole cycles through the real `FabricSource` on the model at the `[fabric]` window, full
 /// frame read binned 4 x 4 at skip 4 (648 x 486 samples), the example's five exposures (20 µs
 /// to 0.5 s, as the sensor makes them: whole rows). Under a clear and an overcast sky the
@@ -530,7 +479,7 @@ fn skyluxd_runs_daylight_cycles_on_the_fabric_model_at_full_frame() {
                 assert_eq!(r["sun"]["flags"], serde_json::json!([]), "{r}");
             }
         }
-        let medians = interior_medians(&records);
+        let medians = interior_median_errors(&records);
         eprintln!("{sky}: interior medians {medians:?}");
         for (name, e) in medians {
             assert!(

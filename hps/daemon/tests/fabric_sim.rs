@@ -31,37 +31,12 @@ use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-/// The example configuration on the fabric: a 128 x 96 array window around the lens axis
-/// read with skip 8 (16 x 12 samples), two exposures of 30 and 100 rows at the
-/// highest analog gain (7.875), so that the sky near the horizon lands in the valid range.
-fn fabric_config(dir: &std::path::Path) -> std::path::PathBuf {
-    config_with(
-        dir,
-        &[
-            (
-                "exposures_us = [20.0, 421.0, 8870.0, 186900.0, 500000.0]",
-                "exposures_us = [300.0, 1000.0]",
-            ),
-            ("source = \"sim\"", "source = \"fabric\""),
-            ("gain = [1.0, 1.0, 1.0, 1.0, 7.875]", "gain = 7.875"),
-            ("row_start = 54 ", "row_start = 924 "),
-            ("col_start = 16 ", "col_start = 1232 "),
-            ("width = 2592 ", "width = 128 "),
-            ("height = 1944\n", "height = 96\n"),
-            ("skip = 4 ", "skip = 8 "),
-            ("bin = 4 ", "bin = 1 "),
-            ("frame_timeout_s = 2.0 ", "frame_timeout_s = 120.0 "),
-        ],
-        "",
-    )
-}
-
 /// ~1 min of simulation on an idle machine, several on a loaded one: `--ignored`.
 #[test]
 #[ignore = "slow cycle-accurate simulation: run with --ignored"]
 fn fabric_frames_are_the_sensor_samples_and_exposures_the_sensor_formula() {
     let tmp = tempfile::tempdir().unwrap();
-    let path = fabric_config(tmp.path());
+    let path = tiny_fabric_config(tmp.path(), "fabric");
     let config = Config::load(&path, &Overrides::default()).unwrap();
     let (device, _) = skylux_hps::camera::DeviceConfig::read(&config.camera.device).unwrap();
     let stop = Arc::new(AtomicBool::new(false));
@@ -163,7 +138,7 @@ fn skyluxd_runs_a_cycle_on_the_simulated_fabric_and_its_map_is_the_offline_merge
     let tmp = tempfile::tempdir().unwrap();
     let out = tmp.path().join("out");
     let log = tmp.path().join("stderr.log");
-    let config = fabric_config(tmp.path());
+    let config = tiny_fabric_config(tmp.path(), "fabric");
     let mut child = start(
         &SimRun::new(&config, &out)
             .cycles(1)

@@ -58,56 +58,6 @@ fn run(replace: &[(&str, &str)], start: &str, step_s: u64, cycles: u64) -> Vec<s
         .collect()
 }
 
-fn lux_of(sensors: &serde_json::Value) -> Vec<(String, f64)> {
-    sensors
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|s| {
-            (
-                s["sensor"].as_str().unwrap().to_string(),
-                s["lux"].as_f64().unwrap(),
-            )
-        })
-        .collect()
-}
-
-/// Per sensor, the median over `records` (sun above 10°) of measured / world − 1; prints
-/// each cycle's values.
-fn interior_median_errors(records: &[serde_json::Value]) -> Vec<(String, f64)> {
-    let mut ratios: Vec<(String, Vec<f64>)> = vec![];
-    for r in records {
-        if r["sun"]["spa_altitude_deg"].as_f64().unwrap() <= 10.0 {
-            continue;
-        }
-        let measured = lux_of(&r["illuminance"]);
-        let truth = lux_of(&r["truth_illuminance"]);
-        assert_eq!(measured.len(), truth.len());
-        if ratios.is_empty() {
-            ratios = measured.iter().map(|(n, _)| (n.clone(), vec![])).collect();
-        }
-        let line: Vec<String> = measured
-            .iter()
-            .zip(&truth)
-            .zip(ratios.iter_mut())
-            .map(|(((name, m), (tn, t)), (_, v))| {
-                assert_eq!(name, tn);
-                v.push(m / t - 1.0);
-                format!("{name} {m:.0}/{t:.0}")
-            })
-            .collect();
-        println!("{}: interior {}", r["time"], line.join(", "));
-    }
-    assert!(!ratios.is_empty(), "no cycle with the sun above 10°");
-    ratios
-        .into_iter()
-        .map(|(name, mut v)| {
-            v.sort_by(f64::total_cmp);
-            (name, v[v.len() / 2])
-        })
-        .collect()
-}
-
 /// Outdoor, sun and interior of one day's records against the world.
 fn check_day(records: &[serde_json::Value], clear: bool) {
     let (mut sun_in_view, mut extracted) = (0, 0);

@@ -209,3 +209,81 @@ pub fn signal(child: &Child, signal: i32) {
     let rc = unsafe { libc::kill(child.id() as libc::pid_t, signal) };
     assert_eq!(rc, 0, "kill({}, {signal})", child.id());
 }
+
+/// Sensor names and lux of a record's `illuminance` or `truth_illuminance`.
+fn lux_of(sensors: &serde_json::Value) -> Vec<(String, f64)> {
+    sensors
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| {
+            (
+                s["sensor"].as_str().unwrap().to_string(),
+                s["lux"].as_f64().unwrap(),
+            )
+        })
+        .collect()
+}
+
+/// Per sensor, the median over `records` (sun above 10°) of measured / world − 1; prints
+/// each cycle's values.
+pub fn interior_median_errors(records: &[serde_json::Value]) -> Vec<(String, f64)> {
+    let mut ratios: Vec<(String, Vec<f64>)> = vec![];
+    for r in records {
+        if r["sun"]["spa_altitude_deg"].as_f64().unwrap() <= 10.0 {
+            continue;
+        }
+        let measured = lux_of(&r["illuminance"]);
+        let truth = lux_of(&r["truth_illuminance"]);
+        assert_eq!(measured.len(), truth.len());
+        if ratios.is_empty() {
+            ratios = measured.iter().map(|(n, _)| (n.clone(), vec![])).collect();
+        }
+        let line: Vec<String> = measured
+            .iter()
+            .zip(&truth)
+            .zip(ratios.iter_mut())
+            .map(|(((name, m), (tn, t)), (_, v))| {
+                assert_eq!(name, tn);
+                v.push(m / t - 1.0);
+                format!("{name} {m:.0}/{t:.0}")
+            })
+            .collect();
+        println!("{}: interior {}", r["time"], line.join(", "));
+    }
+    assert!(!ratios.is_empty(), "no cycle with the sun above 10°");
+    ratios
+        .into_iter()
+        .map(|(name, mut v)| {
+            v.sort_by(f64::total_cmp);
+            (name, v[v.len() / 2])
+        })
+        .collect()
+}
+
+/// The example configuration on a small fabric window: a 128 x 96 array window around the lens
+/// axis read with skip 8, unbinned (16 x 12 samples), two exposures of 300 and 1000 µs at the
+/// highest analog gain (7.875) so that the sky near the horizon lands in the valid range, and
+/// `[sim] source = source` (`fabric`: the cycle-accurate core; `fabric-model`: the behavioural
+/// fabric).
+pub fn tiny_fabric_config(dir: &Path, source: &str) -> PathBuf {
+    config_with(
+        dir,
+        &[
+            (
+                "exposures_us = [20.0, 421.0, 8870.0, 186900.0, 500000.0]",
+                "exposures_us = [300.0, 1000.0]",
+            ),
+            ("source = \"sim\"", &format!("source = \"{source}\"")),
+            ("gain = [1.0, 1.0, 1.0, 1.0, 7.875]", "gain = 7.875"),
+            ("row_start = 54 ", "row_start = 924 "),
+            ("col_start = 16 ", "col_start = 1232 "),
+            ("width = 2592 ", "width = 128 "),
+            ("height = 1944\n", "height = 96\n"),
+            ("skip = 4 ", "skip = 8 "),
+            ("bin = 4 ", "bin = 1 "),
+            ("frame_timeout_s = 2.0 ", "frame_timeout_s = 120.0 "),
+        ],
+        "",
+    )
+}
