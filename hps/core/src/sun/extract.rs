@@ -226,6 +226,10 @@ fn bright_components(
                     >= disk_flux
         })
     };
+    // A9 cost (timing::a9::sun::CANDIDATE_*, armv7 listing): this closure is compiled as a
+    // function of its own, with a 9-register push and pop. A group outside the lens leaves
+    // after the first is_finite (19 cycles), a flagged one after its flag (24), a valid one
+    // pays a VDIV.F64 in `threshold` and an fmin call for `.min(1.0)` (56).
     let candidate = |i: usize| {
         seen(i)
             && (map.flags[i] == MapFlag::OverRange
@@ -235,7 +239,10 @@ fn bright_components(
                             && geometry.solid_angle_sr[i] as f64 > SOLAR_DISK_SR
                             && block_holds_a_disk(i)))))
     };
-    // 8-connected components of candidates.
+    // 8-connected components of candidates. A9: 13 instructions per group for the scan
+    // (timing::a9::sun::SCAN_PER_GROUP) besides the candidate test; per member about 225 for
+    // the search, `i % w` and `i / w` being one call of __aeabi_uidiv (the A9 has no divide
+    // instruction) (BFS_PER_MEMBER, an estimate).
     let mut label = vec![usize::MAX; n];
     let mut components: Vec<Vec<usize>> = vec![];
     for start in 0..n {
@@ -344,7 +351,8 @@ pub fn extract_sun(
             }
             best
         }
-        // Without a prediction: the component carrying the most light.
+        // Without a prediction: the component carrying the most light. (`max_by` sums the best
+        // so far again at each comparison: `extraction_work` counts those member visits.)
         None => (0..components.len())
             .max_by(|&a, &b| {
                 let flux = |c: &Vec<usize>| {
@@ -394,6 +402,8 @@ pub fn extract_sun(
     let saturated = groups.iter().any(|&i| map.flags[i] == MapFlag::OverRange);
     let (mut flux, mut weighted) = (0.0, DVec3::ZERO);
     let mut peak = 0.0f64;
+    // A9: per group of the box two fmax calls (`peak.max`, `excess.max(0.0)`) and three VMLA
+    // into `weighted` (timing::a9::sun::BOX_PER_GROUP_INLINE, an estimate).
     for &i in &groups {
         if !seen(i) || map.flags[i] != MapFlag::Valid {
             continue;
