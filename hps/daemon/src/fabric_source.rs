@@ -649,6 +649,8 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                     c.words.len()
                 )));
             }
+            // A9 cost (timing::a9::ring::UNPACK_PER_WORD): `ldr`, `and` with 0x0fff0fff,
+            // `str`, loop: 5 instructions a word, memory-bound (4n bytes read, 4n written).
             for (pair, word) in samples_dn.chunks_exact_mut(2).zip(&c.words) {
                 pair.copy_from_slice(&raw::samples(*word));
             }

@@ -97,6 +97,9 @@ impl DaylightCoefficients {
                 expected: "one luminance per bin and one output per sensor",
             });
         }
+        // A9 cost (timing::a9::DC_PER_COEFFICIENT, armv7 listing): per coefficient `vldmia`,
+        // `vldmia`, `vmla.f64`, `subs`, `bne`; the in-order sum makes each VMLA wait 9 cycles
+        // for the last. 8 bytes of the matrix a coefficient from the DDR3: memory-bound there.
         out.par_iter_mut()
             .zip(self.lux_per_cd_m2.par_chunks(self.bins))
             .for_each(|(o, row)| {

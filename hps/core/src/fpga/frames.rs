@@ -52,6 +52,8 @@ impl CapturedFrame {
         if self.descriptor.flags & flag::TRUNCATED != 0 {
             return None;
         }
+        // A9 cost (timing::a9::ring::CHECKSUM_PER_WORD): `ldr`, `subs`, `add`, `bne` a word,
+        // memory-bound on the board (4n bytes streamed from the DDR3).
         Some(descriptor::checksum(&self.words) == self.descriptor.checksum)
     }
 
@@ -128,6 +130,10 @@ impl RingLayout {
             });
         }
         let n = d.payload_words.min(capacity) as usize;
+        // A9 cost (timing::a9::hps_read): the zeroed buffer (4n bytes filled), then
+        // `read_bytes`' memcpy out of the ring, which on the board is the uncached DMA mapping
+        // (4n bytes at about 64 MB/s: 157 ms for a raw full frame), then the conversion to
+        // words, which the compiler turns into a second memcpy (4n read, 4n written).
         let mut bytes = vec![0u8; 4 * n];
         memory.read_bytes(
             offset + u64::from(descriptor::PAYLOAD_OFFSET_BYTES),

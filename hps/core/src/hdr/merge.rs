@@ -84,6 +84,11 @@ impl<F: Samples> ExposureFrame for F {
         let [[w00, w10], [w01, w11]] = p.weight_at;
         let top = &self.row(2 * gy)[..2 * width];
         let bottom = &self.row(2 * gy + 1)[..2 * width];
+        // A9 cost (timing::a9::merge::GROUP_ROW_INLINE, armv7 listing): per group, 60
+        // instructions (4 u16 loads and conversions, 4 subtractions, 1 multiply and 3 VMLA for
+        // the signal, 2 compares and stores for the flags, 15 register moves) and six calls of
+        // libm's fmin/fmax: VFPv3 has no min/max instruction, so each `min`/`max` below is a
+        // call. 106 cycles, bound by the load/store/VFP issue port.
         for (gx, (t, b)) in top.chunks_exact(2).zip(bottom.chunks_exact(2)).enumerate() {
             let (a, bb, c, d): (f64, f64, f64, f64) =
                 (t[0].into(), t[1].into(), b[0].into(), b[1].into());
@@ -380,6 +385,7 @@ impl Merger {
                 &mut scratch.over[range.clone()],
                 &mut scratch.under[range.clone()],
             );
+            // A9: 13 instructions per group (timing::a9::merge::VALID).
             for i in range {
                 scratch.valid[i] = !(scratch.over[i] || scratch.under[i]);
             }
@@ -390,6 +396,7 @@ impl Merger {
         let (sum_s, sum_tg) = (&mut scratch.sum_s, &mut scratch.sum_tg);
         sum_s.iter_mut().for_each(|x| *x = 0.0);
         sum_tg.iter_mut().for_each(|x| *x = 0.0);
+        // A9: 14 instructions per group and exposure, 2 VADD.F64 (timing::a9::merge::SUMS).
         for k in 0..n {
             let row = k * width..(k + 1) * width;
             let tg = self.tg[k];
@@ -406,6 +413,8 @@ impl Merger {
         // Pilot rate (signal per unit t g), then inverse-variance weights from the signal it
         // predicts for each exposure.
         let (num, den) = (&mut scratch.num, &mut scratch.den);
+        // A9: one VDIV.F64 (20 cycles of the VFP pipeline) and an fmax call per group
+        // (timing::a9::merge::PILOT_INLINE).
         for ((p, s), t) in scratch
             .pilot
             .iter_mut()
@@ -416,6 +425,8 @@ impl Merger {
         }
         num.iter_mut().for_each(|x| *x = 0.0);
         den.iter_mut().for_each(|x| *x = 0.0);
+        // A9: per group and valid exposure one VDIV.F64, one VMLA, two VMUL, two VADD: 31 VFP
+        // cycles (timing::a9::merge::WEIGHTS_VALID); 9 cycles when not valid (no division).
         for k in 0..n {
             let row = k * width..(k + 1) * width;
             let (tg, inv_tg) = (self.tg[k], self.inv_tg[k]);
@@ -432,6 +443,8 @@ impl Merger {
                 *b += if ok { inv } else { 0.0 };
             }
         }
+        // A9: a valid group costs three VDIV.F64 and one VSQRT.F64 (28 cycles): 100 VFP cycles
+        // (timing::a9::merge::OUTPUT_VALID); a flagged one a loop over the exposures' flags.
         for (gx, &inv_v) in inverse_vignetting.iter().enumerate() {
             if sum_tg[gx] == 0.0 || inv_v == 0.0 {
                 let (mut all_over, mut all_under) = (true, true);

@@ -9,6 +9,7 @@
 //! angle, the disk luminance. The direction is the flux-weighted mean direction.
 
 use crate::hdr::{GroupGeometry, LuminanceMap, MapFlag};
+use crate::timing::a9::SunWork;
 use glam::DVec3;
 use std::collections::VecDeque;
 
@@ -225,6 +226,10 @@ fn bright_components(
                     >= disk_flux
         })
     };
+    // A9 cost (timing::a9::sun::CANDIDATE_*, armv7 listing): this closure is compiled as a
+    // function of its own, with a 9-register push and pop. A group outside the lens leaves
+    // after the first is_finite (19 cycles), a flagged one after its flag (24), a valid one
+    // pays a VDIV.F64 in `threshold` and an fmin call for `.min(1.0)` (56).
     let candidate = |i: usize| {
         seen(i)
             && (map.flags[i] == MapFlag::OverRange
@@ -234,7 +239,10 @@ fn bright_components(
                             && geometry.solid_angle_sr[i] as f64 > SOLAR_DISK_SR
                             && block_holds_a_disk(i)))))
     };
-    // 8-connected components of candidates.
+    // 8-connected components of candidates. A9: 13 instructions per group for the scan
+    // (timing::a9::sun::SCAN_PER_GROUP) besides the candidate test; per member about 225 for
+    // the search, `i % w` and `i / w` being one call of __aeabi_uidiv (the A9 has no divide
+    // instruction) (BFS_PER_MEMBER, an estimate).
     let mut label = vec![usize::MAX; n];
     let mut components: Vec<Vec<usize>> = vec![];
     for start in 0..n {
@@ -343,7 +351,8 @@ pub fn extract_sun(
             }
             best
         }
-        // Without a prediction: the component carrying the most light.
+        // Without a prediction: the component carrying the most light. (`max_by` sums the best
+        // so far again at each comparison: `extraction_work` counts those member visits.)
         None => (0..components.len())
             .max_by(|&a, &b| {
                 let flux = |c: &Vec<usize>| {
@@ -393,6 +402,8 @@ pub fn extract_sun(
     let saturated = groups.iter().any(|&i| map.flags[i] == MapFlag::OverRange);
     let (mut flux, mut weighted) = (0.0, DVec3::ZERO);
     let mut peak = 0.0f64;
+    // A9: per group of the box two fmax calls (`peak.max`, `excess.max(0.0)`) and three VMLA
+    // into `weighted` (timing::a9::sun::BOX_PER_GROUP_INLINE, an estimate).
     for &i in &groups {
         if !seen(i) || map.flags[i] != MapFlag::Valid {
             continue;
@@ -436,6 +447,161 @@ pub fn extract_sun(
     })
 }
 
+/// What [`extract_sun`] does on `map`, counted for the A9 cost model
+/// ([`crate::timing::a9::sun_extraction`]): the calls of the candidate test by the kind of
+/// group they test, the components, and the boxes the measurement walks. It runs the same
+/// `bright_components` and stops where `extract_sun` returns early; it changes nothing.
+pub fn extraction_work(
+    map: &LuminanceMap,
+    geometry: &GroupGeometry,
+    search: &SunSearch,
+) -> SunWork {
+    let (w, h) = (map.width, map.height);
+    let n = w * h;
+    let mut work = SunWork {
+        groups: n as f64,
+        ..SunWork::default()
+    };
+    // `all` stops at the first flag that is not OverRange.
+    let first_not_over = map.flags.iter().position(|f| *f != MapFlag::OverRange);
+    work.all_over_flags = first_not_over.map_or(n, |i| i + 1) as f64;
+    if n == 0 || first_not_over.is_none() {
+        return work;
+    }
+    let seen = |i: usize| geometry.direction[i].is_finite();
+    if let Some(p) = search.predicted_direction {
+        let cos_limit = search.max_offset_deg.to_radians().cos();
+        let first =
+            (0..n).position(|i| seen(i) && geometry.direction[i].as_dvec3().dot(p) >= cos_limit);
+        work.fov_groups = first.map_or(n, |i| i + 1) as f64;
+        if first.is_none() {
+            return work;
+        }
+    }
+    let components = bright_components(map, geometry, search);
+    // The candidate test's three paths: outside the lens, flagged, valid.
+    let kind = |i: usize| {
+        if !seen(i) {
+            0
+        } else if map.flags[i] != MapFlag::Valid {
+            1
+        } else {
+            2
+        }
+    };
+    let mut member = vec![false; n];
+    let mut start = vec![false; n];
+    for c in &components {
+        for &i in c {
+            member[i] = true;
+        }
+        if let Some(&s) = c.first() {
+            start[s] = true;
+        }
+    }
+    // The scan tests every group no earlier search labelled: the non-members and each
+    // component's first member (the search starts there, so it pops first).
+    for i in 0..n {
+        if !member[i] || start[i] {
+            work.scan_calls[kind(i)] += 1.0;
+        }
+    }
+    // The search tests each member once when it first reaches it, and a neighbour that is not
+    // a candidate (never labelled) once from every member next to it.
+    for c in &components {
+        for (k, &i) in c.iter().enumerate() {
+            if k > 0 {
+                work.search_calls[kind(i)] += 1.0;
+            }
+            let (x, y) = (i % w, i / w);
+            for ny in y.saturating_sub(1)..=(y + 1).min(h - 1) {
+                for nx in x.saturating_sub(1)..=(x + 1).min(w - 1) {
+                    let j = ny * w + nx;
+                    if !member[j] {
+                        work.search_calls[kind(j)] += 1.0;
+                    }
+                }
+            }
+        }
+    }
+    work.members = components.iter().map(Vec::len).sum::<usize>() as f64;
+    if components.is_empty() {
+        return work;
+    }
+    // The choice, as `extract_sun` makes it.
+    let chosen = match search.predicted_direction {
+        Some(p) => {
+            work.direction_visits += work.members;
+            let mean_direction = |members: &[usize]| -> DVec3 {
+                members
+                    .iter()
+                    .map(|&i| geometry.direction[i].as_dvec3() * geometry.solid_angle_sr[i] as f64)
+                    .sum::<DVec3>()
+                    .normalize()
+            };
+            let (best, offset) = components
+                .iter()
+                .enumerate()
+                .map(|(k, c)| (k, angle_deg(mean_direction(c), p)))
+                .min_by(|a, b| a.1.total_cmp(&b.1))
+                .expect("at least one component");
+            if offset > search.max_offset_deg {
+                return work;
+            }
+            best
+        }
+        None => {
+            // `max_by` compares the best so far with the next: both fluxes are summed anew.
+            let flux = |c: &Vec<usize>| {
+                c.iter()
+                    .map(|&i| map.luminance_cd_m2[i] as f64 * geometry.solid_angle_sr[i] as f64)
+                    .filter(|f| f.is_finite())
+                    .sum::<f64>()
+            };
+            let mut best = 0;
+            for k in 1..components.len() {
+                work.flux_visits += (components[best].len() + components[k].len()) as f64;
+                if flux(&components[best]).total_cmp(&flux(&components[k]))
+                    != std::cmp::Ordering::Greater
+                {
+                    best = k;
+                }
+            }
+            best
+        }
+    };
+    let core = &components[chosen];
+    if geometry.fill_factor < 1.0 && core.iter().any(|&i| coarse_group(geometry, i)) {
+        return work;
+    }
+    work.chosen_members = core.len() as f64;
+    work.direction_visits += core.len() as f64;
+    let (mut min_x, mut max_x, mut min_y, mut max_y) = (usize::MAX, 0, usize::MAX, 0);
+    for &i in core {
+        min_x = min_x.min(i % w);
+        max_x = max_x.max(i % w);
+        min_y = min_y.min(i / w);
+        max_y = max_y.max(i / w);
+    }
+    let side = |lo: usize, hi: usize, pad: usize, len: usize| {
+        ((hi + pad).min(len - 1) + 1 - lo.saturating_sub(pad)) as f64
+    };
+    let d = search.dilation_groups;
+    work.box_groups = side(min_x, max_x, d, w) * side(min_y, max_y, d, h);
+    let outer = d + 3;
+    work.ring_box_groups = side(min_x, max_x, outer, w) * side(min_y, max_y, outer, h);
+    for y in min_y.saturating_sub(outer)..=(max_y + outer).min(h - 1) {
+        for x in min_x.saturating_sub(outer)..=(max_x + outer).min(w - 1) {
+            let i = y * w + x;
+            let outside_inner = x + d < min_x || x > max_x + d || y + d < min_y || y > max_y + d;
+            if outside_inner && seen(i) && map.flags[i] == MapFlag::Valid {
+                work.ring_values += 1.0;
+            }
+        }
+    }
+    work
+}
+
 /// The map with the disk removed: its groups take the circumsolar background, so that the sky
 /// and the concentrated sun are not counted twice.
 pub fn remove_sun(map: &LuminanceMap, sun: &ExtractedSun) -> LuminanceMap {
@@ -445,4 +611,87 @@ pub fn remove_sun(map: &LuminanceMap, sun: &ExtractedSun) -> LuminanceMap {
         out.flags[i] = MapFlag::Valid;
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    /// A 12 x 10 map: the first column outside the lens, one flagged group, a 3 x 3 disk at
+    /// 5e8 cd/m² and a 2-group reflection at 2e8 on a 1e3 cd/m² sky; groups smaller than the
+    /// disk, so the threshold is the luminance threshold.
+    fn scene() -> (LuminanceMap, GroupGeometry) {
+        let (w, h) = (12, 10);
+        let mut direction = vec![];
+        for y in 0..h {
+            for x in 0..w {
+                direction.push(if x == 0 {
+                    Vec3::NAN
+                } else {
+                    Vec3::new(x as f32 - 6.0, y as f32 - 5.0, 30.0).normalize()
+                });
+            }
+        }
+        let geometry = GroupGeometry {
+            width: w,
+            height: h,
+            direction,
+            inverse_vignetting: vec![1.0; w * h],
+            solid_angle_sr: vec![1e-5; w * h],
+            fill_factor: 1.0,
+        };
+        let mut map = LuminanceMap {
+            width: w,
+            height: h,
+            luminance_cd_m2: vec![1e3; w * h],
+            flags: vec![MapFlag::Valid; w * h],
+            relative_sigma: vec![0.01; w * h],
+        };
+        for y in 3..=5 {
+            for x in 3..=5 {
+                map.luminance_cd_m2[y * w + x] = 5e8;
+            }
+        }
+        map.luminance_cd_m2[7 * w + 9] = 2e8;
+        map.luminance_cd_m2[7 * w + 10] = 2e8;
+        map.flags[2 * w + 8] = MapFlag::UnderRange;
+        map.luminance_cd_m2[2 * w + 8] = f32::NAN;
+        (map, geometry)
+    }
+
+    /// The counts the A9 model takes, worked out by hand, and the box the extraction itself
+    /// measures.
+    #[test]
+    fn extraction_work_counts_what_extract_sun_does() {
+        let (map, geometry) = scene();
+        let search = SunSearch::default();
+        let work = extraction_work(&map, &geometry, &search);
+        assert_eq!(work.groups, 120.0);
+        assert_eq!(work.all_over_flags, 1.0);
+        assert_eq!(work.fov_groups, 0.0);
+        assert_eq!(work.members, 11.0);
+        // The scan: 120 groups, less the 11 members, plus the 2 starts; 10 outside the lens,
+        // 1 flagged.
+        assert_eq!(work.scan_calls, [10.0, 1.0, 100.0]);
+        // The search: 8 + 1 members reached, and the neighbours of the 3 x 3 (4 corners x 5
+        // + 4 edges x 3) and of the pair (2 x 7).
+        assert_eq!(work.search_calls, [0.0, 0.0, 9.0 + 32.0 + 14.0]);
+        assert_eq!(work.flux_visits, 11.0);
+        assert_eq!(work.chosen_members, 9.0);
+        assert_eq!(work.direction_visits, 9.0);
+        let sun = extract_sun(&map, &geometry, &search).expect("a sun");
+        assert_eq!(work.box_groups, sun.groups.len() as f64);
+        assert_eq!(work.box_groups, 49.0);
+        assert_eq!(work.ring_box_groups, 11.0 * 10.0);
+        // With a prediction at the disk: every member's direction, then the centre's.
+        let predicted = SunSearch {
+            predicted_direction: Some(geometry.direction[4 * 12 + 4].as_dvec3()),
+            ..SunSearch::default()
+        };
+        let work = extraction_work(&map, &geometry, &predicted);
+        assert_eq!(work.direction_visits, 11.0 + 9.0);
+        assert_eq!(work.flux_visits, 0.0);
+        assert!(work.fov_groups >= 1.0);
+    }
 }

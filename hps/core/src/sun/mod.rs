@@ -13,8 +13,8 @@ mod tracking_files;
 
 pub use delta_t::{delta_t_s, DELTA_T_YEARS};
 pub use extract::{
-    extract_sun, remove_sun, ExtractedSun, NoSun, SunFlag, SunSearch, SOLAR_DISK_SR,
-    SUNSHINE_THRESHOLD_CD_M2,
+    extract_sun, extraction_work, remove_sun, ExtractedSun, NoSun, SunFlag, SunSearch,
+    SOLAR_DISK_SR, SUNSHINE_THRESHOLD_CD_M2,
 };
 pub use fabric::{
     fabric_background_cd_m2, sun_from_fabric, FabricSun, FabricSunSearch, SunExposure,

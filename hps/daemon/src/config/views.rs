@@ -137,8 +137,9 @@ pub struct GlareConfig {
 }
 
 /// 64 × 64 pixels (2.8° each) at 16 paths: three views take 1.7 s (overcast or no sun) to
-/// 2.9 s (sun) of one core here per cycle, 17 to 29 s on the A9 by the budget's ×10
-/// (BENCHMARKS.md, "Glare views"), inside the default budget of a 60 s period.
+/// 2.9 s (sun) of one core here per cycle (BENCHMARKS.md, "Glare views"). Their time on the A9
+/// is not modelled; the cycle renders a view only when its own measured time per path says it
+/// fits the budget, and reports DGPs otherwise.
 fn default_resolution_px() -> u32 {
     64
 }
@@ -149,7 +150,7 @@ fn default_sensor_samples() -> u32 {
     4096
 }
 /// Three quarters of the period: 45 s of a 60 s period, of which the rest of the cycle takes
-/// some 3 s on the A9 (BENCHMARKS.md, "skyluxd cycle budget").
+/// about 3.2 s on the A9 by the cost model (BENCHMARKS.md, "skyluxd cycle budget").
 fn default_budget_fraction() -> f64 {
     0.75
 }

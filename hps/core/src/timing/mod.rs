@@ -1,4 +1,7 @@
-//! Wall-clock timing for the `bench` subcommands and the daemon's cycle budget.
+//! Wall-clock timing for the `bench` subcommands and the daemon's cycle budget, and the A9
+//! cost model that budget sets beside its measurements ([`a9`]).
+
+pub mod a9;
 
 use std::time::Instant;
 
