@@ -94,6 +94,7 @@ pub fn compare_with_rtrace(
         ..Default::default()
     };
     let scene = scene::load_files_with(&files, &options).unwrap();
+    let sensors_text = sensors;
     let sensors = scene::parse_sensors(format!("{label}.pts"), sensors).unwrap();
     let world = World::new(&scene).unwrap();
     let settings = Settings {
@@ -115,6 +116,27 @@ pub fn compare_with_rtrace(
         ours.iter().all(|o| o.illuminance_lux > 1.0),
         "{label}: every sensor is lit: {ours:?}"
     );
-    let failures = agreement_failures(label, &ours, &reference, effort.k_sigma);
+    let mut failures = agreement_failures(label, &ours, &reference, effort.k_sigma);
+    if !failures.is_empty() {
+        // rtrace's estimates are heavy-tailed where a sensor sees a sun patch: now and then all
+        // of a sensor's few estimates miss its rare bright paths, and the mean and its spread
+        // both come out low (seen: tutorial room3's S37 at 5274 ± 39 lux in one run, 5703 ± 91
+        // in the next, ours 5673). A disagreement is judged again against a second reference,
+        // independent of the first and four times its size; a real error fails both.
+        println!(
+            "{label}: {failures:?}; judged again against 4 x {} new rtrace estimates",
+            effort.rtrace_samples
+        );
+        let second = rtrace_lux_runs(
+            &bin,
+            &lib,
+            work_dir,
+            &octree,
+            sensors_text,
+            effort.rtrace_args,
+            4 * effort.rtrace_samples,
+        );
+        failures = agreement_failures(label, &ours, &second, effort.k_sigma);
+    }
     assert!(failures.is_empty(), "{label}: {failures:?}");
 }
