@@ -12,13 +12,25 @@
 //! decides (`raytrans`); light transmitted through it (the sun's next-event estimate and
 //! the sampled continuation) is traced from the hit moved by the thickness against the
 //! front normal, past the detailed geometry (m_bsdf.c: `-thick` times `ron`).
+//!
+//! `aBSDF` is a thin `BSDF` whose strong "through" component ([`crate::bsdf::Through`],
+//! found around the straight continuation of each ray as m_bsdf.c's `compute_through` finds
+//! it) passes rays straight on. A shadow ray towards a light source (the sun) crosses it
+//! keeping the through transmittance, so the sun reaches what lies behind an `aBSDF` window by
+//! next-event estimation; the sun's estimate at the window itself then takes the BTDF around
+//! the peak instead of the peak for a source within the peak's cone of the ray's through
+//! direction, so that the peak is not counted twice (`direct_specular_OK`). Paths that meet it
+//! after a bounce sample its whole data, peak included, as RADIANCE's ambient and specular
+//! rays do. Shadow rays for the sky's next-event estimate do not cross it (the sky is no
+//! light source in RADIANCE: its light through the peak is the sampled continuation's).
 
 use super::scattering::{bright, Scatter};
 use crate::bsdf::Bsdf;
 use crate::engine::ray::FTINY;
 use crate::engine::rng::Rng;
 use crate::engine::sampling::cosine_direction;
-use crate::scene::BsdfModifier;
+use crate::bsdf::Through;
+use crate::scene::{BsdfModifier, BsdfType};
 use glam::DVec3;
 use std::f64::consts::PI;
 use std::sync::Arc;
@@ -33,6 +45,8 @@ pub struct BsdfMaterial {
     pub extra_reflectance_front_rgb: DVec3,
     pub extra_reflectance_back_rgb: DVec3,
     pub extra_transmittance_rgb: DVec3,
+    /// `aBSDF`: straight rays pass with the through component.
+    pub through: bool,
 }
 
 impl BsdfMaterial {
@@ -44,7 +58,20 @@ impl BsdfMaterial {
             extra_reflectance_front_rgb: args.extra_reflectance_front_rgb,
             extra_reflectance_back_rgb: args.extra_reflectance_back_rgb,
             extra_transmittance_rgb: args.extra_transmittance_rgb,
+            through: args.kind == BsdfType::ABsdf,
         }
+    }
+
+    /// What a straight ray along unit `d` keeps crossing a surface of front normal `normal`
+    /// of this material: an `aBSDF`'s through transmittance for that ray (m_bsdf.c passes
+    /// shadow rays with `cthru`), 0 for a `BSDF` or where there is no through component.
+    pub fn through_transmittance(&self, d: DVec3, normal: DVec3) -> f64 {
+        if !self.through {
+            return 0.0;
+        }
+        Frame::new(normal, self.up)
+            .and_then(|frame| self.data.through(frame.to_local(-d)))
+            .map_or(0.0, |t| t.transmittance)
     }
 
     /// Whether a ray along `d` meeting a surface of front normal `normal` passes this proxy
@@ -72,10 +99,16 @@ impl BsdfMaterial {
         } else {
             self.extra_reflectance_back_rgb
         };
+        let view_local = frame.to_local(-d);
         Some(BsdfShading {
             data: self.data.clone(),
             frame,
-            view_local: frame.to_local(-d),
+            view_local,
+            through: if self.through {
+                self.data.through(view_local)
+            } else {
+                None
+            },
             pnorm: if hit_front { normal } else { -normal },
             transmitted_offset_m: -self.thickness_m * normal.normalize(),
             extra_reflectance_rgb,
@@ -130,6 +163,8 @@ pub struct BsdfShading {
     extra_transmittance_rgb: DVec3,
     /// Where transmitted light is traced from, relative to the hit (zero when thin).
     transmitted_offset_m: DVec3,
+    /// An `aBSDF`'s through component for this ray (None for `BSDF`).
+    through: Option<Through>,
 }
 
 impl BsdfShading {
@@ -152,7 +187,21 @@ impl BsdfShading {
         if ldot.abs() <= FTINY {
             return DVec3::ZERO;
         }
-        let f_per_sr = self.data.eval(self.view_local, self.frame.to_local(ldir));
+        let l_local = self.frame.to_local(ldir);
+        let f_per_sr = match &self.through {
+            // The peak's light is the shadow ray's through the window: the surround instead,
+            // with the data's Lambertian transmission.
+            Some(t) if t.covers(self.view_local, l_local, omega_sr) => {
+                let l = &self.data.lambertian;
+                let lambertian = if self.view_local.z > 0.0 {
+                    l.transmittance_front
+                } else {
+                    l.transmittance_back
+                };
+                t.surround_per_sr + lambertian / PI
+            }
+            _ => self.data.eval(self.view_local, l_local),
+        };
         let extra = if ldot > 0.0 {
             self.extra_reflectance_rgb
         } else {
@@ -229,7 +278,6 @@ impl BsdfShading {
 mod tests {
     use super::*;
     use crate::bsdf::Scattering;
-    use crate::scene::{BsdfModifier, BsdfType};
 
     fn satine(extra_reflectance_front: f64) -> BsdfMaterial {
         let xml = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))

@@ -46,7 +46,7 @@ use super::error::EngineError;
 use super::rng::Rng;
 use super::sky::SkyFunction;
 use crate::bsdf::Bsdf;
-use crate::scene::{BsdfModifier, BsdfType, Modifier, ModifierKind, ModifierRef, Scene, Surface};
+use crate::scene::{BsdfModifier, Modifier, ModifierKind, ModifierRef, Scene, Surface};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -346,10 +346,16 @@ impl Material {
 
     /// What a shadow ray towards a light source (the sun) does at a surface: an `illum` is
     /// its alternate material to it (source.c `passillum`), and a `dielectric` refracts it
-    /// (dielectric.c traces shadow rays through).
+    /// (dielectric.c traces shadow rays through), and an `aBSDF` passes it with its through
+    /// component (m_bsdf.c).
     pub fn source_crossing(&self, dir: DVec3, normal: DVec3, flat: bool) -> SourceCrossing {
         match self {
             Material::Illum(i) => i.alternate.source_crossing(dir, normal, flat),
+            // m_bsdf.c passes shadow rays through an aBSDF with its through component.
+            Material::Bsdf(m) if m.through => match m.through_transmittance(dir, normal) {
+                t if t > 0.0 => SourceCrossing::Straight(ShadowCrossing::Transmits(DVec3::splat(t))),
+                _ => SourceCrossing::Straight(ShadowCrossing::Opaque),
+            },
             Material::Dielectric(m) => match m.shadow_refraction(dir, normal) {
                 Some((direction, factor)) => SourceCrossing::Refracts { direction, factor },
                 None => SourceCrossing::Straight(ShadowCrossing::Opaque),
@@ -362,6 +368,7 @@ impl Material {
     /// than [`Material::shadow_crossing`].
     pub fn has_source_crossing(&self) -> bool {
         matches!(self, Material::Illum(_) | Material::Dielectric(_))
+            || matches!(self, Material::Bsdf(m) if m.through)
     }
 
     /// The factor on the light a ray brings back from this surface after `distance_m` from
@@ -538,15 +545,6 @@ impl Material {
 /// A `BSDF` modifier's material with its XML data loaded; a file that cannot be read is an
 /// error naming the scene file and line, the material and the XML file, element and line.
 fn bsdf_material(m: &Modifier, b: &BsdfModifier) -> Result<BsdfMaterial, EngineError> {
-    if b.kind == BsdfType::ABsdf {
-        return Err(EngineError::Unsupported {
-            at: m.origin.clone(),
-            what: format!(
-                "aBSDF `{}`: its \"through\" component is not traced yet (use BSDF)",
-                m.name
-            ),
-        });
-    }
     let data = Bsdf::load(&b.xml_path).map_err(|error| EngineError::BsdfFile {
         at: m.origin.clone(),
         material: m.name.clone(),
