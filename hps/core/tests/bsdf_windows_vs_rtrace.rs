@@ -27,6 +27,10 @@ mod common;
 use common::compare::{compare_with_rtrace, sky, Effort};
 use common::corpus::corpus;
 use common::radiance::{check_output, lux_of_line, radiance_or_skip, tool};
+use glam::DVec3;
+use skylux_hps::engine::radiance::ray_radiance;
+use skylux_hps::engine::ray::Ray;
+use skylux_hps::engine::rng::Rng;
 use skylux_hps::engine::{self, Settings, World};
 use skylux_hps::scene;
 use std::path::{Path, PathBuf};
@@ -270,6 +274,94 @@ fn the_sun_through_the_absdf_glazing_alone() {
                 o.illuminance_lux
             );
         }
+    }
+}
+
+/// View rays through the `aBSDF` glazing (rtrace without `-I`, `-ab 0`): from inside the box
+/// room towards the steep sun's disc, and towards the sky straight out and obliquely. A view
+/// ray goes on straight with the through transmittance and sees the sun's disc (m_bsdf.c
+/// passes it as a `TRANS` ray), besides the glazing's sampled reflection and the sun's
+/// reflection off it. Each side's mean over many estimates (rtrace: `-u+` copies of each
+/// ray), within 1 % or 4 combined standard errors.
+#[test]
+fn view_rays_through_the_absdf_glazing() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let xml = corpus().join("bsdf/frads/ec60.xml");
+    let room_text = box_room_with(&format!(
+        "void aBSDF window_bsdf\n5 {} 0 0 1 .\n0\n0\n",
+        xml.display()
+    ));
+    let dir = tempfile::tempdir().unwrap();
+    let room = dir.path().join("room.rad");
+    std::fs::write(&room, room_text).unwrap();
+    let sky_path = dir.path().join("sky.rad");
+    std::fs::write(&sky_path, sky(&bin, &lib, "gensky", SKIES[1].1)).unwrap();
+    let octree = dir.path().join("room.oct");
+    let mut oconv = tool(&bin, &lib, "oconv");
+    oconv.arg("-f").arg(&room).arg(&sky_path);
+    std::fs::write(&octree, check_output(oconv, None)).unwrap();
+    let sun = DVec3::new(0.0, -60f64.to_radians().cos(), 60f64.to_radians().sin());
+    let rays = [
+        (DVec3::new(2.0, 0.5, 1.0), sun),
+        (DVec3::new(2.0, 2.5, 1.5), DVec3::new(0.0, -1.0, 0.0)),
+        (
+            DVec3::new(2.0, 2.5, 1.5),
+            DVec3::new(0.3, -1.0, 0.1).normalize(),
+        ),
+    ];
+    const COPIES: usize = 64;
+    let mut input = String::new();
+    for (o, d) in &rays {
+        for _ in 0..COPIES {
+            input.push_str(&format!("{} {} {} {} {} {}\n", o.x, o.y, o.z, d.x, d.y, d.z));
+        }
+    }
+    let mut rtrace = tool(&bin, &lib, "rtrace");
+    rtrace
+        .args(["-h", "-ab", "0", "-st", "0", "-lr", "-16", "-u+"])
+        .arg(&octree);
+    let theirs: Vec<f64> = String::from_utf8(check_output(rtrace, Some(input.as_bytes())))
+        .unwrap()
+        .lines()
+        .filter(|l| !l.trim().is_empty())
+        .map(lux_of_line)
+        .collect();
+    assert_eq!(theirs.len(), rays.len() * COPIES);
+    let scene = scene::load_files(&[room.clone(), sky_path]).unwrap();
+    let world = World::new(&scene).unwrap();
+    let settings = Settings {
+        ambient_bounces: 0,
+        seed: 11,
+        ..Settings::default()
+    };
+    let mean_se = |v: &[f64]| {
+        let n = v.len() as f64;
+        let mean = v.iter().sum::<f64>() / n;
+        let var = v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0);
+        (mean, (var / n).sqrt())
+    };
+    for (k, (o, d)) in rays.iter().enumerate() {
+        let (t, t_se) = mean_se(&theirs[k * COPIES..(k + 1) * COPIES]);
+        let ours: Vec<f64> = (0..1024)
+            .map(|e| {
+                let mut rng = Rng::for_stream(11, (k * 1024 + e) as u64);
+                let l = ray_radiance(&world, Ray::new(*o, *d), &settings, &mut rng);
+                179.0 * (0.265 * l.x + 0.670 * l.y + 0.065 * l.z)
+            })
+            .collect();
+        let (m, m_se) = mean_se(&ours);
+        let combined = (t_se * t_se + m_se * m_se).sqrt();
+        println!(
+            "  ec60-absdf view ray {k} {d}: ours {m:.1} ± {m_se:.1} cd/m², rtrace {t:.1} ± {t_se:.1}, diff {:+.2} % ({:+.2} σ)",
+            100.0 * (m - t) / t,
+            (m - t) / combined.max(1e-12)
+        );
+        assert!(
+            (m - t).abs() <= (0.01 * t).max(4.0 * combined),
+            "view ray {k}: ours {m} ± {m_se} vs rtrace {t} ± {t_se}"
+        );
     }
 }
 

@@ -21,7 +21,10 @@
 //! the peak instead of the peak for a source within the peak's cone of the ray's through
 //! direction, so that the peak is not counted twice (`direct_specular_OK`). Paths that meet it
 //! after a bounce sample its whole data, peak included, as RADIANCE's ambient and specular
-//! rays do. Shadow rays for the sky's next-event estimate do not cross it (the sky is no
+//! rays do. A view (camera) ray goes on straight with the through transmittance, still a view
+//! ray, and the rest of its scattering is sampled with the transmitted samples that fall in
+//! the peak (within the side of the view's smallest data cell of the straight continuation)
+//! dropped (m_bsdf.c `sample_sdf`, `sample_sdcomp`). Shadow rays for the sky's next-event estimate do not cross it (the sky is no
 //! light source in RADIANCE: its light through the peak is the sampled continuation's).
 
 use super::scattering::{bright, Scatter};
@@ -92,6 +95,12 @@ impl BsdfMaterial {
     /// when the up vector is parallel to the normal (RADIANCE: "Illegal orientation vector",
     /// the ray gets nothing).
     pub fn shade(&self, d: DVec3, normal: DVec3) -> Option<BsdfShading> {
+        self.shade_as(d, normal, false)
+    }
+
+    /// [`BsdfMaterial::shade`] for a ray that is a view (camera) ray if `view`: at an `aBSDF`
+    /// its through component is then left out of the sampled transmission.
+    pub fn shade_as(&self, d: DVec3, normal: DVec3, view: bool) -> Option<BsdfShading> {
         let frame = Frame::new(normal, self.up)?;
         let hit_front = d.dot(normal) < 0.0;
         let extra_reflectance_rgb = if hit_front {
@@ -100,15 +109,21 @@ impl BsdfMaterial {
             self.extra_reflectance_back_rgb
         };
         let view_local = frame.to_local(-d);
+        let through = if self.through {
+            self.data.through(view_local)
+        } else {
+            None
+        };
+        let peak_radius_squared = match through {
+            Some(_) if view => Some(self.data.pair_projected_solid_angle(view_local, -view_local)),
+            _ => None,
+        };
         Some(BsdfShading {
             data: self.data.clone(),
             frame,
             view_local,
-            through: if self.through {
-                self.data.through(view_local)
-            } else {
-                None
-            },
+            through,
+            peak_radius_squared,
             pnorm: if hit_front { normal } else { -normal },
             transmitted_offset_m: -self.thickness_m * normal.normalize(),
             extra_reflectance_rgb,
@@ -165,6 +180,9 @@ pub struct BsdfShading {
     transmitted_offset_m: DVec3,
     /// An `aBSDF`'s through component for this ray (None for `BSDF`).
     through: Option<Through>,
+    /// For a view ray through an `aBSDF`: transmitted samples whose projection lies within
+    /// √ of this of the straight continuation's are the through component's, dropped.
+    peak_radius_squared: Option<f64>,
 }
 
 impl BsdfShading {
@@ -265,6 +283,16 @@ impl BsdfShading {
         let weight = DVec3::splat(
             s.lobe_value_per_sr * s.direction.z.abs() / s.lobe_pdf_per_sr * inverse_choice,
         );
+        if let Some(r2) = self.peak_radius_squared {
+            let (dx, dy) = (
+                s.direction.x + self.view_local.x,
+                s.direction.y + self.view_local.y,
+            );
+            let transmitted = (s.direction.z > 0.0) != (self.view_local.z > 0.0);
+            if transmitted && !s.lambertian && dx * dx + dy * dy <= r2 {
+                return Scatter::Absorbed;
+            }
+        }
         let direction = self.frame.to_world(s.direction).normalize();
         if s.lambertian {
             Scatter::Diffuse { direction, weight }

@@ -284,7 +284,7 @@ impl Material {
             }
             Material::Normal(m) => Interaction::Shaded(Shading::Normal(m.shade(d, normal, flat))),
             Material::Bsdf(m) if m.passes(d, normal, primary) => Interaction::PassThrough,
-            Material::Bsdf(m) => match m.shade(d, normal) {
+            Material::Bsdf(m) => match m.shade_as(d, normal, primary) {
                 Some(s) => Interaction::Shaded(Shading::Bsdf(s)),
                 None => Interaction::Absorbed,
             },
@@ -341,6 +341,16 @@ impl Material {
             | Material::Spotlight(_)
             | Material::Dielectric(_)
             | Material::Varying(_) => ShadowCrossing::Opaque,
+        }
+    }
+
+    /// What a view (camera) ray along unit `d` meeting a surface of front normal `normal` of
+    /// this material goes on straight with besides its shading: an `aBSDF`'s through
+    /// transmittance (m_bsdf.c traces it as a ray of its own), 0 elsewhere.
+    pub fn view_through(&self, d: DVec3, normal: DVec3) -> f64 {
+        match self {
+            Material::Bsdf(m) => m.through_transmittance(d, normal),
+            _ => 0.0,
         }
     }
 
