@@ -44,7 +44,10 @@ const RTRACE_BSDF: &[&str] = &[
 /// A 4 m × 5 m × 3 m room, the window (x 1..3 m, z 0.9..2.1 m) in its south wall (y = 0)
 /// with its normal into the room (RADIANCE's convention for WINDOW data), up +z.
 fn box_room(xml: &Path) -> String {
-    box_room_with(&format!("void BSDF window_bsdf\n6 0 {} 0 0 1 .\n0\n0\n", xml.display()))
+    box_room_with(&format!(
+        "void BSDF window_bsdf\n6 0 {} 0 0 1 .\n0\n0\n",
+        xml.display()
+    ))
 }
 
 /// [`box_room`] with the window's material `declaration` (a modifier named `window_bsdf`).
@@ -230,8 +233,16 @@ fn the_sun_through_the_absdf_glazing_alone() {
     let room = dir.path().join("room.rad");
     std::fs::write(&room, room_text).unwrap();
     for (label, sky_index, sensors) in [
-        ("steep", 1, "2.0 0.4 0.8 0 0 1\n1.5 0.3 0.8 0 0 1\n2.0 2.0 0.8 0 0 1\n"),
-        ("shallow", 2, "1.5 0.8 0.8 0 0 1\n2.0 1.0 0.8 0 0 1\n2.5 1.5 0.8 0 0 1\n"),
+        (
+            "steep",
+            1,
+            "2.0 0.4 0.8 0 0 1\n1.5 0.3 0.8 0 0 1\n2.0 2.0 0.8 0 0 1\n",
+        ),
+        (
+            "shallow",
+            2,
+            "1.5 0.8 0.8 0 0 1\n2.0 1.0 0.8 0 0 1\n2.5 1.5 0.8 0 0 1\n",
+        ),
     ] {
         let sky_path = dir.path().join(format!("{label}-sky.rad"));
         std::fs::write(&sky_path, sky(&bin, &lib, "gensky", SKIES[sky_index].1)).unwrap();
@@ -315,7 +326,10 @@ fn view_rays_through_the_absdf_glazing() {
     let mut input = String::new();
     for (o, d) in &rays {
         for _ in 0..COPIES {
-            input.push_str(&format!("{} {} {} {} {} {}\n", o.x, o.y, o.z, d.x, d.y, d.z));
+            input.push_str(&format!(
+                "{} {} {} {} {} {}\n",
+                o.x, o.y, o.z, d.x, d.y, d.z
+            ));
         }
     }
     let mut rtrace = tool(&bin, &lib, "rtrace");

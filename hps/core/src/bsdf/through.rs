@@ -218,7 +218,10 @@ mod tests {
         let oblique = DVec3::new(0.3, -0.4, 0.0).with_z((1.0f64 - 0.25).sqrt());
         let t = data.through(oblique).expect("oblique through");
         let hemispherical = data.hemispherical(oblique, Scattering::Transmission);
-        assert!(t.transmittance > 0.9 * hemispherical, "{t:?} of {hemispherical}");
+        assert!(
+            t.transmittance > 0.9 * hemispherical,
+            "{t:?} of {hemispherical}"
+        );
     }
 
     /// Klems full: the smallest patch is one of the twelve of the 75°-90° ring.

@@ -29,10 +29,10 @@
 
 use super::scattering::{bright, Scatter};
 use crate::bsdf::Bsdf;
+use crate::bsdf::Through;
 use crate::engine::ray::FTINY;
 use crate::engine::rng::Rng;
 use crate::engine::sampling::cosine_direction;
-use crate::bsdf::Through;
 use crate::scene::{BsdfModifier, BsdfType};
 use glam::DVec3;
 use std::f64::consts::PI;
@@ -115,7 +115,10 @@ impl BsdfMaterial {
             None
         };
         let peak_radius_squared = match through {
-            Some(_) if view => Some(self.data.pair_projected_solid_angle(view_local, -view_local)),
+            Some(_) if view => Some(
+                self.data
+                    .pair_projected_solid_angle(view_local, -view_local),
+            ),
             _ => None,
         };
         Some(BsdfShading {

@@ -363,7 +363,9 @@ impl Material {
             Material::Illum(i) => i.alternate.source_crossing(dir, normal, flat),
             // m_bsdf.c passes shadow rays through an aBSDF with its through component.
             Material::Bsdf(m) if m.through => match m.through_transmittance(dir, normal) {
-                t if t > 0.0 => SourceCrossing::Straight(ShadowCrossing::Transmits(DVec3::splat(t))),
+                t if t > 0.0 => {
+                    SourceCrossing::Straight(ShadowCrossing::Transmits(DVec3::splat(t)))
+                }
                 _ => SourceCrossing::Straight(ShadowCrossing::Opaque),
             },
             Material::Dielectric(m) => match m.shadow_refraction(dir, normal) {
