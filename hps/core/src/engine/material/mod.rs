@@ -251,6 +251,16 @@ impl Material {
         }
     }
 
+    /// What a shadow ray towards a light source, straight, does at `hit`: as
+    /// [`Material::shadow_crossing_at`], except that an `aBSDF` passes it with its through
+    /// component (as [`Material::source_crossing`] does).
+    pub fn light_crossing_at(&self, hit: &HitPoint) -> ShadowCrossing {
+        match self {
+            Material::Bsdf(m) if m.through => through_crossing(m, hit.direction, hit.normal),
+            _ => self.shadow_crossing_at(hit),
+        }
+    }
+
     /// Whether [`Material::at_hit`] may give a shaded material (see [`Material::is_shaded`]).
     pub fn is_shaded_somewhere(&self) -> bool {
         matches!(self, Material::Varying(_)) || self.is_shaded()
@@ -362,12 +372,9 @@ impl Material {
         match self {
             Material::Illum(i) => i.alternate.source_crossing(dir, normal, flat),
             // m_bsdf.c passes shadow rays through an aBSDF with its through component.
-            Material::Bsdf(m) if m.through => match m.through_transmittance(dir, normal) {
-                t if t > 0.0 => {
-                    SourceCrossing::Straight(ShadowCrossing::Transmits(DVec3::splat(t)))
-                }
-                _ => SourceCrossing::Straight(ShadowCrossing::Opaque),
-            },
+            Material::Bsdf(m) if m.through => {
+                SourceCrossing::Straight(through_crossing(m, dir, normal))
+            }
             Material::Dielectric(m) => match m.shadow_refraction(dir, normal) {
                 Some((direction, factor)) => SourceCrossing::Refracts { direction, factor },
                 None => SourceCrossing::Straight(ShadowCrossing::Opaque),
@@ -551,6 +558,15 @@ impl Material {
                 })
             }
         })
+    }
+}
+
+/// A shadow ray towards a light source along unit `dir` at an `aBSDF` of front normal
+/// `normal`: crossed with the through transmittance, blocked where there is none.
+fn through_crossing(m: &BsdfMaterial, dir: DVec3, normal: DVec3) -> ShadowCrossing {
+    match m.through_transmittance(dir, normal) {
+        t if t > 0.0 => ShadowCrossing::Transmits(DVec3::splat(t)),
+        _ => ShadowCrossing::Opaque,
     }
 }
 
