@@ -5,6 +5,10 @@
 //!   (frads `2011-SA1.xml`) or the electrochromic glazing (frads `ec60.xml`), under a CIE
 //!   overcast sky and two sunny skies whose sun goes through the device steeply (60°) and at
 //!   a shallow angle (15°);
+//! - the same room with ec60 declared as an `aBSDF` (frads' `ec60.rad`): its through
+//!   component passes the sun's shadow rays and view rays; the sun alone through it and view
+//!   rays through it against rtrace ray by ray; frads' open-plan office (issue 19's corpus
+//!   room) with its glazing declared so;
 //! - the LBNL matrix tutorial's room with its aluminium-grate overhang, a proxied BSDF of
 //!   thickness ±0.03825 m, assembled as the tutorial's commands load it;
 //! - bad input: a BSDF naming a missing or malformed XML is an error naming the scene file and
@@ -376,6 +380,83 @@ fn view_rays_through_the_absdf_glazing() {
             "view ray {k}: ours {m} ± {m_se} vs rtrace {t} ± {t_se}"
         );
     }
+}
+
+/// frads' open-plan office (issue 19's corpus room, in feet) with its view and daylight
+/// glazing (`GlView`, `GlDay`, `glass` 0.654 in `materials.mat`) declared instead as frads'
+/// `ec60.rad` declares its electrochromic window, an `aBSDF` on `ec60.xml`: the corpus's
+/// `materials.mat` with those two modifiers replaced, in a file of the test's own (the corpus
+/// is not edited), then the 11 scene files of `two_phase.cfg` the snapshot holds, windows
+/// last. Under `gendaylit` for the first hour of the corpus's `test.wea` (Oakland, 1 January
+/// 10:30, DNI 712, DHI 95 W/m²: the sun low in the south-south-east, through the south
+/// glazing). Eight workplane points of our own (2.5 ft desks; at 3.2 ft, in feet like the
+/// model), three of them in the sun.
+#[test]
+fn frads_office_with_electrochromic_absdf_glazing() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let office = corpus().join("frads-office/tests");
+    let xml = corpus().join("bsdf/frads/ec60.xml");
+    let dir = tempfile::tempdir().unwrap();
+    let mut materials = std::fs::read_to_string(office.join("Objects/materials.mat")).unwrap();
+    for name in ["GlDay", "GlView"] {
+        let glass = format!("void glass {name}\n0\n0\n3 .654 .654 .654\n");
+        assert!(
+            materials.contains(&glass),
+            "materials.mat declares {name} as glass"
+        );
+        materials = materials.replace(
+            &glass,
+            &format!("void aBSDF {name}\n5 {} 0 0 1 .\n0\n0\n", xml.display()),
+        );
+    }
+    std::fs::write(dir.path().join("materials_absdf.mat"), materials).unwrap();
+    std::os::unix::fs::symlink(office.join("Objects"), dir.path().join("Objects")).unwrap();
+    let mut files = vec![PathBuf::from("materials_absdf.mat")];
+    for f in [
+        "windowframe",
+        "overhang",
+        "ground",
+        "extwalls",
+        "floor",
+        "desks",
+        "horframe",
+        "cubefabric",
+        "ceiling",
+        "cubeframe",
+        "walls",
+        "lower_glass",
+        "upper_glass",
+    ] {
+        files.push(PathBuf::from(format!("Objects/{f}.rad")));
+    }
+    let sky_text = sky(
+        &bin,
+        &lib,
+        "gendaylit",
+        &[
+            "1", "1", "10.5", "-a", "37.72", "-o", "122.22", "-m", "120", "-W", "712", "95",
+        ],
+    );
+    let sensors = "5 4 3.2 0 0 1\n5 10 3.2 0 0 1\n5 18 3.2 0 0 1\n12 4 3.2 0 0 1\n\
+                   28 4 3.2 0 0 1\n35 4 3.2 0 0 1\n35 10 3.2 0 0 1\n35 18 3.2 0 0 1\n";
+    let effort = Effort {
+        rtrace_args: RTRACE_BSDF,
+        rtrace_samples: 16,
+        our_samples: 8192,
+        our_bounces: 8,
+        k_sigma: 3.0,
+    };
+    compare_with_rtrace(
+        "frads-office-ec60-absdf",
+        &files,
+        &sky_text,
+        sensors.as_bytes(),
+        dir.path(),
+        dir.path(),
+        &effort,
+    );
 }
 
 /// The tutorial's room as `commands/3PM_NonCop.sh` loads it (`oconv -f materials.rad room.rad
