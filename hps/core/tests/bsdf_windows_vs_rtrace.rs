@@ -218,6 +218,28 @@ fn box_room_with_the_electrochromic_glazing_as_absdf() {
     box_room_text_under_every_sky("ec60-absdf", &room, &sensors, &effort);
 }
 
+/// The Satine shade declared as an `aBSDF`: its openness (0.049 at normal incidence of its
+/// T 0.094) is a through component, so the sun through the openings reaches the beam sensors
+/// by shadow rays, while the sun scattered by the fabric is estimated at the shade with the
+/// BTDF around the peak standing in for the peak near each ray's through direction.
+#[test]
+fn box_room_with_the_satine_shade_as_absdf() {
+    let xml = corpus().join("bsdf/frads/2011-SA1.xml");
+    let room = box_room_with(&format!(
+        "void aBSDF window_bsdf\n5 {} 0 0 1 .\n0\n0\n",
+        xml.display()
+    ));
+    let sensors = format!("{BOX_SENSORS}2.0 0.4 0.8 0 0 1\n");
+    let effort = Effort {
+        rtrace_args: RTRACE_BSDF,
+        rtrace_samples: 16,
+        our_samples: 8192,
+        our_bounces: 8,
+        k_sigma: 3.0,
+    };
+    box_room_text_under_every_sky("satine-absdf", &room, &sensors, &effort);
+}
+
 /// Every BSDF file of the corpus that RADIANCE loads (Klems full with and without off-peak
 /// scattering, tensor trees `TensorTree3`), declared as an `aBSDF`.
 const ABSDF_CORPUS_XMLS: &[&str] = &[
