@@ -2,8 +2,8 @@
 //! what `rtrace` computes: one file per family ([`normal`]: `plastic`, `metal`, `trans`;
 //! [`anisotropic`]: `plastic2`, `metal2`, `trans2`; [`brdf_function`]: `plasfunc` ..
 //! `transdata`; [`brtdfunc`]; [`glass`]; [`mirror`]; [`emitter`]: `light` and `glow` on
-//! surfaces), the optics they share in [`scattering`]; [`bsdf`]: `BSDF` from WINDOW / LBNL XML
-//! data.
+//! surfaces), the optics they share in [`scattering`]; [`bsdf`]: `BSDF` and `aBSDF` from
+//! WINDOW / LBNL XML data.
 //!
 //! The integrator, the per-ray radiance, shadow rays and virtual sources ask a [`Material`]
 //! what happens at a hit ([`Material::interact`], [`Material::shading`],
