@@ -327,6 +327,51 @@ mod tests {
         BsdfMaterial::new(&args, Arc::new(data))
     }
 
+    /// Satine as an `aBSDF`.
+    fn satine_absdf() -> BsdfMaterial {
+        let mut m = satine(0.0);
+        m.through = true;
+        m
+    }
+
+    /// An `aBSDF` view ray's sampled continuation leaves the through component out: its
+    /// weights average to R + T less the through transmittance (the straight ray carries that),
+    /// while any other ray's average to R + T; shadow rays towards sources keep the through
+    /// transmittance.
+    #[test]
+    fn a_view_ray_samples_all_but_the_through_component() {
+        let m = satine_absdf();
+        let normal = DVec3::new(0.0, 1.0, 0.0);
+        let d = DVec3::new(0.2, -0.95, -0.1).normalize();
+        let mean_weight = |view: bool| {
+            let s = m.shade_as(d, normal, view).unwrap();
+            let mut rng = Rng::for_stream(5, u64::from(view));
+            let n = 400_000;
+            let mut sum = 0.0;
+            for _ in 0..n {
+                if let Scatter::Diffuse { weight, .. } | Scatter::Specular { weight, .. } =
+                    s.sample(true, &mut rng)
+                {
+                    sum += weight.x;
+                }
+            }
+            sum / n as f64
+        };
+        let s = m.shade(d, normal).unwrap();
+        let r = m.data.hemispherical(s.view_local, Scattering::Reflection);
+        let t = m.data.hemispherical(s.view_local, Scattering::Transmission);
+        let through = m.through_transmittance(d, normal);
+        assert!(through > 0.01, "Satine's openness: {through}");
+        let (all, view) = (mean_weight(false), mean_weight(true));
+        assert!((all - (r + t)).abs() < 0.005, "{all} vs R + T {}", r + t);
+        assert!(
+            (view - (r + t - through)).abs() < 0.005,
+            "{view} vs R + T - through {}",
+            r + t - through
+        );
+        assert_eq!(satine(0.0).through_transmittance(d, normal), 0.0);
+    }
+
     /// The sampled continuation's weights average to the data's R + T for the view direction
     /// (RADIANCE `SDdirectHemi`), plus the extra reflectance: the lobe selection is unbiased.
     #[test]
