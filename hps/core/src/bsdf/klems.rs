@@ -354,6 +354,40 @@ impl KlemsMatrix {
         (self.value(outgoing_patch, incident_patch) as f64 * (1.0 + 6e-4 * (d - 0.5))) as f32
     }
 
+    /// The smallest projected solid angle of a patch of the outgoing basis, and of the
+    /// incident basis when it differs (`get_extrema`'s `minProjSA`).
+    pub fn min_projected_solid_angle(&self) -> f64 {
+        let smallest = |b: &AngleBasis| {
+            (0..b.n_patches)
+                .map(|k| b.projected_solid_angle_sr(k))
+                .fold(PI, f64::min)
+        };
+        let mut min = smallest(&self.outgoing);
+        if self.incident.name != self.outgoing.name {
+            min = min.min(smallest(&self.incident));
+        }
+        min
+    }
+
+    /// The projected solid angles of the patches holding `v1` as an outgoing and `v2` as an
+    /// incident direction, or the other way round when neither is found that way; 0 for a
+    /// direction in no patch (RADIANCE `SDqueryMtxProjSA`).
+    pub fn pair_projected_solid_angles(&self, v1: DVec3, v2: DVec3) -> [f64; 2] {
+        let psa = |basis: &AngleBasis, patch: Option<usize>| {
+            patch.map_or(0.0, |k| basis.projected_solid_angle_sr(k))
+        };
+        let out = psa(&self.outgoing, self.outgoing_patch(v1));
+        let inc = psa(&self.incident, self.incident_patch(v2));
+        if out <= 0.0 && inc <= 0.0 && v1 != v2 {
+            [
+                psa(&self.incident, self.incident_patch(v1)),
+                psa(&self.outgoing, self.outgoing_patch(v2)),
+            ]
+        } else {
+            [out, inc]
+        }
+    }
+
     /// The largest directional-hemispherical value over incident patches (`get_extrema`).
     pub fn max_hemispherical(&self) -> f64 {
         let ohm: Vec<f64> = (0..self.outgoing.n_patches)

@@ -13,12 +13,14 @@ mod scattering_text;
 mod shirley_chiu;
 mod side;
 mod tensor_tree;
+mod through;
 mod xml;
 
 pub use error::BsdfError;
 pub use sample::{BsdfSample, OutgoingDistribution};
 pub use shirley_chiu::{disk_to_square, square_to_disk};
 pub use side::Side;
+pub use through::Through;
 
 use glam::DVec3;
 use klems::{AngleBasis, KlemsMatrix};
@@ -128,6 +130,10 @@ impl Bsdf {
 
     pub fn part_present(&self, side: Side) -> bool {
         self.parts[side_index(side)].is_some()
+    }
+
+    fn part(&self, side: Side) -> Option<&Part> {
+        self.parts[side_index(side)].as_ref()
     }
 
     /// The part answering for light in from `incident_front` and out to `outgoing_front`;

@@ -5,6 +5,7 @@ use super::klems::{KlemsMatrix, PatchDistribution};
 use super::side::Side;
 use super::tensor_tree::{CellDistribution, TensorTree};
 use glam::DVec3;
+use std::f64::consts::PI;
 
 #[derive(Debug, Clone)]
 pub enum Part {
@@ -37,6 +38,27 @@ impl Part {
         match self {
             Part::Klems(m) => m.extract_diffuse(),
             Part::Tree(t) => t.extract_diffuse(),
+        }
+    }
+
+    /// The smallest projected solid angle the data resolves (RADIANCE's `minProjSA`): the
+    /// smallest Klems patch, or π w² for the smallest tree leaf of width w.
+    pub fn min_projected_solid_angle(&self) -> f64 {
+        match self {
+            Part::Klems(m) => m.min_projected_solid_angle(),
+            Part::Tree(t) => PI * t.smallest_leaf().powi(2),
+        }
+    }
+
+    /// The projected solid angles of the data's cells holding the pair (`v1`, `v2`), 0 for
+    /// none (RADIANCE's `queryProjSA` of a component with two vectors).
+    pub fn pair_projected_solid_angles(&self, v1: DVec3, v2: DVec3) -> [f64; 2] {
+        match self {
+            Part::Klems(m) => m.pair_projected_solid_angles(v1, v2),
+            Part::Tree(t) => {
+                let psa = t.pair_projected_solid_angle(v1, v2).unwrap_or(0.0);
+                [psa, psa]
+            }
         }
     }
 

@@ -92,6 +92,21 @@ impl TensorTree {
 
     /// The leaf at `pos`: its value and lower corner (RADIANCE `SDlookupTre`).
     fn lookup(&self, pos: &[f64; 4]) -> (f32, [f64; 4]) {
+        let (value, corner, _) = self.lookup_leaf(pos);
+        (value, corner)
+    }
+
+    /// The projected solid angle π w² of the leaf holding a direction pair, w its width in
+    /// the hypercube (RADIANCE `SDqueryTreProjSA` for two vectors); None when the pair is not
+    /// this part's. As there, `v1` is the outgoing and `v2` the incident direction.
+    pub fn pair_projected_solid_angle(&self, v1: DVec3, v2: DVec3) -> Option<f64> {
+        let pos = self.position(v2, v1)?;
+        let (_, _, width) = self.lookup_leaf(&pos);
+        Some(PI * width * width)
+    }
+
+    /// [`TensorTree::lookup`] with the leaf's width.
+    fn lookup_leaf(&self, pos: &[f64; 4]) -> (f32, [f64; 4], f64) {
         let mut corner = [0.0; 4];
         let mut width = 1.0;
         let mut p = *pos;
@@ -118,7 +133,7 @@ impl TensorTree {
                         index = index * res + k;
                         corner[i] += (res as f64 * p[i]).floor().max(0.0) * width / res as f64;
                     }
-                    return (values[index], corner);
+                    return (values[index], corner, width / res as f64);
                 }
             }
         }

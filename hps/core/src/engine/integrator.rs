@@ -226,6 +226,7 @@ fn sensor_path(
         nee.as_ref(),
         Some(last),
         settings.russian_roulette,
+        false,
     );
     match first {
         Some(h) => (
@@ -527,11 +528,14 @@ pub fn escape_sample(
         None,
         None,
         false,
+        false,
     );
 }
 
 /// Radiance back along `ray` (leaving the flat surface `from`, if any) for a path with no
-/// diffuse bounce yet: how `radiance::ray_radiance` continues a camera ray.
+/// diffuse bounce yet: how `radiance::ray_radiance` continues a camera ray. The first surface
+/// met is shaded as a view ray meets it (an `aBSDF` leaves its through component, which
+/// `ray_radiance` follows, out of its sampled transmission).
 pub(crate) fn trace_radiance(
     world: &World,
     ray: Ray,
@@ -551,6 +555,7 @@ pub(crate) fn trace_radiance(
         nee.as_ref(),
         None,
         settings.russian_roulette,
+        true,
     )
 }
 
@@ -595,6 +600,8 @@ struct PathState {
     /// Where the next segment starts when not at the vertex (a proxy's transmitted light,
     /// [`Shading::origin_towards`]).
     next_origin: Option<DVec3>,
+    /// The ray is a camera's, not yet scattered: the next surface is met as a view ray.
+    view: bool,
 }
 
 /// Radiance arriving back along `ray`, for a path that has already made `ambient_used`
@@ -602,6 +609,7 @@ struct PathState {
 /// adds `escape(t, d)`. With `nee`, every vertex that may scatter diffusely also estimates
 /// the sky by next-event estimation, and an escape straight from the diffuse vertex `last`
 /// (through glass and invisible surfaces only) is weighted by multiple importance sampling.
+/// `view`: `ray` is a camera ray, and the first surface it meets is shaded as such.
 #[allow(clippy::too_many_arguments)]
 fn trace(
     world: &World,
@@ -614,6 +622,7 @@ fn trace(
     nee: Option<&SkyNee>,
     last: Option<LastDiffuse>,
     roulette: bool,
+    view: bool,
 ) -> DVec3 {
     let mut tracer = Tracer {
         world,
@@ -633,6 +642,7 @@ fn trace(
         last,
         direct: last.filter(|l| l.sun_patch_sampled).map(|l| l.pdf_sr),
         next_origin: None,
+        view,
     };
     loop {
         let Some(hit) = world.intersect(&path.ray, path.from) else {
@@ -646,7 +656,8 @@ fn trace(
             .material(hit.primitive)
             .at_hit(&hit.as_seen(p, d, flat), rng);
         path.throughput *= material.arrival_factor(d, hit.normal, hit.t_m, false);
-        let next = match material.interact(d, normal, flat, false) {
+        let view = std::mem::take(&mut path.view);
+        let next = match material.interact(d, normal, flat, view) {
             Interaction::PassThrough => path.cross(d),
             Interaction::Emits(l) => {
                 path.radiance += path.throughput * l;

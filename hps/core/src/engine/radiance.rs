@@ -13,6 +13,11 @@
 //! mirror-reflected or glass-transmitted children, see the sun's disc.
 //!
 //! A mirror seen from its back is black, as in RADIANCE (mirror.c `m_mirror`: `r->rod < 0`).
+//!
+//! An `aBSDF` with a through component both scatters the ray (the integrator shades it,
+//! leaving the peak out of the sampled transmission) and lets it go on straight with the
+//! through transmittance, still a view ray (m_bsdf.c `sample_sdf`: a `TRANS` child), so the
+//! sun's disc and the view outside are seen through it.
 
 use super::integrator::{trace_radiance, Settings, MAX_CROSSINGS};
 use super::material::{Interaction, Scatter};
@@ -40,9 +45,11 @@ pub fn ray_radiance(world: &World, ray: Ray, settings: &Settings, rng: &mut Rng)
     let mut throughput = DVec3::ONE;
     let mut specular_events = 0u32;
     let mut crossings = 0u32;
+    // What the scattering at `aBSDF`s passed through straight has added.
+    let mut scattered = DVec3::ZERO;
     loop {
         let Some(hit) = world.intersect(&ray, from) else {
-            return throughput * seen_from_eye(world, ray.direction);
+            return scattered + throughput * seen_from_eye(world, ray.direction);
         };
         let d = ray.direction;
         let p = ray.at(hit.t_m);
@@ -55,16 +62,16 @@ pub fn ray_radiance(world: &World, ray: Ray, settings: &Settings, rng: &mut Rng)
             Interaction::PassThrough => {
                 crossings += 1;
                 if crossings > MAX_CROSSINGS {
-                    return DVec3::ZERO;
+                    return scattered;
                 }
                 d
             }
-            Interaction::Emits(l) => return throughput * l,
-            Interaction::Absorbed => return DVec3::ZERO,
+            Interaction::Emits(l) => return scattered + throughput * l,
+            Interaction::Absorbed => return scattered,
             Interaction::Specular(step) => {
                 specular_events += 1;
                 if specular_events > settings.max_specular_events {
-                    return DVec3::ZERO;
+                    return scattered;
                 }
                 match step.sample(rng) {
                     Scatter::Specular { direction, weight }
@@ -72,17 +79,27 @@ pub fn ray_radiance(world: &World, ray: Ray, settings: &Settings, rng: &mut Rng)
                         throughput *= weight;
                         direction
                     }
-                    Scatter::Absorbed => return DVec3::ZERO,
+                    Scatter::Absorbed => return scattered,
                 }
             }
             Interaction::Shaded(_) => {
                 // The integrator shades this surface: trace again from where the ray started
                 // (one repeated intersection, which keeps the shading code in one place).
-                return throughput * trace_radiance(world, ray, from, settings, rng);
+                scattered += throughput * trace_radiance(world, ray, from, settings, rng);
+                let through = material.view_through(d, normal);
+                if through <= 0.0 {
+                    return scattered;
+                }
+                crossings += 1;
+                if crossings > MAX_CROSSINGS {
+                    return scattered;
+                }
+                throughput *= through;
+                d
             }
         };
         if throughput.max_element() <= 0.0 {
-            return DVec3::ZERO;
+            return scattered;
         }
         from = Some(hit.primitive);
         ray = Ray::new(p, next);

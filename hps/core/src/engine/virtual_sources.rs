@@ -27,8 +27,9 @@ use glam::DVec3;
 /// Most surfaces a shadow ray passes through on its way to the mirror.
 const MAX_CROSSINGS: usize = 64;
 
-/// What a shadow ray from `origin` (leaving surface `from`) along unit `dir` keeps on its way
-/// to the front of primitive `target`: the product of the transmissions crossed and the hit
+/// What a shadow ray towards a light source from `origin` (leaving surface `from`) along
+/// unit `dir` keeps on its way to the front of primitive `target` (the mirror of a virtual
+/// source; an `aBSDF` passes it with its through component): the product of the transmissions crossed and the hit
 /// point on `target`; None if something opaque comes first, the ray misses `target` or meets
 /// its back.
 fn transmission_to(
@@ -50,7 +51,7 @@ fn transmission_to(
         let flat = world.is_flat(hit.primitive);
         match world
             .material(hit.primitive)
-            .shadow_crossing_at(&hit.as_seen(p, dir, flat))
+            .light_crossing_at(&hit.as_seen(p, dir, flat))
         {
             ShadowCrossing::PassThrough => {}
             ShadowCrossing::Transmits(factor) => t *= factor,

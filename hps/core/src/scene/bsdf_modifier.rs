@@ -17,7 +17,8 @@ use std::path::{Path, PathBuf};
 pub enum BsdfType {
     /// `BSDF`: thin (thickness 0) or a proxy for detailed geometry (non-zero thickness).
     Bsdf,
-    /// `aBSDF`: thin, with its strong "through" component passing view and shadow rays.
+    /// `aBSDF`: thin, with its strong "through" component passing view and shadow rays
+    /// (`engine::material::bsdf`, `bsdf::Through`).
     ABsdf,
 }
 

@@ -12,13 +12,28 @@
 //! decides (`raytrans`); light transmitted through it (the sun's next-event estimate and
 //! the sampled continuation) is traced from the hit moved by the thickness against the
 //! front normal, past the detailed geometry (m_bsdf.c: `-thick` times `ron`).
+//!
+//! `aBSDF` is a thin `BSDF` whose strong "through" component ([`crate::bsdf::Through`],
+//! found around the straight continuation of each ray as m_bsdf.c's `compute_through` finds
+//! it) passes rays straight on. A shadow ray towards a light source (the sun) crosses it
+//! keeping the through transmittance, so the sun reaches what lies behind an `aBSDF` window by
+//! next-event estimation; the sun's estimate at the window itself then takes the BTDF around
+//! the peak instead of the peak for a source within the peak's cone of the ray's through
+//! direction, so that the peak is not counted twice (`direct_specular_OK`). Paths that meet it
+//! after a bounce sample its whole data, peak included, as RADIANCE's ambient and specular
+//! rays do. A view (camera) ray goes on straight with the through transmittance, still a view
+//! ray, and the rest of its scattering is sampled with the transmitted samples that fall in
+//! the peak (within the side of the view's smallest data cell of the straight continuation)
+//! dropped (m_bsdf.c `sample_sdf`, `sample_sdcomp`). Shadow rays for the sky's next-event estimate do not cross it (the sky is no
+//! light source in RADIANCE: its light through the peak is the sampled continuation's).
 
 use super::scattering::{bright, Scatter};
 use crate::bsdf::Bsdf;
+use crate::bsdf::Through;
 use crate::engine::ray::FTINY;
 use crate::engine::rng::Rng;
 use crate::engine::sampling::cosine_direction;
-use crate::scene::BsdfModifier;
+use crate::scene::{BsdfModifier, BsdfType};
 use glam::DVec3;
 use std::f64::consts::PI;
 use std::sync::Arc;
@@ -33,6 +48,8 @@ pub struct BsdfMaterial {
     pub extra_reflectance_front_rgb: DVec3,
     pub extra_reflectance_back_rgb: DVec3,
     pub extra_transmittance_rgb: DVec3,
+    /// `aBSDF`: straight rays pass with the through component.
+    pub through: bool,
 }
 
 impl BsdfMaterial {
@@ -44,7 +61,20 @@ impl BsdfMaterial {
             extra_reflectance_front_rgb: args.extra_reflectance_front_rgb,
             extra_reflectance_back_rgb: args.extra_reflectance_back_rgb,
             extra_transmittance_rgb: args.extra_transmittance_rgb,
+            through: args.kind == BsdfType::ABsdf,
         }
+    }
+
+    /// What a straight ray along unit `d` keeps crossing a surface of front normal `normal`
+    /// of this material: an `aBSDF`'s through transmittance for that ray (m_bsdf.c passes
+    /// shadow rays with `cthru`), 0 for a `BSDF` or where there is no through component.
+    pub fn through_transmittance(&self, d: DVec3, normal: DVec3) -> f64 {
+        if !self.through {
+            return 0.0;
+        }
+        Frame::new(normal, self.up)
+            .and_then(|frame| self.data.through(frame.to_local(-d)))
+            .map_or(0.0, |t| t.transmittance)
     }
 
     /// Whether a ray along `d` meeting a surface of front normal `normal` passes this proxy
@@ -65,6 +95,12 @@ impl BsdfMaterial {
     /// when the up vector is parallel to the normal (RADIANCE: "Illegal orientation vector",
     /// the ray gets nothing).
     pub fn shade(&self, d: DVec3, normal: DVec3) -> Option<BsdfShading> {
+        self.shade_as(d, normal, false)
+    }
+
+    /// [`BsdfMaterial::shade`] for a ray that is a view (camera) ray if `view`: at an `aBSDF`
+    /// its through component is then left out of the sampled transmission.
+    pub fn shade_as(&self, d: DVec3, normal: DVec3, view: bool) -> Option<BsdfShading> {
         let frame = Frame::new(normal, self.up)?;
         let hit_front = d.dot(normal) < 0.0;
         let extra_reflectance_rgb = if hit_front {
@@ -72,10 +108,25 @@ impl BsdfMaterial {
         } else {
             self.extra_reflectance_back_rgb
         };
+        let view_local = frame.to_local(-d);
+        let through = if self.through {
+            self.data.through(view_local)
+        } else {
+            None
+        };
+        let peak_radius_squared = match through {
+            Some(_) if view => Some(
+                self.data
+                    .pair_projected_solid_angle(view_local, -view_local),
+            ),
+            _ => None,
+        };
         Some(BsdfShading {
             data: self.data.clone(),
             frame,
-            view_local: frame.to_local(-d),
+            view_local,
+            through,
+            peak_radius_squared,
             pnorm: if hit_front { normal } else { -normal },
             transmitted_offset_m: -self.thickness_m * normal.normalize(),
             extra_reflectance_rgb,
@@ -130,6 +181,11 @@ pub struct BsdfShading {
     extra_transmittance_rgb: DVec3,
     /// Where transmitted light is traced from, relative to the hit (zero when thin).
     transmitted_offset_m: DVec3,
+    /// An `aBSDF`'s through component for this ray (None for `BSDF`).
+    through: Option<Through>,
+    /// For a view ray through an `aBSDF`: transmitted samples whose projection lies within
+    /// √ of this of the straight continuation's are the through component's, dropped.
+    peak_radius_squared: Option<f64>,
 }
 
 impl BsdfShading {
@@ -152,7 +208,21 @@ impl BsdfShading {
         if ldot.abs() <= FTINY {
             return DVec3::ZERO;
         }
-        let f_per_sr = self.data.eval(self.view_local, self.frame.to_local(ldir));
+        let l_local = self.frame.to_local(ldir);
+        let f_per_sr = match &self.through {
+            // The peak's light is the shadow ray's through the window: the surround instead,
+            // with the data's Lambertian transmission.
+            Some(t) if t.covers(self.view_local, l_local, omega_sr) => {
+                let l = &self.data.lambertian;
+                let lambertian = if self.view_local.z > 0.0 {
+                    l.transmittance_front
+                } else {
+                    l.transmittance_back
+                };
+                t.surround_per_sr + lambertian / PI
+            }
+            _ => self.data.eval(self.view_local, l_local),
+        };
         let extra = if ldot > 0.0 {
             self.extra_reflectance_rgb
         } else {
@@ -216,6 +286,16 @@ impl BsdfShading {
         let weight = DVec3::splat(
             s.lobe_value_per_sr * s.direction.z.abs() / s.lobe_pdf_per_sr * inverse_choice,
         );
+        if let Some(r2) = self.peak_radius_squared {
+            let (dx, dy) = (
+                s.direction.x + self.view_local.x,
+                s.direction.y + self.view_local.y,
+            );
+            let transmitted = (s.direction.z > 0.0) != (self.view_local.z > 0.0);
+            if transmitted && !s.lambertian && dx * dx + dy * dy <= r2 {
+                return Scatter::Absorbed;
+            }
+        }
         let direction = self.frame.to_world(s.direction).normalize();
         if s.lambertian {
             Scatter::Diffuse { direction, weight }
@@ -229,7 +309,6 @@ impl BsdfShading {
 mod tests {
     use super::*;
     use crate::bsdf::Scattering;
-    use crate::scene::{BsdfModifier, BsdfType};
 
     fn satine(extra_reflectance_front: f64) -> BsdfMaterial {
         let xml = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -246,6 +325,51 @@ mod tests {
             extra_transmittance_rgb: DVec3::ZERO,
         };
         BsdfMaterial::new(&args, Arc::new(data))
+    }
+
+    /// Satine as an `aBSDF`.
+    fn satine_absdf() -> BsdfMaterial {
+        let mut m = satine(0.0);
+        m.through = true;
+        m
+    }
+
+    /// An `aBSDF` view ray's sampled continuation leaves the through component out: its
+    /// weights average to R + T less the through transmittance (the straight ray carries that),
+    /// while any other ray's average to R + T; shadow rays towards sources keep the through
+    /// transmittance.
+    #[test]
+    fn a_view_ray_samples_all_but_the_through_component() {
+        let m = satine_absdf();
+        let normal = DVec3::new(0.0, 1.0, 0.0);
+        let d = DVec3::new(0.2, -0.95, -0.1).normalize();
+        let mean_weight = |view: bool| {
+            let s = m.shade_as(d, normal, view).unwrap();
+            let mut rng = Rng::for_stream(5, u64::from(view));
+            let n = 400_000;
+            let mut sum = 0.0;
+            for _ in 0..n {
+                if let Scatter::Diffuse { weight, .. } | Scatter::Specular { weight, .. } =
+                    s.sample(true, &mut rng)
+                {
+                    sum += weight.x;
+                }
+            }
+            sum / n as f64
+        };
+        let s = m.shade(d, normal).unwrap();
+        let r = m.data.hemispherical(s.view_local, Scattering::Reflection);
+        let t = m.data.hemispherical(s.view_local, Scattering::Transmission);
+        let through = m.through_transmittance(d, normal);
+        assert!(through > 0.01, "Satine's openness: {through}");
+        let (all, view) = (mean_weight(false), mean_weight(true));
+        assert!((all - (r + t)).abs() < 0.005, "{all} vs R + T {}", r + t);
+        assert!(
+            (view - (r + t - through)).abs() < 0.005,
+            "{view} vs R + T - through {}",
+            r + t - through
+        );
+        assert_eq!(satine(0.0).through_transmittance(d, normal), 0.0);
     }
 
     /// The sampled continuation's weights average to the data's R + T for the view direction

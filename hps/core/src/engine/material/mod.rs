@@ -2,8 +2,8 @@
 //! what `rtrace` computes: one file per family ([`normal`]: `plastic`, `metal`, `trans`;
 //! [`anisotropic`]: `plastic2`, `metal2`, `trans2`; [`brdf_function`]: `plasfunc` ..
 //! `transdata`; [`brtdfunc`]; [`glass`]; [`mirror`]; [`emitter`]: `light` and `glow` on
-//! surfaces), the optics they share in [`scattering`]; [`bsdf`]: `BSDF` from WINDOW / LBNL XML
-//! data.
+//! surfaces), the optics they share in [`scattering`]; [`bsdf`]: `BSDF` and `aBSDF` from
+//! WINDOW / LBNL XML data.
 //!
 //! The integrator, the per-ray radiance, shadow rays and virtual sources ask a [`Material`]
 //! what happens at a hit ([`Material::interact`], [`Material::shading`],
@@ -46,7 +46,7 @@ use super::error::EngineError;
 use super::rng::Rng;
 use super::sky::SkyFunction;
 use crate::bsdf::Bsdf;
-use crate::scene::{BsdfModifier, BsdfType, Modifier, ModifierKind, ModifierRef, Scene, Surface};
+use crate::scene::{BsdfModifier, Modifier, ModifierKind, ModifierRef, Scene, Surface};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -251,6 +251,16 @@ impl Material {
         }
     }
 
+    /// What a shadow ray towards a light source, straight, does at `hit`: as
+    /// [`Material::shadow_crossing_at`], except that an `aBSDF` passes it with its through
+    /// component (as [`Material::source_crossing`] does).
+    pub fn light_crossing_at(&self, hit: &HitPoint) -> ShadowCrossing {
+        match self {
+            Material::Bsdf(m) if m.through => through_crossing(m, hit.direction, hit.normal),
+            _ => self.shadow_crossing_at(hit),
+        }
+    }
+
     /// Whether [`Material::at_hit`] may give a shaded material (see [`Material::is_shaded`]).
     pub fn is_shaded_somewhere(&self) -> bool {
         matches!(self, Material::Varying(_)) || self.is_shaded()
@@ -284,7 +294,7 @@ impl Material {
             }
             Material::Normal(m) => Interaction::Shaded(Shading::Normal(m.shade(d, normal, flat))),
             Material::Bsdf(m) if m.passes(d, normal, primary) => Interaction::PassThrough,
-            Material::Bsdf(m) => match m.shade(d, normal) {
+            Material::Bsdf(m) => match m.shade_as(d, normal, primary) {
                 Some(s) => Interaction::Shaded(Shading::Bsdf(s)),
                 None => Interaction::Absorbed,
             },
@@ -344,12 +354,27 @@ impl Material {
         }
     }
 
+    /// What a view (camera) ray along unit `d` meeting a surface of front normal `normal` of
+    /// this material goes on straight with besides its shading: an `aBSDF`'s through
+    /// transmittance (m_bsdf.c traces it as a ray of its own), 0 elsewhere.
+    pub fn view_through(&self, d: DVec3, normal: DVec3) -> f64 {
+        match self {
+            Material::Bsdf(m) => m.through_transmittance(d, normal),
+            _ => 0.0,
+        }
+    }
+
     /// What a shadow ray towards a light source (the sun) does at a surface: an `illum` is
     /// its alternate material to it (source.c `passillum`), and a `dielectric` refracts it
-    /// (dielectric.c traces shadow rays through).
+    /// (dielectric.c traces shadow rays through), and an `aBSDF` passes it with its through
+    /// component (m_bsdf.c).
     pub fn source_crossing(&self, dir: DVec3, normal: DVec3, flat: bool) -> SourceCrossing {
         match self {
             Material::Illum(i) => i.alternate.source_crossing(dir, normal, flat),
+            // m_bsdf.c passes shadow rays through an aBSDF with its through component.
+            Material::Bsdf(m) if m.through => {
+                SourceCrossing::Straight(through_crossing(m, dir, normal))
+            }
             Material::Dielectric(m) => match m.shadow_refraction(dir, normal) {
                 Some((direction, factor)) => SourceCrossing::Refracts { direction, factor },
                 None => SourceCrossing::Straight(ShadowCrossing::Opaque),
@@ -362,6 +387,7 @@ impl Material {
     /// than [`Material::shadow_crossing`].
     pub fn has_source_crossing(&self) -> bool {
         matches!(self, Material::Illum(_) | Material::Dielectric(_))
+            || matches!(self, Material::Bsdf(m) if m.through)
     }
 
     /// The factor on the light a ray brings back from this surface after `distance_m` from
@@ -535,18 +561,18 @@ impl Material {
     }
 }
 
+/// A shadow ray towards a light source along unit `dir` at an `aBSDF` of front normal
+/// `normal`: crossed with the through transmittance, blocked where there is none.
+fn through_crossing(m: &BsdfMaterial, dir: DVec3, normal: DVec3) -> ShadowCrossing {
+    match m.through_transmittance(dir, normal) {
+        t if t > 0.0 => ShadowCrossing::Transmits(DVec3::splat(t)),
+        _ => ShadowCrossing::Opaque,
+    }
+}
+
 /// A `BSDF` modifier's material with its XML data loaded; a file that cannot be read is an
 /// error naming the scene file and line, the material and the XML file, element and line.
 fn bsdf_material(m: &Modifier, b: &BsdfModifier) -> Result<BsdfMaterial, EngineError> {
-    if b.kind == BsdfType::ABsdf {
-        return Err(EngineError::Unsupported {
-            at: m.origin.clone(),
-            what: format!(
-                "aBSDF `{}`: its \"through\" component is not traced yet (use BSDF)",
-                m.name
-            ),
-        });
-    }
     let data = Bsdf::load(&b.xml_path).map_err(|error| EngineError::BsdfFile {
         at: m.origin.clone(),
         material: m.name.clone(),
