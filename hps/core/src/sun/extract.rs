@@ -328,21 +328,9 @@ pub fn extract_sun(
     if components.is_empty() {
         return Err(no_component(geometry, search));
     }
-    let mean_direction = |members: &[usize]| -> DVec3 {
-        members
-            .iter()
-            .map(|&i| geometry.direction[i].as_dvec3() * geometry.solid_angle_sr[i] as f64)
-            .sum::<DVec3>()
-            .normalize()
-    };
     let chosen = match search.predicted_direction {
         Some(p) => {
-            let (best, offset) = components
-                .iter()
-                .enumerate()
-                .map(|(k, c)| (k, angle_deg(mean_direction(c), p)))
-                .min_by(|a, b| a.1.total_cmp(&b.1))
-                .expect("at least one component");
+            let (best, offset) = nearest_component(&components, geometry, p);
             if offset > search.max_offset_deg {
                 return Err(NoSun::FarFromPrediction {
                     offset_deg: offset,
@@ -377,7 +365,7 @@ pub fn extract_sun(
         flags.push(SunFlag::OtherCandidates);
     }
     // Dilate the component (square neighbourhood) and collect an annulus for the background.
-    let centre = mean_direction(core);
+    let centre = mean_direction(core, geometry);
     let (mut min_x, mut max_x, mut min_y, mut max_y) = (usize::MAX, 0, usize::MAX, 0);
     for &i in core {
         min_x = min_x.min(i % w);
@@ -445,6 +433,30 @@ pub fn extract_sun(
         groups,
         flags,
     })
+}
+
+/// The solid-angle-weighted mean direction of `members`.
+fn mean_direction(members: &[usize], geometry: &GroupGeometry) -> DVec3 {
+    members
+        .iter()
+        .map(|&i| geometry.direction[i].as_dvec3() * geometry.solid_angle_sr[i] as f64)
+        .sum::<DVec3>()
+        .normalize()
+}
+
+/// The component whose solid-angle-weighted mean direction lies nearest `predicted`, and
+/// its offset, degrees. `components` is not empty.
+fn nearest_component(
+    components: &[Vec<usize>],
+    geometry: &GroupGeometry,
+    predicted: DVec3,
+) -> (usize, f64) {
+    components
+        .iter()
+        .enumerate()
+        .map(|(k, c)| (k, angle_deg(mean_direction(c, geometry), predicted)))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .expect("at least one component")
 }
 
 /// What [`extract_sun`] does on `map`, counted for the A9 cost model
@@ -532,19 +544,7 @@ pub fn extraction_work(
     let chosen = match search.predicted_direction {
         Some(p) => {
             work.direction_visits += work.members;
-            let mean_direction = |members: &[usize]| -> DVec3 {
-                members
-                    .iter()
-                    .map(|&i| geometry.direction[i].as_dvec3() * geometry.solid_angle_sr[i] as f64)
-                    .sum::<DVec3>()
-                    .normalize()
-            };
-            let (best, offset) = components
-                .iter()
-                .enumerate()
-                .map(|(k, c)| (k, angle_deg(mean_direction(c), p)))
-                .min_by(|a, b| a.1.total_cmp(&b.1))
-                .expect("at least one component");
+            let (best, offset) = nearest_component(&components, geometry, p);
             if offset > search.max_offset_deg {
                 return work;
             }
