@@ -73,6 +73,15 @@ impl Radiance {
     /// RADIANCE's default RAYPATH has it: function files beside the scene first).
     pub fn tool(&self, name: &str) -> Command {
         let mut c = Command::new(self.bin.join(name));
+        // Inline commands (`!xform ...` in a scene oconv reads) find RADIANCE's programs on
+        // PATH: without its folder first they fail and oconv leaves their objects out with a
+        // warning (an empty room, lit as open sky).
+        let mut path = std::ffi::OsString::from(self.bin.as_os_str());
+        if let Some(rest) = std::env::var_os("PATH") {
+            path.push(":");
+            path.push(rest);
+        }
+        c.env("PATH", path);
         if let Some(lib) = &self.lib {
             let mut path = std::ffi::OsString::from(".:");
             path.push(lib);

@@ -41,6 +41,14 @@ pub struct IlluminanceBenchArgs {
     /// Folder of the reference room (scene.rad, sensors.pts, grid400.pts).
     #[arg(long)]
     room: Option<PathBuf>,
+    /// The room's scene files, relative to `--room`, in the order oconv takes them (default
+    /// scene.rad): a corpus room as its authors load it, inline commands run from `--room`
+    /// (the LBNL tutorial: `--scene materials.rad room.rad`).
+    #[arg(long, num_args = 1..)]
+    scene: Vec<PathBuf>,
+    /// The points file, relative to `--room` (default sensors.pts, or grid400.pts with --grid).
+    #[arg(long)]
+    points: Option<PathBuf>,
     /// RMS relative error at which the times are compared.
     #[arg(long, default_value_t = 0.01)]
     target_rel_err: f64,
@@ -419,7 +427,11 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
     let octree = work.join("room.oct");
     let oct = radiance.output({
         let mut c = radiance.tool("oconv");
-        c.arg(&room.scene_path).arg(&sky_path);
+        // Frozen (-f): the octree holds the scene, so rtrace need not run where oconv did.
+        c.current_dir(&room.dir)
+            .arg("-f")
+            .args(&room.scene_paths)
+            .arg(&sky_path);
         c
     })?;
     std::fs::write(&octree, oct)?;
@@ -441,8 +453,16 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
     if !args.skip_cache_config {
         rtrace_configs.push(measure_rtrace_cache(&mut bench, args, &reference, &log)?);
     }
-    let scene_files = [room.scene_path.clone(), sky_path.clone()];
-    let skylux_configs = measure_engine(args, &scene_files, &room.sensors, &reference, &log)?;
+    let mut scene_files = room.scene_paths.clone();
+    scene_files.push(sky_path.clone());
+    let skylux_configs = measure_engine(
+        args,
+        &scene_files,
+        &room.dir,
+        &room.sensors,
+        &reference,
+        &log,
+    )?;
     let outcome = Outcome {
         room: &room,
         sky: format!("{} {}", sky_spec.tool, sky_spec.args.join(" ")),
@@ -464,7 +484,11 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
 
 /// The reference room's files: the scene, and the points as rtrace reads them.
 struct Room {
-    scene_path: PathBuf,
+    /// The folder the scene's inline commands and relative paths are read from.
+    dir: PathBuf,
+    scene_paths: Vec<PathBuf>,
+    /// The scene files' texts, one after the other (the reference cache's key; files they
+    /// include are not read into it).
     scene_text: Vec<u8>,
     points_path: PathBuf,
     /// The points file without blank or comment lines.
@@ -480,14 +504,27 @@ impl Room {
                 "/../../../shared/scenes/test-module"
             ))
         });
-        let scene_path = room.join("scene.rad");
-        let points_path = room.join(if args.grid {
-            "grid400.pts"
+        // Absolute: oconv runs in the room's folder.
+        let room =
+            std::fs::canonicalize(&room).with_context(|| format!("--room {}", room.display()))?;
+        let scene_paths: Vec<PathBuf> = if args.scene.is_empty() {
+            vec![room.join("scene.rad")]
         } else {
-            "sensors.pts"
-        });
-        let scene_text = std::fs::read(&scene_path)
-            .with_context(|| format!("reading {}", scene_path.display()))?;
+            args.scene.iter().map(|f| room.join(f)).collect()
+        };
+        let points_path = room.join(args.points.clone().unwrap_or_else(|| {
+            PathBuf::from(if args.grid {
+                "grid400.pts"
+            } else {
+                "sensors.pts"
+            })
+        }));
+        let mut scene_text = Vec::new();
+        for path in &scene_paths {
+            scene_text.extend(
+                std::fs::read(path).with_context(|| format!("reading {}", path.display()))?,
+            );
+        }
         let points = std::fs::read_to_string(&points_path)
             .with_context(|| format!("reading {}", points_path.display()))?;
         let sensors = scene::load_sensors(&points_path)?;
@@ -500,7 +537,8 @@ impl Room {
             .map(|l| format!("{l}\n"))
             .collect();
         Ok(Self {
-            scene_path,
+            dir: room,
+            scene_paths,
             scene_text,
             points_path,
             points,
@@ -801,6 +839,7 @@ const ENGINE_VARIANTS: [EngineVariant; 8] = [
 fn measure_engine(
     args: &IlluminanceBenchArgs,
     scene_files: &[PathBuf],
+    scene_dir: &Path,
     sensors: &[scene::Sensor],
     reference: &Reference,
     log: &dyn Fn(String),
@@ -819,7 +858,12 @@ fn measure_engine(
             let mut seconds = 0.0;
             for run in 0..args.runs {
                 let start = Instant::now();
-                let scene = scene::load_files(scene_files)?;
+                // Loaded as oconv read it: inline commands and relative paths from the room.
+                let options = scene::LoadOptions {
+                    working_directory: Some(scene_dir.to_path_buf()),
+                    ..Default::default()
+                };
+                let scene = scene::load_files_with(scene_files, &options)?;
                 let world = World::new(&scene)?;
                 let settings = Settings {
                     ambient_bounces: OUR_AB,
