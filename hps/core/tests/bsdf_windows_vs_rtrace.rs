@@ -202,7 +202,13 @@ fn box_room_with_the_electrochromic_glazing() {
 /// holds S1 and S6.
 #[test]
 fn box_room_with_the_electrochromic_glazing_as_absdf() {
-    let xml = corpus().join("bsdf/frads/ec60.xml");
+    box_room_with_an_absdf_window("ec60-absdf", "bsdf/frads/ec60.xml", 4096);
+}
+
+/// The box room with its window an `aBSDF` of the corpus file `xml`, and a sensor in the steep
+/// sun's beam (2.0 0.4), under every sky, our engine at `our_samples` paths per sensor.
+fn box_room_with_an_absdf_window(label: &str, xml: &str, our_samples: u32) {
+    let xml = corpus().join(xml);
     let room = box_room_with(&format!(
         "void aBSDF window_bsdf\n5 {} 0 0 1 .\n0\n0\n",
         xml.display()
@@ -211,11 +217,11 @@ fn box_room_with_the_electrochromic_glazing_as_absdf() {
     let effort = Effort {
         rtrace_args: RTRACE_BSDF,
         rtrace_samples: 16,
-        our_samples: 4096,
+        our_samples,
         our_bounces: 8,
         k_sigma: 3.0,
     };
-    box_room_text_under_every_sky("ec60-absdf", &room, &sensors, &effort);
+    box_room_text_under_every_sky(label, &room, &sensors, &effort);
 }
 
 /// The Satine shade declared as an `aBSDF`: its openness (0.049 at normal incidence of its
@@ -224,20 +230,7 @@ fn box_room_with_the_electrochromic_glazing_as_absdf() {
 /// BTDF around the peak standing in for the peak near each ray's through direction.
 #[test]
 fn box_room_with_the_satine_shade_as_absdf() {
-    let xml = corpus().join("bsdf/frads/2011-SA1.xml");
-    let room = box_room_with(&format!(
-        "void aBSDF window_bsdf\n5 {} 0 0 1 .\n0\n0\n",
-        xml.display()
-    ));
-    let sensors = format!("{BOX_SENSORS}2.0 0.4 0.8 0 0 1\n");
-    let effort = Effort {
-        rtrace_args: RTRACE_BSDF,
-        rtrace_samples: 16,
-        our_samples: 8192,
-        our_bounces: 8,
-        k_sigma: 3.0,
-    };
-    box_room_text_under_every_sky("satine-absdf", &room, &sensors, &effort);
+    box_room_with_an_absdf_window("satine-absdf", "bsdf/frads/2011-SA1.xml", 8192);
 }
 
 /// Every BSDF file of the corpus that RADIANCE loads (Klems full with and without off-peak

@@ -366,13 +366,7 @@ pub fn extract_sun(
     }
     // Dilate the component (square neighbourhood) and collect an annulus for the background.
     let centre = mean_direction(core, geometry);
-    let (mut min_x, mut max_x, mut min_y, mut max_y) = (usize::MAX, 0, usize::MAX, 0);
-    for &i in core {
-        min_x = min_x.min(i % w);
-        max_x = max_x.max(i % w);
-        min_y = min_y.min(i / w);
-        max_y = max_y.max(i / w);
-    }
+    let (min_x, max_x, min_y, max_y) = bounds(core, w);
     let d = search.dilation_groups;
     let bbox = GroupBox {
         min_x,
@@ -433,6 +427,15 @@ pub fn extract_sun(
         groups,
         flags,
     })
+}
+
+/// The smallest box of a map `w` groups wide holding `members`: (min x, max x, min y, max y).
+fn bounds(members: &[usize], w: usize) -> (usize, usize, usize, usize) {
+    members
+        .iter()
+        .fold((usize::MAX, 0, usize::MAX, 0), |(x0, x1, y0, y1), &i| {
+            (x0.min(i % w), x1.max(i % w), y0.min(i / w), y1.max(i / w))
+        })
 }
 
 /// The solid-angle-weighted mean direction of `members`.
@@ -576,13 +579,7 @@ pub fn extraction_work(
     }
     work.chosen_members = core.len() as f64;
     work.direction_visits += core.len() as f64;
-    let (mut min_x, mut max_x, mut min_y, mut max_y) = (usize::MAX, 0, usize::MAX, 0);
-    for &i in core {
-        min_x = min_x.min(i % w);
-        max_x = max_x.max(i % w);
-        min_y = min_y.min(i / w);
-        max_y = max_y.max(i / w);
-    }
+    let (min_x, max_x, min_y, max_y) = bounds(core, w);
     let side = |lo: usize, hi: usize, pad: usize, len: usize| {
         ((hi + pad).min(len - 1) + 1 - lo.saturating_sub(pad)) as f64
     };
