@@ -26,6 +26,10 @@ enum BenchWhat {
     /// The illuminance engine against rtrace at equal error (1 % RMS against a converged
     /// rtrace reference) on the reference room: times, errors and the ratio.
     Illuminance(crate::bench_illuminance::IlluminanceBenchArgs),
+    /// Image quality at equal wall time: our renderer (filtered and unfiltered) against
+    /// rpict, each picture against a converged rtrace reference (per-pixel RMS relative
+    /// error, Ev and DGP).
+    Render(crate::bench_render::RenderBenchArgs),
     /// The loop against a battery of random campaigns whose truth comes from RADIANCE:
     /// recall, false discoveries, parameter errors, hold-out error and the confusion matrix
     /// per effect class.
@@ -56,6 +60,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         BenchWhat::Raybox(args) => crate::bench_raybox::run(args),
         BenchWhat::Dc { json, repeat } => crate::dc::bench(*json, (*repeat).max(1)),
         BenchWhat::Illuminance(args) => crate::bench_illuminance::run(args),
+        BenchWhat::Render(args) => crate::bench_render::run(args),
         BenchWhat::Loop(args) => crate::bench_loop::run(args),
     }
 }

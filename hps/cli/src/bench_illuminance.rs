@@ -87,7 +87,7 @@ const CACHE_ARGS: &[&str] = &[
 const OUR_AB: u32 = 12;
 
 /// FNV-1a, 64 bits: a cache key stable across builds (std's hasher is not).
-fn fnv1a(parts: &[&[u8]]) -> u64 {
+pub(crate) fn fnv1a(parts: &[&[u8]]) -> u64 {
     let mut h = 0xcbf2_9ce4_8422_2325u64;
     for p in parts {
         for b in p.iter().chain(&[0xff]) {
@@ -110,7 +110,7 @@ fn unix_second() -> u64 {
 }
 
 /// Waits until the wall clock is in a second later than `last` (rtrace `-u+` seeds with it).
-fn next_second(last: &mut u64) {
+pub(crate) fn next_second(last: &mut u64) {
     while unix_second() <= *last {
         std::thread::sleep(std::time::Duration::from_millis(20));
     }
@@ -398,11 +398,16 @@ fn time_to(points: &[Point], target: f64) -> Option<TimeAtTarget> {
 }
 
 fn cache_dir() -> PathBuf {
+    bench_cache_dir("bench-illuminance")
+}
+
+/// `$XDG_CACHE_HOME/skylux/NAME` (or `~/.cache/...`): where benches keep their references.
+pub(crate) fn bench_cache_dir(name: &str) -> PathBuf {
     let base = std::env::var_os("XDG_CACHE_HOME")
         .map(PathBuf::from)
         .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".cache")))
         .unwrap_or_else(std::env::temp_dir);
-    base.join("skylux").join("bench-illuminance")
+    base.join("skylux").join(name)
 }
 
 pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
@@ -1094,7 +1099,7 @@ impl Outcome<'_> {
 }
 
 /// A fresh working folder under `base` for this run's sky, octree and inputs.
-fn tempfile_dir(base: &Path) -> anyhow::Result<PathBuf> {
+pub(crate) fn tempfile_dir(base: &Path) -> anyhow::Result<PathBuf> {
     let d = base.join(format!("run-{}-{}", std::process::id(), unix_second()));
     std::fs::create_dir_all(&d).with_context(|| format!("creating {}", d.display()))?;
     Ok(d)

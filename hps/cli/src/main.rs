@@ -5,6 +5,7 @@ mod bench_capture;
 mod bench_illuminance;
 mod bench_loop;
 mod bench_raybox;
+mod bench_render;
 mod calibrate;
 mod closure;
 mod compare;

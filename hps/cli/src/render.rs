@@ -45,6 +45,12 @@ pub struct RenderArgs {
     /// Paths per pixel, at least 1.
     #[arg(long, default_value_t = 16)]
     spp: u32,
+    /// Leave every pixel its own mean of --spp paths. By default the light that varies slowly
+    /// along a surface (sky and interreflections on Lambertian surfaces) is averaged over
+    /// neighbouring pixels on the same surface by an edge-aware filter, which removes most
+    /// of the grain; the sun's direct light, reflectances and glossy surfaces stay as traced.
+    #[arg(long)]
+    unfiltered: bool,
     /// Seed of the random streams; a seed gives the same image on any number of threads.
     #[arg(long, default_value_t = 1)]
     seed: u64,
@@ -85,6 +91,7 @@ pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
             seed: args.seed,
             ..Settings::default()
         },
+        filtered: !args.unfiltered,
     };
     settings.validate()?;
     if let Some(d) = args.log {

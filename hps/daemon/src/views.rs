@@ -228,6 +228,9 @@ fn rendered(
         height_px: glare.resolution_px,
         samples_per_pixel: glare.samples_per_pixel,
         trace,
+        // Each pixel its own unbiased mean: the view's Ev and its standard error come from
+        // the pixels' own spread.
+        filtered: false,
     };
     let picture = render::render(world, &prepared, &settings, &|_, _| {}).map_err(|e| fail(&e))?;
     let image = LuminanceImage {

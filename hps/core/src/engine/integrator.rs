@@ -134,7 +134,59 @@ pub fn irradiance_sample(
     settings: &Settings,
     rng: &mut Rng,
 ) -> DVec3 {
-    sensor_path(world, position_m, normal, settings, rng, false).0
+    sensor_path(world, position_m, normal, settings, rng, SensorPath::WHOLE).0
+}
+
+/// The two parts of a surface point's irradiance that a renderer treats apart
+/// ([`super::render`]): the sun's and its mirror images' direct light, sharp-edged, and all
+/// the rest (sky, ground and interreflections), smooth over a surface.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum IrradiancePart {
+    DirectSun,
+    Rest,
+}
+
+/// One estimate of `part` of the irradiance at `position_m` on primitive `from` (excluded
+/// from its own rays), facing unit `normal`: the two parts' estimates add up to an
+/// [`irradiance_sample`] there.
+pub fn surface_irradiance_sample(
+    world: &World,
+    position_m: DVec3,
+    normal: DVec3,
+    from: Option<u32>,
+    part: IrradiancePart,
+    settings: &Settings,
+    rng: &mut Rng,
+) -> DVec3 {
+    let what = SensorPath {
+        from,
+        direct: part == IrradiancePart::DirectSun,
+        rest: part == IrradiancePart::Rest,
+        shared: false,
+    };
+    sensor_path(world, position_m, normal, settings, rng, what).0
+}
+
+/// What one sensor path estimates.
+#[derive(Clone, Copy, Debug)]
+struct SensorPath {
+    /// The primitive the point lies on, which its rays must not hit again.
+    from: Option<u32>,
+    /// The distant `light`s' direct light (and their mirror images).
+    direct: bool,
+    /// Everything else.
+    rest: bool,
+    /// Path reuse: the first vertex is handed back instead of added.
+    shared: bool,
+}
+
+impl SensorPath {
+    const WHOLE: Self = Self {
+        from: None,
+        direct: true,
+        rest: true,
+        shared: false,
+    };
 }
 
 /// The first vertex of a sensor's path when other sensors may use it (path reuse,
@@ -160,7 +212,11 @@ pub fn irradiance_sample_shared(
     settings: &Settings,
     rng: &mut Rng,
 ) -> (DVec3, Option<SharedVertex>) {
-    sensor_path(world, position_m, normal, settings, rng, true)
+    let what = SensorPath {
+        shared: true,
+        ..SensorPath::WHOLE
+    };
+    sensor_path(world, position_m, normal, settings, rng, what)
 }
 
 fn sensor_path(
@@ -169,35 +225,38 @@ fn sensor_path(
     normal: DVec3,
     settings: &Settings,
     rng: &mut Rng,
-    shared: bool,
+    what: SensorPath,
 ) -> (DVec3, Option<SharedVertex>) {
+    let SensorPath { from, shared, .. } = what;
     let mut e = DVec3::ZERO;
-    // Direct: E = L Ω cos θ averaged over the disc (sampled uniformly in solid angle).
-    for source in world.distant_sources() {
-        if source.kind != DistantKind::Light {
-            continue;
+    if what.direct {
+        // Direct: E = L Ω cos θ averaged over the disc (sampled uniformly in solid angle).
+        for source in world.distant_sources() {
+            if source.kind != DistantKind::Light {
+                continue;
+            }
+            let l = sample_cone(source, rng);
+            let cos = l.dot(normal);
+            if cos > 0.0 {
+                e += source.radiance(l)
+                    * (source.solid_angle_sr * cos)
+                    * world.source_transmission(position_m, from, l);
+            }
         }
-        let l = sample_cone(source, rng);
-        let cos = l.dot(normal);
-        if cos > 0.0 {
-            e += source.radiance(l)
-                * (source.solid_angle_sr * cos)
-                * world.source_transmission(position_m, None, l);
-        }
+        // The sun via plane mirrors (virtual sources).
+        e += mirrored_lights(world, position_m, from, rng, &mut |l, sr| {
+            DVec3::splat(sr * l.dot(normal).max(0.0))
+        });
     }
-    // The sun via plane mirrors (virtual sources).
-    e += mirrored_lights(world, position_m, None, rng, &mut |l, sr| {
-        DVec3::splat(sr * l.dot(normal).max(0.0))
-    });
-    if settings.ambient_bounces == 0 {
+    if settings.ambient_bounces == 0 || !what.rest {
         return (e, None);
     }
     let nee = SkyNee::new(world, settings);
     let lobe = DiffuseLobe::sensor(normal);
     if let Some(nee) = &nee {
-        e += nee.estimate(world, position_m, None, &lobe, rng);
+        e += nee.estimate(world, position_m, from, &lobe, rng);
         if !shared {
-            e += nee.sun_estimate(world, position_m, None, &lobe, 1.0, 1.0, rng);
+            e += nee.sun_estimate(world, position_m, from, &lobe, 1.0, 1.0, rng);
         }
     }
     // Indirect: cosine-weighted direction, so E = π L(ω) per sample.
@@ -210,7 +269,7 @@ fn sensor_path(
     let ray = Ray::new(position_m, d);
     let first = if shared {
         world
-            .intersect(&ray, None)
+            .intersect(&ray, from)
             .filter(|h| world.material(h.primitive).is_lambertian())
     } else {
         None
@@ -218,7 +277,7 @@ fn sensor_path(
     let l = trace(
         world,
         ray,
-        None,
+        from,
         1,
         settings,
         rng,

@@ -20,10 +20,10 @@
 //! sun's disc and the view outside are seen through it.
 
 use super::integrator::{trace_radiance, Settings, MAX_CROSSINGS};
-use super::material::{Interaction, Scatter};
+use super::material::{Interaction, Material, Scatter, Shading};
 use super::ray::Ray;
 use super::rng::Rng;
-use super::sky::{source_seen, DistantKind};
+use super::sky::{source_seen, DistantEmitter, DistantKind};
 use super::world::World;
 use glam::DVec3;
 
@@ -40,7 +40,74 @@ pub fn seen_from_eye(world: &World, d: DVec3) -> DVec3 {
 /// meaning of rtrace's value for that ray (no `-I`). Unbiased for the given `-ab` and `-lr`:
 /// the mean of many estimates converges to rtrace's with `-aa 0` (pure path tracing).
 pub fn ray_radiance(world: &World, ray: Ray, settings: &Settings, rng: &mut Rng) -> DVec3 {
+    ray_radiance_with(world, ray, settings, SunDisc::Sampled, rng)
+}
+
+/// [`ray_radiance`] with the small discs of distant `light`s counted as `sun_disc` says.
+pub(crate) fn ray_radiance_with(
+    world: &World,
+    ray: Ray,
+    settings: &Settings,
+    sun_disc: SunDisc,
+    rng: &mut Rng,
+) -> DVec3 {
+    follow_view_ray(world, ray, settings, rng, sun_disc, &mut |seen, rng| {
+        seen.throughput * trace_radiance(world, seen.ray, seen.from, settings, rng)
+    })
+}
+
+/// Largest solid angle of a distant `light` whose image [`SunDisc::Apart`] integrates: a
+/// disc up to about 2° across (the sun's is 0.53°, 6.8e-5 sr).
+pub(crate) const DISC_APART_MAX_SR: f64 = 1e-3;
+
+/// A distant `light` small enough for [`SunDisc::Apart`].
+pub(crate) fn is_disc_apart(source: &DistantEmitter) -> bool {
+    source.kind == DistantKind::Light && source.solid_angle_sr <= DISC_APART_MAX_SR
+}
+
+/// How a view ray that goes straight on (through glass and invisible surfaces) to a distant
+/// `light` counts its disc.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum SunDisc {
+    /// It sees the disc when it falls inside it.
+    Sampled,
+    /// It does not: the caller adds the disc's image itself ([`super::render`], integrating
+    /// the disc over each pixel instead of hitting it by chance).
+    Apart,
+}
+
+/// A surface the integrator shades, as a view ray meets it (after any glass, mirrors and
+/// invisible surfaces on the way).
+pub(crate) struct ViewShading<'a> {
+    /// The ray that hit it, and the primitive it started from.
+    pub ray: Ray,
+    pub from: Option<u32>,
+    pub primitive: u32,
+    pub position_m: DVec3,
+    /// The material after its patterns at this hit.
+    pub material: &'a Material,
+    pub shading: &'a Shading,
+    /// The shading normal (a texture may have perturbed it) and the geometric one.
+    pub normal: DVec3,
+    pub geometric_normal: DVec3,
+    /// What the way from the eye passes on of the surface's radiance.
+    pub throughput: DVec3,
+}
+
+/// [`ray_radiance`] with the shaded surfaces' radiance, throughput included, from `shade`:
+/// a renderer may estimate it its own way ([`super::render`]).
+pub(crate) fn follow_view_ray(
+    world: &World,
+    ray: Ray,
+    settings: &Settings,
+    rng: &mut Rng,
+    sun_disc: SunDisc,
+    shade: &mut dyn FnMut(&ViewShading, &mut Rng) -> DVec3,
+) -> DVec3 {
     let mut ray = ray;
+    // Turned by a mirror or a reflection: no longer the straight line the disc's image is
+    // integrated along.
+    let mut turned = false;
     let mut from: Option<u32> = None;
     let mut throughput = DVec3::ONE;
     let mut specular_events = 0u32;
@@ -49,7 +116,14 @@ pub fn ray_radiance(world: &World, ray: Ray, settings: &Settings, rng: &mut Rng)
     let mut scattered = DVec3::ZERO;
     loop {
         let Some(hit) = world.intersect(&ray, from) else {
-            return scattered + throughput * seen_from_eye(world, ray.direction);
+            let d = ray.direction;
+            let seen = match source_seen(world.distant_sources(), d) {
+                Some(s) if sun_disc == SunDisc::Apart && !turned && is_disc_apart(s) => {
+                    world.escape_radiance(d)
+                }
+                _ => seen_from_eye(world, d),
+            };
+            return scattered + throughput * seen;
         };
         let d = ray.direction;
         let p = ray.at(hit.t_m);
@@ -82,10 +156,21 @@ pub fn ray_radiance(world: &World, ray: Ray, settings: &Settings, rng: &mut Rng)
                     Scatter::Absorbed => return scattered,
                 }
             }
-            Interaction::Shaded(_) => {
-                // The integrator shades this surface: trace again from where the ray started
-                // (one repeated intersection, which keeps the shading code in one place).
-                scattered += throughput * trace_radiance(world, ray, from, settings, rng);
+            Interaction::Shaded(shading) => {
+                // The integrator shades this surface (by default tracing again from where the
+                // ray started: one repeated intersection keeps the shading code in one place).
+                let seen = ViewShading {
+                    ray,
+                    from,
+                    primitive: hit.primitive,
+                    position_m: p,
+                    material: &material,
+                    shading: &shading,
+                    normal,
+                    geometric_normal: hit.normal,
+                    throughput,
+                };
+                scattered += shade(&seen, rng);
                 let through = material.view_through(d, normal);
                 if through <= 0.0 {
                     return scattered;
@@ -101,6 +186,7 @@ pub fn ray_radiance(world: &World, ray: Ray, settings: &Settings, rng: &mut Rng)
         if throughput.max_element() <= 0.0 {
             return scattered;
         }
+        turned |= next != d;
         from = Some(hit.primitive);
         ray = Ray::new(p, next);
     }

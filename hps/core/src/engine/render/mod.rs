@@ -7,7 +7,20 @@
 //! (stratified on a √n × √n grid, the rest uniform). Each pixel has its own random stream
 //! from (seed, pixel index), and rows are spread over rayon's threads, so an image does not
 //! depend on the number of threads.
+//!
+//! Two things make a picture clean at a given time (issue 21 item 2), both keeping the
+//! quantities a glare evaluation sums:
+//! - the sun's disc seen straight through the view is integrated over the pixels
+//!   ([`sun_in_view`]) instead of being hit by chance, so Ev and DGP with the sun in view do
+//!   not depend on a few lucky rays;
+//! - filtered renders ([`RenderSettings::filtered`]) split each sample at the first
+//!   Lambertian surface ([`first_hit`]) and average the smooth part of its irradiance over
+//!   neighbouring pixels on the same surface ([`filter`]); reflectances, the sun's direct
+//!   light and every other surface stay as traced.
 
+pub mod filter;
+pub mod first_hit;
+pub mod sun_in_view;
 pub mod view;
 
 pub use view::{PreparedView, View, ViewError, ViewType};
@@ -15,10 +28,12 @@ pub use view::{PreparedView, View, ViewError, ViewType};
 use super::error::EngineError;
 use super::illuminance::lux_from_irradiance;
 use super::integrator::Settings;
-use super::radiance::ray_radiance;
+use super::material::bright;
+use super::radiance::{ray_radiance_with, SunDisc};
 use super::rng::Rng;
 use super::world::World;
 use crate::picture::Picture;
+use filter::FilterPixel;
 use glam::DVec3;
 use rayon::prelude::*;
 
@@ -36,6 +51,10 @@ pub struct RenderSettings {
     pub samples_per_pixel: u32,
     /// `-ab`, `-lr` and the seed; `samples_per_sensor` is not used.
     pub trace: Settings,
+    /// Average the smooth part of the light over neighbouring pixels on the same surface
+    /// ([`first_hit`], [`filter`]): far less grain at the same time; off, every pixel is
+    /// its own unbiased mean.
+    pub filtered: bool,
 }
 
 impl RenderSettings {
@@ -86,52 +105,25 @@ pub fn render(
 ) -> Result<Picture, EngineError> {
     settings.validate()?;
     let (w, h) = (settings.width_px, settings.height_px);
-    let n = settings.samples_per_pixel;
-    let grid = (f64::from(n).sqrt() as u32).max(1);
     let done = std::sync::atomic::AtomicU64::new(0);
-    let rows: Vec<Vec<(DVec3, f64, f64)>> = (0..h)
+    let pixels: Vec<PixelEstimate> = (0..h)
         .into_par_iter()
         .map(|row| {
-            let out = (0..w)
-                .map(|column| {
-                    let pixel = u64::from(row) * u64::from(w) + u64::from(column);
-                    let mut rng = Rng::for_stream(settings.trace.seed, pixel);
-                    let (mut rgb, mut sum, mut sum2) = (DVec3::ZERO, 0.0, 0.0);
-                    for s in 0..n {
-                        let (jx, jy) = if s < grid * grid {
-                            (
-                                (f64::from(s % grid) + rng.uniform()) / f64::from(grid),
-                                (f64::from(s / grid) + rng.uniform()) / f64::from(grid),
-                            )
-                        } else {
-                            (rng.uniform(), rng.uniform())
-                        };
-                        let x = (f64::from(column) + jx) / f64::from(w);
-                        let y = (f64::from(h - 1 - row) + jy) / f64::from(h);
-                        let l = match view.ray(x, y) {
-                            Some(ray) => ray_radiance(world, ray, &settings.trace, &mut rng),
-                            None => DVec3::ZERO,
-                        };
-                        let lum = luminance_from_radiance(l);
-                        rgb += l;
-                        sum += lum;
-                        sum2 += lum * lum;
-                    }
-                    let nf = f64::from(n);
-                    let mean = sum / nf;
-                    let var = if n > 1 {
-                        ((sum2 - nf * mean * mean) / (nf - 1.0)).max(0.0)
-                    } else {
-                        0.0
-                    };
-                    (rgb / nf, mean, (var / nf).sqrt())
-                })
+            let out: Vec<PixelEstimate> = (0..w)
+                .map(|column| pixel_estimate(world, view, settings, row, column))
                 .collect();
             let d = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(d, u64::from(h));
             out
         })
+        .collect::<Vec<_>>()
+        .into_iter()
+        .flatten()
         .collect();
+    let mut smooth: Vec<FilterPixel> = pixels.iter().map(|p| p.smooth).collect();
+    if settings.filtered {
+        filter::filter(&mut smooth, w as usize);
+    }
     let mut image = Picture {
         width_px: w,
         height_px: h,
@@ -139,12 +131,138 @@ pub fn render(
         radiance_rgb: Vec::with_capacity((w * h) as usize),
         luminance_cd_m2: Vec::with_capacity((w * h) as usize),
         luminance_stderr_cd_m2: Vec::with_capacity((w * h) as usize),
-        samples_per_pixel: n,
+        samples_per_pixel: settings.samples_per_pixel,
     };
-    for (rgb, lum, se) in rows.into_iter().flatten() {
-        image.radiance_rgb.push(rgb);
-        image.luminance_cd_m2.push(lum);
-        image.luminance_stderr_cd_m2.push(se);
+    for (pixel, smooth) in pixels.iter().zip(&smooth) {
+        image
+            .radiance_rgb
+            .push(pixel.unfiltered_rgb + pixel.albedo_rgb * smooth.irradiance_rgb);
+        image.luminance_stderr_cd_m2.push(pixel.stderr_cd_m2);
     }
+    sun_in_view::add_discs(world, view, w, h, &mut image.radiance_rgb);
+    image.luminance_cd_m2 = image
+        .radiance_rgb
+        .iter()
+        .map(|&rgb| luminance_from_radiance(rgb))
+        .collect();
     Ok(image)
+}
+
+/// One pixel's samples: radiance `unfiltered_rgb + albedo_rgb ⊙ smooth.irradiance_rgb`.
+struct PixelEstimate {
+    unfiltered_rgb: DVec3,
+    albedo_rgb: DVec3,
+    smooth: FilterPixel,
+    /// Standard error of the pixel's luminance before any filtering.
+    stderr_cd_m2: f64,
+}
+
+/// The mean of `samples_per_pixel` samples through jittered positions in the pixel
+/// (stratified on a √n × √n grid, the rest uniform), with its own random stream from (seed,
+/// pixel index). Unfiltered renders take each sample whole ([`ray_radiance`]); filtered ones
+/// split it at the first Lambertian surface ([`first_hit::camera_sample`]).
+fn pixel_estimate(
+    world: &World,
+    view: &PreparedView,
+    settings: &RenderSettings,
+    row: u32,
+    column: u32,
+) -> PixelEstimate {
+    let (w, h) = (settings.width_px, settings.height_px);
+    let n = settings.samples_per_pixel;
+    let grid = (f64::from(n).sqrt() as u32).max(1);
+    let pixel = u64::from(row) * u64::from(w) + u64::from(column);
+    let mut rng = Rng::for_stream(settings.trace.seed, pixel);
+    let mut estimate = PixelEstimate {
+        unfiltered_rgb: DVec3::ZERO,
+        albedo_rgb: DVec3::ZERO,
+        smooth: FilterPixel {
+            irradiance_rgb: DVec3::ONE,
+            variance: 0.0,
+            surface: None,
+        },
+        stderr_cd_m2: 0.0,
+    };
+    let (mut sum, mut sum2) = (0.0, 0.0);
+    let (mut rest, mut rest_l, mut rest_l2, mut seen) = (DVec3::ZERO, 0.0, 0.0, 0u32);
+    // Σ albedo ⊙ irradiance: divided by Σ albedo, the irradiance that reproduces the
+    // pixel's unfiltered mean exactly where its samples see surfaces of different colours.
+    let mut modulated = DVec3::ZERO;
+    let (mut position, mut normal, mut distance) = (DVec3::ZERO, DVec3::ZERO, 0.0);
+    for s in 0..n {
+        let (jx, jy) = if s < grid * grid {
+            (
+                (f64::from(s % grid) + rng.uniform()) / f64::from(grid),
+                (f64::from(s / grid) + rng.uniform()) / f64::from(grid),
+            )
+        } else {
+            (rng.uniform(), rng.uniform())
+        };
+        let x = (f64::from(column) + jx) / f64::from(w);
+        let y = (f64::from(h - 1 - row) + jy) / f64::from(h);
+        let Some(ray) = view.ray(x, y) else {
+            continue;
+        };
+        let l = if settings.filtered {
+            let sample =
+                first_hit::camera_sample(world, ray, &settings.trace, SunDisc::Apart, &mut rng);
+            estimate.unfiltered_rgb += sample.unfiltered_rgb;
+            estimate.albedo_rgb += sample.albedo_rgb;
+            if let Some(f) = sample.feature {
+                let e = sample.rest_irradiance_rgb;
+                rest += e;
+                modulated += sample.albedo_rgb * e;
+                rest_l += bright(e);
+                rest_l2 += bright(e) * bright(e);
+                seen += 1;
+                position += f.position_m;
+                normal += f.normal;
+                distance += f.eye_distance_m;
+            }
+            sample.unfiltered_rgb + sample.albedo_rgb * sample.rest_irradiance_rgb
+        } else {
+            let l = ray_radiance_with(world, ray, &settings.trace, SunDisc::Apart, &mut rng);
+            estimate.unfiltered_rgb += l;
+            l
+        };
+        let lum = luminance_from_radiance(l);
+        sum += lum;
+        sum2 += lum * lum;
+    }
+    let nf = f64::from(n);
+    estimate.unfiltered_rgb /= nf;
+    estimate.albedo_rgb /= nf;
+    let mean = sum / nf;
+    if n > 1 {
+        let var = ((sum2 - nf * mean * mean) / (nf - 1.0)).max(0.0);
+        estimate.stderr_cd_m2 = (var / nf).sqrt();
+    }
+    if seen > 0 {
+        let k = f64::from(seen);
+        let m = rest_l / k;
+        let albedo_sum = estimate.albedo_rgb * nf;
+        let irradiance = DVec3::from_array(std::array::from_fn(|c| {
+            if albedo_sum[c] > 0.0 {
+                modulated[c] / albedo_sum[c]
+            } else {
+                rest[c] / k
+            }
+        }));
+        estimate.smooth = FilterPixel {
+            irradiance_rgb: irradiance,
+            // The variance of the mean; one sample gives no spread, so its variance is
+            // taken as its own square (no neighbour is then refused on its account).
+            variance: if seen > 1 {
+                ((rest_l2 - k * m * m) / (k - 1.0)).max(0.0) / k
+            } else {
+                m * m
+            },
+            surface: Some((
+                position / k,
+                normal.try_normalize().unwrap_or(DVec3::Z),
+                distance / k,
+            )),
+        };
+    }
+    estimate
 }
