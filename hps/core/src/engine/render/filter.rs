@@ -18,6 +18,8 @@
 
 use glam::DVec3;
 
+/// Half width of the window over which [`pool_variances`] averages (7 × 7 pixels, SVGF's).
+const POOL_RADIUS: usize = 3;
 /// Passes of the filter (taps up to 2⁴ = 16 pixels apart: a support of 61 pixels).
 pub const PASSES: u32 = 5;
 /// Exponent of the normal weight (SVGF's σ_n = 128 is for noisy shading normals; flat
@@ -54,6 +56,7 @@ pub fn filter(pixels: &mut [FilterPixel], width_px: usize) {
         return;
     }
     let height_px = pixels.len() / width_px;
+    pool_variances(pixels, width_px, height_px);
     let mut scratch = pixels.to_vec();
     for pass in 0..PASSES {
         let step = 1usize << pass;
@@ -71,6 +74,48 @@ pub fn filter(pixels: &mut [FilterPixel], width_px: usize) {
         }
         pixels.copy_from_slice(&scratch);
     }
+}
+
+/// Replaces each pixel's variance by the mean over the pixels of the same surface within
+/// [`POOL_RADIUS`] (SVGF's spatial estimate where a pixel has few samples): from a handful
+/// of paths a pixel's own spread is often near zero by chance, which would make it refuse
+/// its neighbours and the filter's weights lopsided, losing light that only a few pixels
+/// happened to find.
+fn pool_variances(pixels: &mut [FilterPixel], width_px: usize, height_px: usize) {
+    use rayon::prelude::*;
+    let source = pixels.to_vec();
+    pixels
+        .par_chunks_mut(width_px)
+        .enumerate()
+        .for_each(|(row, out)| {
+            for (column, target) in out.iter_mut().enumerate() {
+                let Some((x_p, n_p, distance_p)) = target.surface else {
+                    continue;
+                };
+                let (mut sum, mut weights) = (0.0, 0.0);
+                let rows = row.saturating_sub(POOL_RADIUS)..(row + POOL_RADIUS + 1).min(height_px);
+                for y in rows {
+                    let columns =
+                        column.saturating_sub(POOL_RADIUS)..(column + POOL_RADIUS + 1).min(width_px);
+                    for x in columns {
+                        let q = &source[y * width_px + x];
+                        let Some((x_q, n_q, _)) = q.surface else {
+                            continue;
+                        };
+                        let w = geometry_weight(x_p, n_p, distance_p, x_q, n_q);
+                        sum += w * q.variance;
+                        weights += w;
+                    }
+                }
+                target.variance = sum / weights;
+            }
+        });
+}
+
+/// The normal and tangent-plane parts of a tap's weight (1 for the same plane).
+fn geometry_weight(x_p: DVec3, n_p: DVec3, distance_p: f64, x_q: DVec3, n_q: DVec3) -> f64 {
+    let plane_scale = PLANE_TOLERANCE * distance_p.max(1e-9);
+    n_p.dot(n_q).max(0.0).powi(NORMAL_POWER) * (-(x_q - x_p).dot(n_p).abs() / plane_scale).exp()
 }
 
 /// One pass of the filter at pixel (row, column), taps `step` apart.
@@ -91,7 +136,6 @@ fn filtered_at(
     if centre.variance.max(0.0).sqrt() <= QUIET_RELATIVE_ERROR * l_p {
         return centre;
     }
-    let plane_scale = PLANE_TOLERANCE * distance_p.max(1e-9);
     let (mut sum, mut weights, mut variance) = (DVec3::ZERO, 0.0, 0.0);
     for (i, kernel_y) in KERNEL.iter().enumerate() {
         let Some(y) = offset(row, i, step, height_px) else {
@@ -105,15 +149,14 @@ fn filtered_at(
             let Some((x_q, n_q, _)) = q.surface else {
                 continue;
             };
-            let normal = n_p.dot(n_q).max(0.0).powi(NORMAL_POWER);
-            let plane = (-(x_q - x_p).dot(n_p).abs() / plane_scale).exp();
+            let geometry = geometry_weight(x_p, n_p, distance_p, x_q, n_q);
             // Symmetric in p and q, so that light one pixel has by chance too much of is
             // shared with its neighbours as theirs is with it: the filter keeps the mean.
             let luminance_scale =
                 LUMINANCE_SIGMAS * (centre.variance.max(0.0) + q.variance.max(0.0)).sqrt();
             let light =
                 (-(luminance(q.irradiance_rgb) - l_p).abs() / (luminance_scale + 1e-300)).exp();
-            let w = kernel_y * kernel_x * normal * plane * light;
+            let w = kernel_y * kernel_x * geometry * light;
             sum += w * q.irradiance_rgb;
             weights += w;
             variance += w * w * q.variance;
