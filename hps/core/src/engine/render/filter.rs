@@ -95,8 +95,8 @@ fn pool_variances(pixels: &mut [FilterPixel], width_px: usize, height_px: usize)
                 let (mut sum, mut weights) = (0.0, 0.0);
                 let rows = row.saturating_sub(POOL_RADIUS)..(row + POOL_RADIUS + 1).min(height_px);
                 for y in rows {
-                    let columns =
-                        column.saturating_sub(POOL_RADIUS)..(column + POOL_RADIUS + 1).min(width_px);
+                    let columns = column.saturating_sub(POOL_RADIUS)
+                        ..(column + POOL_RADIUS + 1).min(width_px);
                     for x in columns {
                         let q = &source[y * width_px + x];
                         let Some((x_q, n_q, _)) = q.surface else {
