@@ -118,46 +118,7 @@ pub fn run(args: &RenderBenchArgs) -> anyhow::Result<()> {
             args.reference_paths
         );
     }
-    let radiance = Radiance::find()?;
-    let room_dir = args.room.clone().unwrap_or_else(|| {
-        PathBuf::from(concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/../../../shared/data/radiance-corpus/sariths-matrix-tutorial/room"
-        ))
-    });
-    let room_dir = std::fs::canonicalize(&room_dir)
-        .with_context(|| format!("--room {}", room_dir.display()))?;
-    let sky_text = match &args.sky {
-        Some(p) => std::fs::read_to_string(p).with_context(|| format!("--sky {}", p.display()))?,
-        None => DEFAULT_SKY.to_string(),
-    };
-    let cache = bench_cache_dir("bench-render");
-    std::fs::create_dir_all(&cache).with_context(|| format!("creating {}", cache.display()))?;
-    let work = tempfile_dir(&cache)?;
-    let sky_path = work.join("sky.rad");
-    std::fs::write(&sky_path, &sky_text)?;
-    let mut scene_paths: Vec<PathBuf> = args.scene.iter().map(|f| room_dir.join(f)).collect();
-    scene_paths.push(sky_path.clone());
-    let mut scene_text = Vec::new();
-    for path in &scene_paths {
-        scene_text
-            .extend(std::fs::read(path).with_context(|| format!("reading {}", path.display()))?);
-    }
-    let octree = work.join("scene.oct");
-    let oct = radiance.output({
-        let mut c = radiance.tool("oconv");
-        c.current_dir(&room_dir).arg("-f").args(&scene_paths);
-        c
-    })?;
-    std::fs::write(&octree, &oct)?;
-    let scene = scene::load_files_with(
-        &scene_paths,
-        &scene::LoadOptions {
-            working_directory: Some(room_dir.clone()),
-            ..Default::default()
-        },
-    )?;
-    let world = World::new(&scene)?;
+    let bench = Bench::prepare(args)?;
     let view_specs: Vec<String> = if args.views.is_empty() {
         vec![
             "interior=-vf views/in.vf".into(),
@@ -169,7 +130,98 @@ pub fn run(args: &RenderBenchArgs) -> anyhow::Result<()> {
     let mut last_second = 0u64;
     let mut results = Vec::new();
     for spec in &view_specs {
-        let case = Case::parse(spec, &room_dir, args.size)?;
+        let case = Case::parse(spec, &bench.room_dir, args.size)?;
+        results.push(bench.compare_view(args, &case, &mut last_second)?);
+    }
+    let out = json!({
+        "machine_threads": rayon::current_num_threads(),
+        "cases": results,
+    });
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&out)?);
+    } else {
+        print_table(&out);
+    }
+    let _ = std::fs::remove_dir_all(&bench.work);
+    Ok(())
+}
+
+/// The scene as both programs have it: RADIANCE's octree and our world.
+struct Bench {
+    radiance: Radiance,
+    room_dir: PathBuf,
+    cache: PathBuf,
+    /// This run's folder (sky file, octree, rpict's pictures).
+    work: PathBuf,
+    octree: PathBuf,
+    /// The scene files' text, the reference cache's key.
+    scene_text: Vec<u8>,
+    world: World,
+}
+
+impl Bench {
+    fn prepare(args: &RenderBenchArgs) -> anyhow::Result<Self> {
+        let radiance = Radiance::find()?;
+        let room_dir = args.room.clone().unwrap_or_else(|| {
+            PathBuf::from(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/../../../shared/data/radiance-corpus/sariths-matrix-tutorial/room"
+            ))
+        });
+        let room_dir = std::fs::canonicalize(&room_dir)
+            .with_context(|| format!("--room {}", room_dir.display()))?;
+        let sky_text = match &args.sky {
+            Some(p) => {
+                std::fs::read_to_string(p).with_context(|| format!("--sky {}", p.display()))?
+            }
+            None => DEFAULT_SKY.to_string(),
+        };
+        let cache = bench_cache_dir("bench-render");
+        std::fs::create_dir_all(&cache).with_context(|| format!("creating {}", cache.display()))?;
+        let work = tempfile_dir(&cache)?;
+        let sky_path = work.join("sky.rad");
+        std::fs::write(&sky_path, &sky_text)?;
+        let mut scene_paths: Vec<PathBuf> = args.scene.iter().map(|f| room_dir.join(f)).collect();
+        scene_paths.push(sky_path);
+        let mut scene_text = Vec::new();
+        for path in &scene_paths {
+            scene_text.extend(
+                std::fs::read(path).with_context(|| format!("reading {}", path.display()))?,
+            );
+        }
+        let octree = work.join("scene.oct");
+        let oct = radiance.output({
+            let mut c = radiance.tool("oconv");
+            c.current_dir(&room_dir).arg("-f").args(&scene_paths);
+            c
+        })?;
+        std::fs::write(&octree, &oct)?;
+        let scene = scene::load_files_with(
+            &scene_paths,
+            &scene::LoadOptions {
+                working_directory: Some(room_dir.clone()),
+                ..Default::default()
+            },
+        )?;
+        let world = World::new(&scene)?;
+        Ok(Self {
+            radiance,
+            room_dir,
+            cache,
+            work,
+            octree,
+            scene_text,
+            world,
+        })
+    }
+
+    /// One view: its reference, then each rpict configuration and ours at its time.
+    fn compare_view(
+        &self,
+        args: &RenderBenchArgs,
+        case: &Case,
+        last_second: &mut u64,
+    ) -> anyhow::Result<serde_json::Value> {
         let log = |msg: String| {
             if !args.json {
                 eprintln!("[{}] {msg}", case.name);
@@ -177,28 +229,27 @@ pub fn run(args: &RenderBenchArgs) -> anyhow::Result<()> {
         };
         // The scene's text, not the octree's: a frozen octree's header names its files.
         let key = fnv1a(&[
-            &scene_text,
+            &self.scene_text,
             case.options.join(" ").as_bytes(),
             &case.width_px.to_le_bytes(),
             &case.height_px.to_le_bytes(),
             &args.reference_paths.to_le_bytes(),
         ]);
         let reference = reference(
-            &radiance,
-            &octree,
-            &case,
+            &self.radiance,
+            &self.octree,
+            case,
             args,
-            &cache,
+            &self.cache,
             key,
-            &mut last_second,
+            last_second,
             &log,
         )?;
-        let ref_image = case.luminance_image(reference.luminance_cd_m2.clone());
-        let mut ref_glare = glare_of(&ref_image);
+        let mut ref_glare = glare_of(&case.luminance_image(reference.luminance_cd_m2.clone()));
         // Over a whole hemisphere the picture's Ev is the irradiance at the eye: rtrace -I
         // there is its converged value, free of the sun pixel's sampling noise.
         let eye_ev = if case.sees_hemisphere() {
-            let ev = eye_illuminance(&radiance, &octree, &case, &mut last_second)?;
+            let ev = eye_illuminance(&self.radiance, &self.octree, case, last_second)?;
             log(format!(
                 "Ev at the eye (rtrace -I): {:.1} ± {:.1} lx",
                 ev.0, ev.1
@@ -210,49 +261,21 @@ pub fn run(args: &RenderBenchArgs) -> anyhow::Result<()> {
         };
         let mut runs = Vec::new();
         for options in &args.rpict {
-            let (rpict_image, rpict_s) = run_rpict(&radiance, &octree, &case, options, &work)?;
-            let rpict_q = quality(&rpict_image, &reference);
-            log(format!(
-                "rpict {options}: {rpict_s:.2} s, RMS {:.1} %",
-                100.0 * rpict_q.rms_rel_corrected
-            ));
-            let mut ours = Vec::new();
-            for filtered in [true, false] {
-                let (image, spp, seconds) = ours_at(&world, &case, filtered, rpict_s)?;
-                let picture = case.luminance_image(image.luminance_cd_m2.clone());
-                let q = quality(&picture, &reference);
-                log(format!(
-                    "skylux {} {spp} paths/pixel: {seconds:.2} s, RMS {:.1} %",
-                    if filtered { "filtered" } else { "unfiltered" },
-                    100.0 * q.rms_rel_corrected
-                ));
-                if let Some(dir) = &args.images {
-                    let tag = if filtered { "filtered" } else { "unfiltered" };
-                    let stem = format!("{}-{}-skylux-{tag}", case.name, runs.len());
-                    write_images(dir, &stem, &image)?;
-                }
-                ours.push(json!({
-                    "mode": if filtered { "filtered" } else { "unfiltered" },
-                    "paths_per_pixel": spp,
-                    "seconds": seconds,
-                    "quality": q.to_json(&ref_glare),
-                }));
-            }
-            if let Some(dir) = &args.images {
-                let stem = format!("{}-{}-rpict", case.name, runs.len());
-                write_images(dir, &stem, &case.picture(&rpict_image.luminance_cd_m2))?;
-            }
-            runs.push(json!({
-                "rpict": {"options": options, "seconds": rpict_s,
-                          "quality": rpict_q.to_json(&ref_glare)},
-                "skylux": ours,
-            }));
+            runs.push(self.rpict_and_ours(
+                args,
+                case,
+                options,
+                runs.len(),
+                &reference,
+                &ref_glare,
+                &log,
+            )?);
         }
         if let Some(dir) = &args.images {
             let stem = format!("{}-reference", case.name);
             write_images(dir, &stem, &case.picture(&reference.luminance_cd_m2))?;
         }
-        results.push(json!({
+        Ok(json!({
             "view": case.name,
             "options": case.options.join(" "),
             "resolution": [case.width_px, case.height_px],
@@ -267,19 +290,60 @@ pub fn run(args: &RenderBenchArgs) -> anyhow::Result<()> {
                 "dgp": ref_glare.1,
             },
             "runs": runs,
-        }));
+        }))
     }
-    let out = json!({
-        "machine_threads": rayon::current_num_threads(),
-        "cases": results,
-    });
-    if args.json {
-        println!("{}", serde_json::to_string_pretty(&out)?);
-    } else {
-        print_table(&out);
+
+    /// rpict with `options`, then ours filtered and unfiltered at its wall time.
+    #[allow(clippy::too_many_arguments)]
+    fn rpict_and_ours(
+        &self,
+        args: &RenderBenchArgs,
+        case: &Case,
+        options: &str,
+        run: usize,
+        reference: &Reference,
+        ref_glare: &(Option<f64>, Option<f64>),
+        log: &dyn Fn(String),
+    ) -> anyhow::Result<serde_json::Value> {
+        let (rpict_image, rpict_s) =
+            run_rpict(&self.radiance, &self.octree, case, options, &self.work)?;
+        let rpict_q = quality(&rpict_image, reference);
+        log(format!(
+            "rpict {options}: {rpict_s:.2} s, RMS {:.1} %",
+            100.0 * rpict_q.rms_rel_corrected
+        ));
+        if let Some(dir) = &args.images {
+            let stem = format!("{}-{run}-rpict", case.name);
+            write_images(dir, &stem, &case.picture(&rpict_image.luminance_cd_m2))?;
+        }
+        let mut ours = Vec::new();
+        for filtered in [true, false] {
+            let mode = if filtered { "filtered" } else { "unfiltered" };
+            let (image, spp, seconds) = ours_at(&self.world, case, filtered, rpict_s)?;
+            let q = quality(
+                &case.luminance_image(image.luminance_cd_m2.clone()),
+                reference,
+            );
+            log(format!(
+                "skylux {mode} {spp} paths/pixel: {seconds:.2} s, RMS {:.1} %",
+                100.0 * q.rms_rel_corrected
+            ));
+            if let Some(dir) = &args.images {
+                write_images(dir, &format!("{}-{run}-skylux-{mode}", case.name), &image)?;
+            }
+            ours.push(json!({
+                "mode": mode,
+                "paths_per_pixel": spp,
+                "seconds": seconds,
+                "quality": q.to_json(ref_glare),
+            }));
+        }
+        Ok(json!({
+            "rpict": {"options": options, "seconds": rpict_s,
+                      "quality": rpict_q.to_json(ref_glare)},
+            "skylux": ours,
+        }))
     }
-    let _ = std::fs::remove_dir_all(&work);
-    Ok(())
 }
 
 impl Case {
