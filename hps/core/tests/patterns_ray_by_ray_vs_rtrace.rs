@@ -314,6 +314,111 @@ fn patterned_glass_matches_rtrace() {
     compare_scene_from(dir.path(), text, "patterned glass", 1.0, &bin, &lib);
 }
 
+/// A pane of `glass` under a `texfunc` ripple, seen from above against a floor whose colour
+/// changes along x and y: glass.c bends the view ray's transmitted child by 2 (1 − n) pert,
+/// so it lands elsewhere on the floor, and takes the Fresnel terms at the perturbed normal
+/// for the view ray and for the sun's shadow rays (which go straight). The pane's choice
+/// between transmission and reflection is sampled by us, traced both ways by rtrace, so
+/// each ray is judged against our own standard error (4.5σ, 1024 estimates a ray) and the
+/// mean of all rays within 0.3 %; and the texture must move rtrace's values, or the test
+/// would not see it.
+#[test]
+fn textured_glass_matches_rtrace() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("ripple.cal"),
+        "dx = 0.06 * sin(2.5 * Px);\ndy = 0.05 * cos(1.7 * Py);\ndz = 0;\nflat = 0;\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("floor.cal"),
+        "fr = 0.5 + 0.4 * sin(3 * Px);\nfg = 0.5 + 0.4 * cos(2.5 * Py);\nfb = 0.5;\n",
+    )
+    .unwrap();
+    // The pane facing up, then down (its back towards the eye: flipsurface turns pert).
+    for pane in [
+        "-2 -2 1.5 6 -2 1.5 6 5 1.5 -2 5 1.5",
+        "-2 5 1.5 6 5 1.5 6 -2 1.5 -2 -2 1.5",
+    ] {
+        let scene = |texture: &str| {
+            format!(
+                "void light sunlight 0 0 3 2e4 2e4 2e4\n\
+             sunlight source sun 0 0 4 0.1 0.2 1 0.5\n\
+             {texture}\
+             ripple glass pane_glass 0 0 3 0.9 0.9 0.9\n\
+             pane_glass polygon pane 0 0 12 {pane}\n\
+             void colorfunc stripes 4 fr fg fb floor.cal\n0\n0\n\
+             stripes plastic grey 0 0 5 0.6 0.6 0.6 0 0\n\
+             grey polygon floor 0 0 12 0 0 0 4 0 0 4 3 0 0 3 0\n"
+            )
+        };
+        let textured = scene("void texfunc ripple 4 dx dy dz ripple.cal\n0\n0\n");
+        let untextured = scene("void texfunc ripple 4 flat flat flat ripple.cal\n0\n0\n");
+        let rays: Vec<Ray> = rays()
+            .into_iter()
+            .map(|r| Ray::new(DVec3::new(r.origin_m.x, r.origin_m.y, 2.5), r.direction))
+            .collect();
+        std::fs::write(dir.path().join("scene.rad"), &untextured).unwrap();
+        let straight = rtrace_along(dir.path(), &rays, &bin, &lib);
+        std::fs::write(dir.path().join("scene.rad"), &textured).unwrap();
+        let theirs = rtrace_along(dir.path(), &rays, &bin, &lib);
+        let moved = theirs
+            .iter()
+            .zip(&straight)
+            .filter(|(t, s)| (**t - **s).abs().max_element() > 0.05 * s.max_element())
+            .count();
+        assert!(
+            moved > rays.len() / 4,
+            "the texture moved only {moved} rays"
+        );
+
+        let world =
+            World::new(&scene::load_files(&[dir.path().join("scene.rad")]).unwrap()).unwrap();
+        let settings = Settings {
+            ambient_bounces: 0,
+            seed: 5,
+            ..Settings::default()
+        };
+        const N: usize = 1024;
+        let (mut ours_sum, mut theirs_sum, mut worst_z) = (0.0, 0.0, 0.0f64);
+        for (k, (ray, want)) in rays.iter().zip(&theirs).enumerate() {
+            let (mut sum, mut sum2) = (DVec3::ZERO, DVec3::ZERO);
+            for e in 0..N {
+                let mut rng = Rng::for_stream(5, (k * N + e) as u64);
+                let v = ray_radiance(&world, *ray, &settings, &mut rng);
+                sum += v;
+                sum2 += v * v;
+            }
+            let mean = sum / N as f64;
+            let var = (sum2 / N as f64 - mean * mean).max(DVec3::ZERO) / (N as f64 - 1.0);
+            let se = DVec3::new(var.x.sqrt(), var.y.sqrt(), var.z.sqrt());
+            for c in 0..3 {
+                let z = (mean[c] - want[c]).abs() / (se[c] + 1e-3 * want[c].abs() + 1e-9);
+                worst_z = worst_z.max(z);
+                assert!(
+                    z < 4.5,
+                    "ray {k} at {:?}, channel {c}: ours {} ± {}, rtrace {}",
+                    ray.origin_m,
+                    mean[c],
+                    se[c],
+                    want[c]
+                );
+            }
+            ours_sum += mean.x + mean.y + mean.z;
+            theirs_sum += want.x + want.y + want.z;
+        }
+        println!(
+        "textured glass ({pane}): {} rays, worst {worst_z:.2} standard errors, mean ratio {:.5}; the texture moved {moved} rays by over 5 %",
+        rays.len(),
+        ours_sum / theirs_sum
+    );
+        assert!((ours_sum / theirs_sum - 1.0).abs() < 3e-3);
+    }
+}
+
 /// Our test font (written for these tests, RADIANCE's `.fnt` format) and a three-line text
 /// file: glyphs the font lacks (`?`), spaces, a run of three spaces (an indent for
 /// proportional spacing), a glyph with a hole (`O`) and a narrow one (`.`).

@@ -54,10 +54,6 @@ pub fn material_of(
             ),
         })
     };
-    if matches!(base, VaryingBase::Plain(Material::Glass(_))) && tilts(&modulations) {
-        // glass.c bends the transmitted ray by the perturbation; ours goes straight.
-        return refuse("textures on glass are not traced yet (patterns are)");
-    }
     match &base {
         VaryingBase::Plain(Material::Normal(_) | Material::Glass(_))
         | VaryingBase::Brtd(_)
@@ -168,15 +164,6 @@ fn mix_parts(
         ),
         _ => return Ok(None),
     }))
-}
-
-/// Whether any of the modulations (or a side of a pattern mixture) is a texture.
-fn tilts(modulations: &[Modulation]) -> bool {
-    modulations.iter().any(|m| match m {
-        Modulation::Texture(_) | Modulation::DataTexture(_) => true,
-        Modulation::Mixture { sides, .. } => sides.iter().any(|s| tilts(s)),
-        Modulation::Pattern(_) | Modulation::Data(_) | Modulation::Text { .. } => false,
-    })
 }
 
 /// The patterns and textures of one side of a pattern mixture: its chain down to `void`

@@ -125,6 +125,9 @@ impl HitDependent for VaryingMaterial {
                             .with_ambient_normal(hit.normal),
                     )))
                 }
+                Material::Glass(g) if m.perturbation != DVec3::ZERO => {
+                    Material::Glass(g.textured(m.perturbation, hit.direction, hit.normal))
+                }
                 plain => plain,
             },
             VaryingBase::Brtd(b) => Material::Shaded(Box::new(Shading::Brtd(Box::new(b.shade(

@@ -15,6 +15,10 @@ pub struct GlassMaterial {
     /// A pattern's colour (1 without one): glass.c multiplies the transmitted coefficient
     /// by it, after the Fresnel terms, and leaves the reflection alone.
     pub pattern_rgb: DVec3,
+    /// What a texture adds to the transmitted direction of every ray but a shadow ray
+    /// (glass.c: rdir + 2 (1 − n) pert, pert turned with the surface when the ray meets its
+    /// back); zero without a texture.
+    pub transmitted_bend: DVec3,
 }
 
 impl From<&Glass> for GlassMaterial {
@@ -23,11 +27,26 @@ impl From<&Glass> for GlassMaterial {
             transmissivity_rgb: g.transmissivity_rgb,
             refractive_index: g.refractive_index,
             pattern_rgb: DVec3::ONE,
+            transmitted_bend: DVec3::ZERO,
         }
     }
 }
 
 impl GlassMaterial {
+    /// The pane under a texture's perturbation `perturbation` (`raytexture`'s pert, in the
+    /// surface's own frame), met by a ray along unit `d` at a surface of geometric normal
+    /// `normal`.
+    pub fn textured(mut self, perturbation: DVec3, d: DVec3, normal: DVec3) -> Self {
+        // flipsurface turns pert with the normal when the ray meets the back.
+        let pert = if d.dot(normal) > 0.0 {
+            -perturbation
+        } else {
+            perturbation
+        };
+        self.transmitted_bend = 2.0 * (1.0 - self.refractive_index) * pert;
+        self
+    }
+
     /// Transmitted and reflected fractions for unit direction `d` at a pane of normal `normal`.
     fn fractions(&self, d: DVec3, normal: DVec3) -> (DVec3, DVec3) {
         let (t, r) = glass_fractions(
@@ -53,8 +72,14 @@ impl GlassMaterial {
             return Scatter::Absorbed;
         }
         if rng.uniform() * (bt + br) < bt {
+            let direction = if self.transmitted_bend == DVec3::ZERO {
+                d
+            } else {
+                // glass.c keeps the ray's own direction on a "bad perturbation".
+                (d + self.transmitted_bend).try_normalize().unwrap_or(d)
+            };
             Scatter::Specular {
-                direction: d,
+                direction,
                 weight: t * ((bt + br) / bt),
             }
         } else {
