@@ -1,6 +1,7 @@
 //! Compiling a function modifier: its `.cal` file found through RAYPATH and read once per
-//! file however many modifiers name it, RADIANCE's `rayinit.cal` before it when RAYPATH has
-//! one (as `func.c` `initfunc` loads it first), and the modifier's expressions compiled into
+//! file however many modifiers name it, RADIANCE's `rayinit.cal` before it when RAYPATH (or
+//! the scene file's folder) has one (as `func.c` `initfunc` loads it first; RADIANCE's own
+//! default RAYPATH holds its library), and the modifier's expressions compiled into
 //! the program, so nothing is parsed per ray.
 
 use super::data::DataArray;
@@ -260,7 +261,8 @@ impl FunctionLoader {
             return Ok(p.clone());
         }
         let mut program = CalProgram::new();
-        if let Some(rayinit) = find(RAYINIT, Path::new("")) {
+        // On RAYPATH, else beside the scene file as its function files are.
+        if let Some(rayinit) = find(RAYINIT, &args.scene_dir) {
             program.load_file(&rayinit)?;
         }
         if let Some(f) = &file {

@@ -358,6 +358,9 @@ fn coloured(material: &Material, color_rgb: DVec3) -> Material {
         match &mut m {
             Material::Normal(n) => n.color_rgb *= color_rgb,
             Material::Glass(g) => g.pattern_rgb *= color_rgb,
+            // source.c m_light: the pattern scales the emitted radiance (an IES
+            // distribution from ies2rad, say).
+            Material::Emitter(e) => e.radiance_w_sr_m2 *= color_rgb,
             _ => {}
         }
     }
