@@ -196,3 +196,102 @@ fn a_mirror_seen_from_behind_is_black() {
     );
     assert!(back < 1e-3 * unit, "back: {back} lux, should be black");
 }
+
+/// A patterned mirror relays the sun with its colour times the pattern where the relayed ray
+/// meets it (m_mirror.c): the same room at `-ab 0` with the mirror under a `colorfunc` that
+/// varies along both axes, five ceiling sensors whose mirror images of the sun fall on
+/// different parts of it. Each within 0.5 % of the closed form L Ω ρ(q) cos 30° (ρ(q) the
+/// colour times the pattern at the point q the sensor sees the sun in) and within 1 % of
+/// rtrace `-ab 0`.
+#[test]
+fn a_patterned_mirror_relays_the_sun_with_its_pattern() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("mirror.cal"),
+        "mr = 0.5 + 0.5 * (Px - 1.5);\nmg = 1 - 0.6 * (Py - 1);\nmb = 0.7;\n",
+    )
+    .unwrap();
+    let text = scene_text().replace(
+        "void mirror silver 0 0 3",
+        "void colorfunc tint 4 mr mg mb mirror.cal\n0\n0\ntint mirror silver 0 0 3",
+    );
+    let rad = dir.path().join("room.rad");
+    std::fs::write(&rad, &text).unwrap();
+    // Mirror points with y from 1.1 to 1.5: further north the wall above the opening
+    // shades the relayed sun.
+    let sensors_text = "2 3.2 2.99 0 0 -1\n1.7 3.2 2.99 0 0 -1\n2.3 3.0 2.99 0 0 -1\n\
+                        1.6 2.85 2.99 0 0 -1\n2.4 3.1 2.99 0 0 -1\n";
+    let pts = dir.path().join("s.pts");
+    std::fs::write(&pts, sensors_text).unwrap();
+    let scene = scene::load_files_with(
+        &[&rad],
+        &scene::LoadOptions {
+            working_directory: Some(dir.path().to_path_buf()),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let world = World::new(&scene).unwrap();
+    let sensors = scene::load_sensors(&pts).unwrap();
+    let settings = Settings {
+        ambient_bounces: 0,
+        samples_per_sensor: 4096,
+        seed: 5,
+        ..Settings::default()
+    };
+    let ours = engine::illuminance(&world, &sensors, &settings, &|_, _| {}).unwrap();
+    let half = (SUN_ANGLE_DEG / 2.0).to_radians();
+    let omega = 2.0 * std::f64::consts::PI * (1.0 - half.cos());
+    // Where each sensor sees the sun: down its mirrored direction to the floor.
+    let s = sun_direction();
+    let mirrored = DVec3::new(s.x, s.y, -s.z);
+    let rtrace = radiance_or_skip().map(|(bin, lib)| {
+        let mut oconv = tool(&bin, &lib, "oconv");
+        oconv.current_dir(dir.path()).arg("room.rad");
+        let oct = dir.path().join("room.oct");
+        std::fs::write(&oct, check_output(oconv, None)).unwrap();
+        let mut c = tool(&bin, &lib, "rtrace");
+        c.current_dir(dir.path())
+            .args(["-h", "-I", "-ab", "0"])
+            .arg(&oct);
+        let out = String::from_utf8(check_output(c, Some(sensors_text.as_bytes()))).unwrap();
+        out.lines().map(lux_of_line).collect::<Vec<f64>>()
+    });
+    let mut values = Vec::new();
+    for (k, (sensor, result)) in sensors.iter().zip(&ours).enumerate() {
+        let p = sensor.position_m;
+        let q = p + mirrored * (p.z - 0.001) / -mirrored.z;
+        let pattern = DVec3::new(0.5 + 0.5 * (q.x - 1.5), 1.0 - 0.6 * (q.y - 1.0), 0.7);
+        let rho = MIRROR_REFLECTANCE * pattern;
+        let expect = 179.0
+            * SUN_RADIANCE
+            * omega
+            * (0.265 * rho.x + 0.670 * rho.y + 0.065 * rho.z)
+            * 30f64.to_radians().cos();
+        let lux = result.illuminance_lux;
+        println!(
+            "S{k}: ours {lux:.1} lux, closed form {expect:.1} (mirror point {:.2}, {:.2}){}",
+            q.x,
+            q.y,
+            rtrace
+                .as_ref()
+                .map(|r| format!(", rtrace {:.1}", r[k]))
+                .unwrap_or_default()
+        );
+        assert!((lux / expect - 1.0).abs() < 5e-3, "S{k}: {lux} vs {expect}");
+        if let Some(r) = &rtrace {
+            assert!(
+                (lux / r[k] - 1.0).abs() < 0.01,
+                "S{k}: {lux} vs rtrace {}",
+                r[k]
+            );
+        }
+        values.push(lux);
+    }
+    let spread = values.iter().cloned().fold(f64::MIN, f64::max)
+        / values.iter().cloned().fold(f64::MAX, f64::min);
+    assert!(
+        spread > 1.2,
+        "the pattern must vary over the mirror ({spread})"
+    );
+}

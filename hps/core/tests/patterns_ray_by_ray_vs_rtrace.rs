@@ -419,6 +419,98 @@ fn textured_glass_matches_rtrace() {
     }
 }
 
+/// A `mirror` under a `texfunc` ripple over a floor that glows in stripes (a `colorfunc`
+/// on a `glow`): rays from below meet the mirror's face, m_mirror reflects them about the
+/// perturbed normal (about its own where that would go through it) and they land on the
+/// floor elsewhere than a flat mirror sends them. Everything here is specular and
+/// deterministic, so each ray within 1e-3 of rtrace `-ab 0`; the ripple must move rtrace's
+/// values.
+#[test]
+fn textured_mirror_matches_rtrace() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("ripple.cal"),
+        "dx = 0.08 * sin(2.5 * Px);\ndy = 0.06 * cos(1.7 * Py);\ndz = 0;\nflat = 0;\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("floor.cal"),
+        "fr = 0.5 + 0.4 * sin(3 * Px);\nfg = 0.5 + 0.4 * cos(2.5 * Py);\nfb = 0.5;\n",
+    )
+    .unwrap();
+    let scene = |texture: &str| {
+        format!(
+            "{texture}\
+             ripple mirror silver 0 0 3 0.9 0.8 0.7\n\
+             silver polygon mirror 0 0 12 -2 5 1.5 6 5 1.5 6 -2 1.5 -2 -2 1.5\n\
+             void colorfunc stripes 4 fr fg fb floor.cal\n0\n0\n\
+             stripes glow floor_glow 0 0 4 10 10 10 0\n\
+             floor_glow polygon floor 0 0 12 -1 -1 0 5 -1 0 5 4 0 -1 4 0\n"
+        )
+    };
+    let rays: Vec<Ray> = rays()
+        .into_iter()
+        .map(|r| {
+            Ray::new(
+                DVec3::new(r.origin_m.x, r.origin_m.y, 1.0),
+                DVec3::new(0.0, 0.1, 1.0).normalize(),
+            )
+        })
+        .collect();
+    std::fs::write(
+        dir.path().join("scene.rad"),
+        scene("void texfunc ripple 4 flat flat flat ripple.cal\n0\n0\n"),
+    )
+    .unwrap();
+    let straight = rtrace_along(dir.path(), &rays, &bin, &lib);
+    std::fs::write(
+        dir.path().join("scene.rad"),
+        scene("void texfunc ripple 4 dx dy dz ripple.cal\n0\n0\n"),
+    )
+    .unwrap();
+    let theirs = rtrace_along(dir.path(), &rays, &bin, &lib);
+    let moved = theirs
+        .iter()
+        .zip(&straight)
+        .filter(|(t, s)| (**t - **s).abs().max_element() > 0.05 * s.max_element())
+        .count();
+    assert!(
+        moved > rays.len() / 4,
+        "the texture moved only {moved} rays"
+    );
+    let scene = scene::load_files_with(
+        &[dir.path().join("scene.rad")],
+        &scene::LoadOptions {
+            working_directory: Some(dir.path().to_path_buf()),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let world = World::new(&scene).unwrap();
+    let settings = Settings {
+        ambient_bounces: 0,
+        ..Settings::default()
+    };
+    let mut worst = 0.0f64;
+    for (k, (ray, want)) in rays.iter().zip(&theirs).enumerate() {
+        let got = ray_radiance(&world, *ray, &settings, &mut Rng::for_stream(1, k as u64));
+        let err = (got - *want).abs().max_element() / want.max_element().max(1e-3);
+        worst = worst.max(err);
+        assert!(
+            err < 1e-3,
+            "ray {k} at {:?}: ours {got:?}, rtrace {want:?}",
+            ray.origin_m
+        );
+    }
+    println!(
+        "textured mirror: {} rays, worst {worst:.1e}; the ripple moved {moved}",
+        rays.len()
+    );
+}
+
 /// Our test font (written for these tests, RADIANCE's `.fnt` format) and a three-line text
 /// file: glyphs the font lacks (`?`), spaces, a run of three spaces (an indent for
 /// proportional spacing), a glyph with a hole (`O`) and a narrow one (`.`).

@@ -16,7 +16,7 @@
 //! reflection is followed (RADIANCE's default `-dr 2` also follows mirror-to-mirror).
 
 use super::material::scattering::reflect;
-use super::material::ShadowCrossing;
+use super::material::{HitPoint, Material, ShadowCrossing, VirtualSourceReflectance};
 use super::ray::Ray;
 use super::rng::Rng;
 use super::sampling::sample_cone;
@@ -112,9 +112,40 @@ pub fn mirrored_lights(
             else {
                 continue;
             };
+            let reflectance = match reflectance {
+                VirtualSourceReflectance::Uniform(rgb) => rgb,
+                VirtualSourceReflectance::AtEachPoint => {
+                    let distance_m = (q - position_m).length();
+                    reflectance_at(world, mirror, (q, distance_m), virtual_dir, n, rng)
+                }
+            };
             let t_out = world.source_transmission(q, Some(mirror), l);
             total += c * reflectance * source.radiance(l) * t_in * t_out;
         }
     }
     total
+}
+
+/// A patterned mirror's reflectance where the relayed ray along unit `dir` meets it at `q`,
+/// `distance_m` from where it left
+/// (m_mirror.c: its colour times the patterns there; textures do not turn a relayed ray).
+fn reflectance_at(
+    world: &World,
+    mirror: u32,
+    (q, distance_m): (DVec3, f64),
+    dir: DVec3,
+    normal: DVec3,
+    rng: &mut Rng,
+) -> DVec3 {
+    let hit = HitPoint {
+        point_m: q,
+        direction: dir,
+        normal,
+        distance_m,
+        flat: true,
+    };
+    match world.material(mirror).at_hit(&hit, rng).0.as_ref() {
+        Material::Mirror(m) => m.reflectance_rgb,
+        _ => DVec3::ZERO,
+    }
 }

@@ -5,7 +5,9 @@ use super::bvh::Bvh;
 use super::error::EngineError;
 use super::function::build::{self, resolve};
 use super::function::loader::FunctionLoader;
-use super::material::{Emitter, HitPoint, Material, ShadowCrossing, SourceCrossing};
+use super::material::{
+    Emitter, HitPoint, Material, ShadowCrossing, SourceCrossing, VirtualSourceReflectance,
+};
 use super::portal::Portals;
 use super::ray::{Ray, FTINY};
 use super::sampling::basis;
@@ -63,7 +65,7 @@ pub struct World {
     portals: Portals,
     /// Plane mirrors (primitive, normal, reflectance), for virtual sources: listed once, not
     /// found by a scan of every primitive at every vertex.
-    mirrors: Vec<(u32, DVec3, DVec3)>,
+    mirrors: Vec<(u32, DVec3, VirtualSourceReflectance)>,
     /// Some material treats shadow rays towards light sources apart (`illum`, `dielectric`):
     /// [`World::source_transmission`] then traces them crossing by crossing.
     source_crossings: bool,
@@ -352,7 +354,7 @@ impl World {
 
     /// Plane mirrors, the primitives that make virtual sources: (primitive, normal,
     /// reflectance).
-    pub fn mirrors(&self) -> &[(u32, DVec3, DVec3)] {
+    pub fn mirrors(&self) -> &[(u32, DVec3, VirtualSourceReflectance)] {
         &self.mirrors
     }
 

@@ -55,14 +55,16 @@ pub fn material_of(
         })
     };
     match &base {
-        VaryingBase::Plain(Material::Normal(_) | Material::Glass(_) | Material::Emitter(_))
+        VaryingBase::Plain(
+            Material::Normal(_) | Material::Glass(_) | Material::Emitter(_) | Material::Mirror(_),
+        )
         | VaryingBase::Brtd(_)
         | VaryingBase::Function(_)
         | VaryingBase::Anisotropic(_) => {}
         _ if modulations.is_empty() => {}
         VaryingBase::Mix { .. } => return refuse("patterns above a mixfunc are not traced yet"),
         VaryingBase::Plain(_) => return refuse(
-            "patterns are traced on plastic, metal, trans, glass, light, glow and BRTDfunc only",
+            "patterns are traced on plastic, metal, trans, glass, mirror, light, glow and BRTDfunc only",
         ),
     }
     Ok(Material::Varying(Arc::new(VaryingMaterial {

@@ -128,6 +128,10 @@ impl HitDependent for VaryingMaterial {
                 Material::Glass(g) if m.perturbation != DVec3::ZERO => {
                     Material::Glass(g.textured(m.perturbation, hit.direction, hit.normal))
                 }
+                Material::Mirror(mut mirror) if normal != hit.normal => {
+                    mirror.surface_normal = Some(hit.normal);
+                    Material::Mirror(mirror)
+                }
                 plain => plain,
             },
             VaryingBase::Brtd(b) => Material::Shaded(Box::new(Shading::Brtd(Box::new(b.shade(
@@ -175,6 +179,10 @@ impl HitDependent for VaryingMaterial {
             }
         };
         (material, normal)
+    }
+
+    fn is_mirror(&self) -> bool {
+        matches!(self.base, VaryingBase::Plain(Material::Mirror(_)))
     }
 
     /// What a shadow ray does here: for a `mixfunc`, the coefficient's blend of what each
@@ -358,6 +366,7 @@ fn coloured(material: &Material, color_rgb: DVec3) -> Material {
         match &mut m {
             Material::Normal(n) => n.color_rgb *= color_rgb,
             Material::Glass(g) => g.pattern_rgb *= color_rgb,
+            Material::Mirror(mirror) => mirror.reflectance_rgb *= color_rgb,
             // source.c m_light: the pattern scales the emitted radiance (an IES
             // distribution from ies2rad, say).
             Material::Emitter(e) => e.radiance_w_sr_m2 *= color_rgb,

@@ -3,11 +3,15 @@
 //! ([`crate::engine::virtual_sources`]).
 
 use super::scattering::{reflect, Scatter};
+use crate::engine::ray::FTINY;
 use glam::DVec3;
 
 #[derive(Clone, Debug)]
 pub struct MirrorMaterial {
     pub reflectance_rgb: DVec3,
+    /// Under a texture, the surface's own normal: m_mirror reflects about the perturbed
+    /// normal, and about this one where that reflection would go through the mirror.
+    pub surface_normal: Option<DVec3>,
 }
 
 impl MirrorMaterial {
@@ -19,8 +23,15 @@ impl MirrorMaterial {
 
     /// The mirror reflection of `d`, weighted by the reflectance.
     pub fn sample(&self, d: DVec3, normal: DVec3) -> Scatter {
+        let mut direction = reflect(d, normal);
+        if let Some(own) = self.surface_normal {
+            let front = if d.dot(own) < 0.0 { own } else { -own };
+            if direction.dot(front) <= FTINY {
+                direction = reflect(d, own);
+            }
+        }
         Scatter::Specular {
-            direction: reflect(d, normal),
+            direction,
             weight: self.reflectance_rgb,
         }
     }

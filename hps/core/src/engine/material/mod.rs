@@ -84,6 +84,14 @@ pub struct HitPoint {
     pub flat: bool,
 }
 
+/// A mirror's reflectance for the sun it relays (m_mirror.c: the colour times its patterns).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum VirtualSourceReflectance {
+    Uniform(DVec3),
+    /// Patterned: the material is resolved where the relayed ray meets it.
+    AtEachPoint,
+}
+
 /// A material whose optics are functions of the hit (`engine::function`: patterns,
 /// textures, `BRTDfunc`, `mixfunc`).
 pub trait HitDependent: std::fmt::Debug + Send + Sync {
@@ -91,6 +99,10 @@ pub trait HitDependent: std::fmt::Debug + Send + Sync {
     fn resolve(&self, hit: &HitPoint, rng: &mut Rng) -> (Material, DVec3);
     /// What a shadow ray does at `hit`.
     fn shadow_crossing(&self, hit: &HitPoint) -> ShadowCrossing;
+    /// A `mirror` under patterns or textures: a plane of it relays the sun.
+    fn is_mirror(&self) -> bool {
+        false
+    }
 }
 
 /// What happens to a ray at a hit ([`Material::interact`]).
@@ -416,9 +428,10 @@ impl Material {
 
     /// The reflectance with which a plane surface of this material mirrors distant sources
     /// into virtual sources (RADIANCE virtuals.c), if it does.
-    pub fn virtual_source_reflectance(&self) -> Option<DVec3> {
+    pub fn virtual_source_reflectance(&self) -> Option<VirtualSourceReflectance> {
         match self {
-            Material::Mirror(m) => Some(m.reflectance_rgb),
+            Material::Mirror(m) => Some(VirtualSourceReflectance::Uniform(m.reflectance_rgb)),
+            Material::Varying(v) if v.is_mirror() => Some(VirtualSourceReflectance::AtEachPoint),
             _ => None,
         }
     }
@@ -498,6 +511,7 @@ impl Material {
                 }
                 Material::Mirror(MirrorMaterial {
                     reflectance_rgb: mirror.reflectance_rgb,
+                    surface_normal: None,
                 })
             }
             ModifierKind::Light(l) => Material::Emitter(Emitter {
