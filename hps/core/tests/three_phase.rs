@@ -165,7 +165,7 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
     let v_bytes = case.run(
         "rfluxmtx",
         &[
-            "-I+", "-ab", "4", "-ad", "65536", "-lw", "1.5e-5", "-faf", "-y", "6", "-", "window.rad",
+            "-I+", "-ab", "4", "-ad", "262144", "-lw", "3e-6", "-faf", "-y", "6", "-", "window.rad",
             "-i", oct,
         ],
         Some(&case.path("sensors.pts")),
@@ -203,20 +203,25 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
     assert!(dist < 0.05, "V patches: {dist}");
 
     // D: every Klems patch, 2 bounces outside (the building), ground + Tregenza columns.
+    // -ad 128: at -ad 512 rfluxmtx's second-bounce rays fall under -lw 1e-4 and its rows
+    // that see the building read up to 2.4 % low (one run).
     let start = std::time::Instant::now();
     let d_bytes = case.run(
         "rfluxmtx",
         &[
-            "-ff", "-ab", "2", "-ad", "512", "-lw", "1e-4", "-c", "8192", "window.rad",
+            "-ff", "-ab", "2", "-ad", "128", "-lw", "1e-4", "-c", "8192", "window.rad",
             "skyglow.rad", "-i", oct,
         ],
         None,
     );
     let d_ref = RadianceMatrix::parse("rfluxmtx D", &d_bytes).unwrap();
     let rflux_d_s = start.elapsed().as_secs_f64();
+    // 65536 rays a patch: a row that sees the ground below the horizon is a binary choice
+    // per ray (ground fraction p ~ 0.3: σ = √(p(1−p)/n), 1.2 % of the row at 8192 rays,
+    // 0.4 % here); rfluxmtx stratifies its sender samples and is steadier at 8192.
     let settings = Settings {
         ambient_bounces: 2,
-        samples_per_sensor: common::compare::our_samples_here(8192),
+        samples_per_sensor: common::compare::our_samples_here(65_536),
         seed: 12,
         ..Default::default()
     };

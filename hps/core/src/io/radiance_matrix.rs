@@ -183,7 +183,8 @@ impl RadianceMatrix {
 
     /// Parses the bytes of a matrix file; `file` names it in errors. `NROWS` may be missing
     /// (the rows are then what the data holds, as RADIANCE reads a stream); `NCOMP` defaults
-    /// to 3 and `BYTEORDER` to this machine's, as in RADIANCE's `cm_load`.
+    /// to 3 and the byte order (`BYTEORDER=` or rcontrib's `BigEndian=`) to this machine's, as
+    /// in RADIANCE's `cm_load`.
     pub fn parse(file: &str, bytes: &[u8]) -> Result<Self, MatrixError> {
         let err = |field: &str, message: String| MatrixError::new(file, field, message);
         let end = find_header_end(bytes).ok_or_else(|| {
@@ -232,6 +233,19 @@ impl RadianceMatrix {
                             return Err(err(
                                 "BYTEORDER",
                                 format!("'{value}' (expected BigEndian or LittleEndian)"),
+                            ))
+                        }
+                    }
+                }
+                // What rcontrib and rfluxmtx write instead of BYTEORDER.
+                "BigEndian" => {
+                    big_endian = match value {
+                        "1" => true,
+                        "0" => false,
+                        _ => {
+                            return Err(err(
+                                "BigEndian",
+                                format!("'{value}' (expected 0 or 1)"),
                             ))
                         }
                     }
