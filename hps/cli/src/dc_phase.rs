@@ -114,3 +114,88 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
     }
     Ok(())
 }
+
+/// `skylux bench states`: the per-capture cost of a window with several states, with
+/// matrices of the real sizes (400 sensors, Klems full, Reinhart MF4 + ground, 5 states) and
+/// arbitrary positive values (the time does not depend on them).
+pub fn bench(json: bool, repeat: usize) -> anyhow::Result<()> {
+    use skylux_hps::engine::phase::WindowStates;
+    use skylux_hps::timing::median_ms;
+    const SENSORS: usize = 400;
+    const PATCHES: usize = 145;
+    const STATES: usize = 5;
+    let mf = 4;
+    let bins = 1 + skylux_hps::sky::SkyPatches::reinhart(mf).len();
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut matrix = |rows: usize, cols: usize| {
+        RadianceMatrix::from_grey(rows, cols, (0..rows * cols).map(|_| next()).collect())
+            .context("matrix size")
+    };
+    let v = matrix(SENSORS, PATCHES)?;
+    let d = matrix(PATCHES, bins)?;
+    let t: Vec<RadianceMatrix> = (0..STATES)
+        .map(|_| matrix(PATCHES, PATCHES))
+        .collect::<anyhow::Result<_>>()?;
+    let sky: Vec<f64> = (0..bins).map(|k| 1.0 + (k % 7) as f64).collect();
+    let precompute = std::time::Instant::now();
+    let states = WindowStates::new(&v, &t, &d)?;
+    let precompute_ms = precompute.elapsed().as_secs_f64() * 1e3;
+    let mut out = vec![0.0; SENSORS];
+    let mut window = states.window_radiance(&sky)?;
+    let mut failure = None;
+    let d_ms = median_ms(repeat, || match states.window_radiance(&sky) {
+        Ok(w) => window = w,
+        Err(e) => failure = Some(e),
+    });
+    let switch_ms = median_ms(repeat, || {
+        if let Err(e) = states.apply_state(STATES - 1, &window, &mut out) {
+            failure = Some(e);
+        }
+    });
+    let mut checksum = 0.0;
+    let all_ms = median_ms(repeat, || {
+        for k in 0..STATES {
+            if let Err(e) = states.apply_state(k, &window, &mut out) {
+                failure = Some(e);
+            }
+            checksum += out[0];
+        }
+    });
+    if let Some(e) = failure {
+        return Err(e.into());
+    }
+    checksum += window.iter().sum::<f64>();
+    if json {
+        println!(
+            "{}",
+            serde_json::json!({
+                "sensors": SENSORS,
+                "klems_patches": PATCHES,
+                "sky_bins": bins,
+                "states": STATES,
+                "precompute_ms": precompute_ms,
+                "window_radiance_ms": d_ms,
+                "state_switch_ms": switch_ms,
+                "all_states_ms": all_ms,
+                "capture_all_states_ms": d_ms + all_ms,
+                "budget_ms": 5.0,
+                "checksum": checksum,
+            })
+        );
+    } else {
+        println!(
+            "window states, {SENSORS} sensors x {PATCHES} Klems patches, MF{mf} sky ({bins} bins), \
+             one core: D s {d_ms:.3} ms per capture, one state switch {switch_ms:.3} ms, all \
+             {STATES} states {all_ms:.3} ms (capture with every state {:.3} ms; budget 5 ms); \
+             precomputing V T_k {precompute_ms:.1} ms once",
+            d_ms + all_ms
+        );
+    }
+    Ok(())
+}

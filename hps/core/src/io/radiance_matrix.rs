@@ -292,6 +292,9 @@ impl RadianceMatrix {
                 ))
             }
         };
+        if rows == 0 {
+            return Err(err("NROWS", "no rows".into()));
+        }
         if rows.checked_mul(per_row) != Some(values.len()) {
             return Err(err(
                 "data",
@@ -433,11 +436,12 @@ mod tests {
 
     #[test]
     fn bad_files_name_the_field() {
-        let cases: [(&[u8], &str); 7] = [
+        let cases: [(&[u8], &str); 8] = [
             (b"#?RADIANCE\nNROWS=1\n", "header"),
             (b"NROWS=1\nNCOLS=x\n\n1", "NCOLS"),
             (b"NROWS=1\n\n1", "NCOLS"),
             (b"NROWS=1\nNCOLS=2\nNCOMP=1\n\n1 2 3", "data"),
+            (b"NROWS=0\nNCOLS=4000000000\nNCOMP=1\n\n", "NROWS"),
             (b"NCOLS=1\nNCOMP=1\nFORMAT=rgbe\n\n", "FORMAT"),
             (b"NCOLS=1\nNCOMP=1\n\n1\n2 x\n", "data line 5"),
             (
