@@ -9,17 +9,21 @@
 //!   leave through the window by.
 //! - [`daylight`]: D, paths from the window out through the outside geometry to the sky.
 //! - [`three_phase`]: V T D s, and a window state switch (one product per state).
+//! - [`five_phase`]: the sun's direct part replaced by the sun at its actual direction
+//!   through the window at full resolution.
 //!
 //! Matrices are [`RadianceMatrix`] values, written in RADIANCE's matrix format so that
 //! `dctimestep` and `rmtxop` read them, and read from theirs.
 
 pub mod daylight;
+pub mod five_phase;
 pub mod three_phase;
 pub mod view;
 pub mod window;
 
 pub use crate::io::radiance_matrix::RadianceMatrix;
 pub use daylight::daylight_matrix;
+pub use five_phase::{five_phase, sun_sky_vector, PhaseMatrices};
 pub use three_phase::{three_phase, WindowStates};
 pub use view::view_matrix;
 pub use window::{KlemsWindow, WindowError};
