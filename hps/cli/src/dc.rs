@@ -58,6 +58,10 @@ pub struct DcArgs {
     /// Diffuse bounces outside for D.
     #[arg(long, default_value_t = 2)]
     pub d_ab: u32,
+    /// Also the five-phase's direct matrices: vd.mtx (V with -ab 1, the sensors' direct view
+    /// of the window) and dd.mtx (D with -ab 0, the window's direct view of the sky).
+    #[arg(long, requires = "three_phase")]
+    pub direct: bool,
     /// A sky vector (RADIANCE matrix: ground, then the MF --mf sky patches, radiance;
     /// gendaymtx's output) to multiply.
     #[arg(long)]

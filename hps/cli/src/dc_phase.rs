@@ -83,6 +83,41 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
             args.mf, args.d_samples, args.d_ab
         ),
     )?;
+    if args.direct {
+        let v_direct = view_matrix(
+            &room,
+            &sensors,
+            &window,
+            &Settings {
+                ambient_bounces: 1,
+                ..settings.clone()
+            },
+            &|_, _| {},
+        )?;
+        let d_direct = daylight_matrix(
+            &outside,
+            &window,
+            args.mf,
+            &Settings {
+                ambient_bounces: 0,
+                ..d_settings.clone()
+            },
+            &|_, _| {},
+        )?;
+        write(
+            &v_direct,
+            "vd.mtx",
+            format!("skylux dc --three-phase --direct: V_d (-ab 1), {} paths", args.ad),
+        )?;
+        write(
+            &d_direct,
+            "dd.mtx",
+            format!(
+                "skylux dc --three-phase --direct: D_d (-ab 0), {} rays per patch",
+                args.d_samples
+            ),
+        )?;
+    }
     println!(
         "V {}x{}, T {}x{}, D {}x{} -> {}",
         v.rows,

@@ -82,3 +82,35 @@ pub fn five_phase(
         .collect();
     Ok((five, (0..m.v.rows).map(|s| three.get(s, 0, 0)).collect()))
 }
+
+/// The sky vector of a measured sky (the image-based five-phase): patch luminances in cd/m²
+/// (Reinhart patches, `SkyPatches::aggregate` of the luminance map with the sun's disk
+/// removed) and the ground's, as RADIANCE radiance (luminance / 179 lm/W), ground first as D's
+/// columns. The sun goes in separately: its direction and its direct-normal illuminance
+/// from the extracted disk, divided by 179 for [`five_phase`]'s `dni_w_m2`.
+pub fn sky_vector_from_luminance(patch_luminance_cd_m2: &[f64], ground_cd_m2: f64) -> Vec<f64> {
+    std::iter::once(ground_cd_m2)
+        .chain(patch_luminance_cd_m2.iter().copied())
+        .map(|l| l / crate::engine::WHITE_EFFICACY_LM_PER_W)
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_sun_patch_delivers_the_direct_normal_irradiance() {
+        let sun = DVec3::new(0.3, -0.8, 0.5).normalize();
+        let s = sun_sky_vector(2, sun, 500.0).unwrap();
+        let patches = SkyPatches::reinhart(2);
+        let p = patches.patch_of(sun).unwrap();
+        assert!((s[1 + p] * patches.solid_angle_sr(p) - 500.0).abs() < 1e-9);
+        assert_eq!(s.iter().filter(|&&v| v > 0.0).count(), 1);
+        assert!(sun_sky_vector(2, -sun, 500.0).is_none());
+        let v = sky_vector_from_luminance(&[179.0, 358.0], 17.9);
+        for (a, b) in v.iter().zip([0.1, 1.0, 2.0]) {
+            assert!((a - b).abs() < 1e-12, "{v:?}");
+        }
+    }
+}

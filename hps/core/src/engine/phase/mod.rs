@@ -23,7 +23,7 @@ pub mod window;
 
 pub use crate::io::radiance_matrix::RadianceMatrix;
 pub use daylight::daylight_matrix;
-pub use five_phase::{five_phase, sun_sky_vector, PhaseMatrices};
+pub use five_phase::{five_phase, sky_vector_from_luminance, sun_sky_vector, PhaseMatrices};
 pub use three_phase::{three_phase, WindowStates};
 pub use view::view_matrix;
 pub use window::{KlemsWindow, WindowError};
