@@ -47,7 +47,7 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
     let d_settings = Settings {
         ambient_bounces: args.d_ab,
         samples_per_sensor: args.d_samples,
-        ..settings.clone()
+        ..settings
     };
     let d = daylight_matrix(&outside, &window, args.mf, &d_settings, &progress)?;
     bar.finish_and_clear();
@@ -90,7 +90,7 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
             &window,
             &Settings {
                 ambient_bounces: 1,
-                ..settings.clone()
+                ..settings
             },
             &|_, _| {},
         )?;
@@ -100,14 +100,17 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
             args.mf,
             &Settings {
                 ambient_bounces: 0,
-                ..d_settings.clone()
+                ..d_settings
             },
             &|_, _| {},
         )?;
         write(
             &v_direct,
             "vd.mtx",
-            format!("skylux dc --three-phase --direct: V_d (-ab 1), {} paths", args.ad),
+            format!(
+                "skylux dc --three-phase --direct: V_d (-ab 1), {} paths",
+                args.ad
+            ),
         )?;
         write(
             &d_direct,
@@ -136,7 +139,10 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
             .write(
                 &path,
                 MatrixFormat::Ascii,
-                &[format!("skylux dc --three-phase: V T D {}", sky_path.display())],
+                &[format!(
+                    "skylux dc --three-phase: V T D {}",
+                    sky_path.display()
+                )],
             )
             .with_context(|| format!("writing {}", path.display()))?;
         let lux = result.brightness();

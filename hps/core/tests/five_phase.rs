@@ -20,7 +20,9 @@ use common::radiance::radiance_or_skip;
 use glam::DVec3;
 use skylux_hps::bsdf::{Band, KlemsTransmission};
 use skylux_hps::engine::material::bright;
-use skylux_hps::engine::phase::{daylight_matrix, five_phase, view_matrix, KlemsWindow, PhaseMatrices};
+use skylux_hps::engine::phase::{
+    daylight_matrix, five_phase, view_matrix, KlemsWindow, PhaseMatrices,
+};
 use skylux_hps::engine::sky::DistantKind;
 use skylux_hps::engine::{self, Settings, World};
 use skylux_hps::scene;
@@ -43,13 +45,41 @@ fn room(walls: f64, floor: f64, ceiling: f64) -> String {
          void plastic floor 0 0 5 {floor} {floor} {floor} 0 0\n\
          void plastic ceiling 0 0 5 {ceiling} {ceiling} {ceiling} 0 0\n"
     );
-    s += &quad("floor", "floor", [[0., 0., 0.], [w, 0., 0.], [w, d, 0.], [0., d, 0.]]);
-    s += &quad("ceiling", "ceiling", [[0., 0., h], [0., d, h], [w, d, h], [w, 0., h]]);
-    s += &quad("wall", "east", [[w, 0., 0.], [w, 0., h], [w, d, h], [w, d, 0.]]);
-    s += &quad("wall", "west", [[0., 0., 0.], [0., d, 0.], [0., d, h], [0., 0., h]]);
-    s += &quad("wall", "north", [[0., d, 0.], [w, d, 0.], [w, d, h], [0., d, h]]);
-    s += &quad("wall", "sill", [[0., 0., 0.], [0., 0., lo], [w, 0., lo], [w, 0., 0.]]);
-    s += &quad("wall", "head", [[0., 0., hi], [0., 0., h], [w, 0., h], [w, 0., hi]]);
+    s += &quad(
+        "floor",
+        "floor",
+        [[0., 0., 0.], [w, 0., 0.], [w, d, 0.], [0., d, 0.]],
+    );
+    s += &quad(
+        "ceiling",
+        "ceiling",
+        [[0., 0., h], [0., d, h], [w, d, h], [w, 0., h]],
+    );
+    s += &quad(
+        "wall",
+        "east",
+        [[w, 0., 0.], [w, 0., h], [w, d, h], [w, d, 0.]],
+    );
+    s += &quad(
+        "wall",
+        "west",
+        [[0., 0., 0.], [0., d, 0.], [0., d, h], [0., 0., h]],
+    );
+    s += &quad(
+        "wall",
+        "north",
+        [[0., d, 0.], [w, d, 0.], [w, d, h], [0., d, h]],
+    );
+    s += &quad(
+        "wall",
+        "sill",
+        [[0., 0., 0.], [0., 0., lo], [w, 0., lo], [w, 0., 0.]],
+    );
+    s += &quad(
+        "wall",
+        "head",
+        [[0., 0., hi], [0., 0., h], [w, 0., h], [w, 0., hi]],
+    );
     s
 }
 
@@ -146,7 +176,11 @@ fn five_phase_sensors_in_the_beam_match_the_detailed_geometry() {
             let phi = std::f64::consts::TAU * (j as f64 + 0.5) / (2 * n) as f64;
             let r = (1.0 - z * z).sqrt();
             let d = DVec3::new(r * phi.cos(), r * phi.sin(), z);
-            let bin = if z < 0.0 { Some(0) } else { patches.patch_of(d).map(|p| p + 1) };
+            let bin = if z < 0.0 {
+                Some(0)
+            } else {
+                patches.patch_of(d).map(|p| p + 1)
+            };
             if let Some(b) = bin {
                 sum[b] += bright(sky_world.escape_radiance(d));
                 count[b] += 1.0;
@@ -161,7 +195,8 @@ fn five_phase_sensors_in_the_beam_match_the_detailed_geometry() {
         Band::Visible,
     )
     .unwrap();
-    let window = KlemsWindow::load(&path("window.rad"), DVec3::Z, t.incident_basis.clone()).unwrap();
+    let window =
+        KlemsWindow::load(&path("window.rad"), DVec3::Z, t.incident_basis.clone()).unwrap();
     let room_world = world(&[&path("room.rad")]);
     let settings = |ab: u32, n: u32, seed: u64| Settings {
         ambient_bounces: ab,
@@ -169,9 +204,22 @@ fn five_phase_sensors_in_the_beam_match_the_detailed_geometry() {
         seed,
         ..Default::default()
     };
-    let v = view_matrix(&room_world, &sensors, &window, &settings(6, 65_536, 2), &|_, _| {}).unwrap();
-    let v_direct =
-        view_matrix(&room_world, &sensors, &window, &settings(1, 65_536, 3), &|_, _| {}).unwrap();
+    let v = view_matrix(
+        &room_world,
+        &sensors,
+        &window,
+        &settings(6, 65_536, 2),
+        &|_, _| {},
+    )
+    .unwrap();
+    let v_direct = view_matrix(
+        &room_world,
+        &sensors,
+        &window,
+        &settings(1, 65_536, 3),
+        &|_, _| {},
+    )
+    .unwrap();
     let d = daylight_matrix(&room_world, &window, 1, &settings(2, 16_384, 4), &|_, _| {}).unwrap();
     let d_direct =
         daylight_matrix(&room_world, &window, 1, &settings(0, 16_384, 5), &|_, _| {}).unwrap();
@@ -193,7 +241,10 @@ fn five_phase_sensors_in_the_beam_match_the_detailed_geometry() {
     let (five, three) = five_phase(&m, &sky, 1, sun_direction, dni_w_m2, &c_ds).unwrap();
 
     let mean = |values: &[f64], g: usize| {
-        values[g * PER_GROUP..(g + 1) * PER_GROUP].iter().sum::<f64>() / PER_GROUP as f64
+        values[g * PER_GROUP..(g + 1) * PER_GROUP]
+            .iter()
+            .sum::<f64>()
+            / PER_GROUP as f64
     };
     let reference_lux: Vec<f64> = reference.iter().map(|s| s.illuminance_lux).collect();
     let five_lux: Vec<f64> = five.iter().map(|e| 179.0 * e).collect();

@@ -165,8 +165,20 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
     let v_bytes = case.run(
         "rfluxmtx",
         &[
-            "-I+", "-ab", "4", "-ad", "262144", "-lw", "3e-6", "-faf", "-y", "6", "-", "window.rad",
-            "-i", oct,
+            "-I+",
+            "-ab",
+            "4",
+            "-ad",
+            "262144",
+            "-lw",
+            "3e-6",
+            "-faf",
+            "-y",
+            "6",
+            "-",
+            "window.rad",
+            "-i",
+            oct,
         ],
         Some(&case.path("sensors.pts")),
     );
@@ -193,7 +205,11 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
     let (ours, theirs) = (v.row_sums(0), v_ref.row_sums(0));
     for (s, (a, b)) in ours.iter().zip(&theirs).enumerate() {
         let rel = a / b - 1.0;
-        println!("V row S{}: ours {a:.5}, rfluxmtx {b:.5} ({:+.2} %)", s + 1, 100.0 * rel);
+        println!(
+            "V row S{}: ours {a:.5}, rfluxmtx {b:.5} ({:+.2} %)",
+            s + 1,
+            100.0 * rel
+        );
         assert!(rel.abs() < 0.02, "V row {s}: {rel}");
     }
     // The patch-wise distribution: a mirrored or rotated frame moves the window's light
@@ -209,8 +225,19 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
     let d_bytes = case.run(
         "rfluxmtx",
         &[
-            "-ff", "-ab", "2", "-ad", "128", "-lw", "1e-4", "-c", "8192", "window.rad",
-            "skyglow.rad", "-i", oct,
+            "-ff",
+            "-ab",
+            "2",
+            "-ad",
+            "128",
+            "-lw",
+            "1e-4",
+            "-c",
+            "8192",
+            "window.rad",
+            "skyglow.rad",
+            "-i",
+            oct,
         ],
         None,
     );
@@ -295,11 +322,17 @@ fn dctimestep_on_our_matrices_equals_our_product() {
         ..Default::default()
     };
     let window = &case.window;
-    let v = view_matrix(&case.world(&["room.rad"]), &case.sensors, window, &settings, &|_, _| {})
-        .unwrap();
+    let v = view_matrix(
+        &case.world(&["room.rad"]),
+        &case.sensors,
+        window,
+        &settings,
+        &|_, _| {},
+    )
+    .unwrap();
     let d_settings = Settings {
         samples_per_sensor: 256,
-        ..settings.clone()
+        ..settings
     };
     let d = daylight_matrix(
         &case.world(&["room.rad", "outside.rad"]),
@@ -341,7 +374,10 @@ fn dctimestep_on_our_matrices_equals_our_product() {
     let d = RadianceMatrix::read(&case.path("d.mtx")).unwrap();
     let t = KlemsTransmission::load(&xml, Band::Visible).unwrap();
     let ours = three_phase(&v, &t.matrix, &d, &sky).unwrap();
-    assert_eq!((ours.rows, ours.cols, ours.ncomp), (theirs.rows, theirs.cols, theirs.ncomp));
+    assert_eq!(
+        (ours.rows, ours.cols, ours.ncomp),
+        (theirs.rows, theirs.cols, theirs.ncomp)
+    );
     let mut worst: f64 = 0.0;
     for (a, b) in ours.values.iter().zip(&theirs.values) {
         worst = worst.max((a - b).abs() / b.abs());
@@ -364,7 +400,12 @@ fn three_phase_against_direct_tracing_of_the_bsdf_window() {
         return;
     };
     // CIE overcast, 10 000 lux horizontal (gensky -c -B 55.866).
-    let sky_text = common::compare::sky(&case.bin, &case.lib, "gensky", &["-ang", "45", "0", "-c", "-B", "55.866"]);
+    let sky_text = common::compare::sky(
+        &case.bin,
+        &case.lib,
+        "gensky",
+        &["-ang", "45", "0", "-c", "-B", "55.866"],
+    );
     std::fs::write(case.path("sky.rad"), &sky_text).unwrap();
     std::fs::write(
         case.path("glazing.rad"),
@@ -407,15 +448,21 @@ fn three_phase_against_direct_tracing_of_the_bsdf_window() {
         ..Default::default()
     };
     let window = &case.window;
-    let v = view_matrix(&case.world(&["room.rad"]), &case.sensors, window, &settings, &|_, _| {})
-        .unwrap();
+    let v = view_matrix(
+        &case.world(&["room.rad"]),
+        &case.sensors,
+        window,
+        &settings,
+        &|_, _| {},
+    )
+    .unwrap();
     let d = daylight_matrix(
         &case.world(&["room.rad", "outside.rad"]),
         window,
         1,
         &Settings {
             samples_per_sensor: 4096,
-            ..settings.clone()
+            ..settings
         },
         &|_, _| {},
     )

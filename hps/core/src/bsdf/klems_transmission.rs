@@ -68,8 +68,10 @@ impl KlemsTransmission {
                 )
             })?;
         let klems = KlemsMatrix::from_block(block, raw.structure, &bases, file)?;
-        let (incident_basis, outgoing_basis) =
-            (klems.incident_basis().clone(), klems.outgoing_basis().clone());
+        let (incident_basis, outgoing_basis) = (
+            klems.incident_basis().clone(),
+            klems.outgoing_basis().clone(),
+        );
         let (n_in, n_out) = (incident_basis.len(), outgoing_basis.len());
         let mut values = Vec::with_capacity(n_in * n_out);
         for o in 0..n_out {

@@ -121,7 +121,10 @@ impl RadianceMatrix {
             .chunks_exact(self.ncomp.max(1))
             .map(|c| {
                 if c.len() == 3 {
-                    c.iter().zip(RGB_LUMINANCE_WEIGHTS).map(|(v, w)| v * w).sum()
+                    c.iter()
+                        .zip(RGB_LUMINANCE_WEIGHTS)
+                        .map(|(v, w)| v * w)
+                        .sum()
                 } else {
                     c.iter().sum::<f64>() / c.len() as f64
                 }
@@ -193,8 +196,8 @@ impl RadianceMatrix {
                 "no end of header (an empty line); write the matrix with its header".into(),
             )
         })?;
-        let header = std::str::from_utf8(&bytes[..end])
-            .map_err(|_| err("header", "not text".into()))?;
+        let header =
+            std::str::from_utf8(&bytes[..end]).map_err(|_| err("header", "not text".into()))?;
         let (mut rows, mut cols, mut ncomp) = (None, None, 3usize);
         let mut format = MatrixFormat::Ascii;
         let mut big_endian = cfg!(target_endian = "big");
@@ -242,12 +245,7 @@ impl RadianceMatrix {
                     big_endian = match value {
                         "1" => true,
                         "0" => false,
-                        _ => {
-                            return Err(err(
-                                "BigEndian",
-                                format!("'{value}' (expected 0 or 1)"),
-                            ))
-                        }
+                        _ => return Err(err("BigEndian", format!("'{value}' (expected 0 or 1)"))),
                     }
                 }
                 _ => {}
@@ -268,7 +266,7 @@ impl RadianceMatrix {
             MatrixFormat::Ascii => parse_ascii(file, header, data)?,
             MatrixFormat::Float | MatrixFormat::Double => {
                 let size = if format == MatrixFormat::Float { 4 } else { 8 };
-                if data.len() % size != 0 {
+                if !data.len().is_multiple_of(size) {
                     return Err(err(
                         "data",
                         format!("{} bytes, not whole {} values", data.len(), format.label()),
@@ -281,7 +279,7 @@ impl RadianceMatrix {
         };
         let rows = match rows {
             Some(r) => r,
-            None if values.len() % per_row == 0 => values.len() / per_row,
+            None if values.len().is_multiple_of(per_row) => values.len() / per_row,
             None => {
                 return Err(err(
                     "data",

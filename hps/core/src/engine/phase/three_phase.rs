@@ -28,11 +28,18 @@ pub fn three_phase(
             d.rows, d.cols, d.ncomp, sky.rows, sky.cols, sky.ncomp
         ))
     })?;
-    let tds = t
-        .multiply(&ds)
-        .ok_or_else(|| shapes_error(format!("T {}x{} and D {}x{}", t.rows, t.cols, d.rows, d.cols)))?;
-    v.multiply(&tds)
-        .ok_or_else(|| shapes_error(format!("V {}x{} and T {}x{}", v.rows, v.cols, t.rows, t.cols)))
+    let tds = t.multiply(&ds).ok_or_else(|| {
+        shapes_error(format!(
+            "T {}x{} and D {}x{}",
+            t.rows, t.cols, d.rows, d.cols
+        ))
+    })?;
+    v.multiply(&tds).ok_or_else(|| {
+        shapes_error(format!(
+            "V {}x{} and T {}x{}",
+            v.rows, v.cols, t.rows, t.cols
+        ))
+    })
 }
 
 /// A window's states, precomputed: V T_k per state and the shared D.

@@ -177,7 +177,7 @@ fn crosses_polygon(p: &Polygon, ray: &Ray) -> bool {
         return false;
     }
     let t = (p.vertices_m[0] - ray.origin_m).dot(p.normal) / denominator;
-    if !(t > 0.0) {
+    if t.is_nan() || t <= 0.0 {
         return false;
     }
     let hit = ray.origin_m + t * ray.direction;
