@@ -189,6 +189,12 @@ impl RadianceMatrix {
     /// to 3 and the byte order (`BYTEORDER=` or rcontrib's `BigEndian=`) to this machine's, as
     /// in RADIANCE's `cm_load`.
     pub fn parse(file: &str, bytes: &[u8]) -> Result<Self, MatrixError> {
+        Self::parse_with_header(file, bytes).map(|(m, _)| m)
+    }
+
+    /// [`Self::parse`], also returning the header's lines (a writer's own fields, such as
+    /// `skylux dc`'s `SKYLUX_` lines).
+    pub fn parse_with_header(file: &str, bytes: &[u8]) -> Result<(Self, Vec<String>), MatrixError> {
         let err = |field: &str, message: String| MatrixError::new(file, field, message);
         let end = find_header_end(bytes).ok_or_else(|| {
             err(
@@ -269,7 +275,11 @@ impl RadianceMatrix {
                 if !data.len().is_multiple_of(size) {
                     return Err(err(
                         "data",
-                        format!("{} bytes, not whole {} values", data.len(), format.label()),
+                        format!(
+                            "{} data bytes, not whole {} values",
+                            data.len(),
+                            format.label()
+                        ),
                     ));
                 }
                 data.chunks_exact(size)
@@ -305,60 +315,29 @@ impl RadianceMatrix {
         if let Some(bad) = values.iter().position(|v| !v.is_finite()) {
             return Err(err("data", format!("value {} is not finite", bad + 1)));
         }
-        Ok(RadianceMatrix {
-            rows,
-            cols,
-            ncomp,
-            values,
-        })
+        let lines = header.lines().map(str::to_string).collect();
+        Ok((
+            RadianceMatrix {
+                rows,
+                cols,
+                ncomp,
+                values,
+            },
+            lines,
+        ))
     }
 
     /// The file's bytes: a header (`#?RADIANCE`, the caller's `header` lines, the sizes),
     /// then the values. Binary formats are little-endian and say so.
     pub fn to_bytes(&self, format: MatrixFormat, header: &[String]) -> Vec<u8> {
-        let mut out = String::from("#?RADIANCE\n");
-        for line in header {
-            // A header line may not be empty (that would end the header) nor hold newlines.
-            let line = line.replace('\n', " ");
-            if !line.trim().is_empty() {
-                out.push_str(&line);
-                out.push('\n');
-            }
-        }
-        out.push_str(&format!(
-            "NROWS={}\nNCOLS={}\nNCOMP={}\nFORMAT={}\n",
+        encode(
             self.rows,
             self.cols,
             self.ncomp,
-            format.label()
-        ));
-        if format != MatrixFormat::Ascii {
-            out.push_str("BYTEORDER=LittleEndian\n");
-        }
-        out.push('\n');
-        let mut bytes = out.into_bytes();
-        match format {
-            MatrixFormat::Ascii => {
-                let mut text = String::with_capacity(self.values.len() * 16);
-                for row in self.values.chunks(self.cols * self.ncomp) {
-                    let line: Vec<String> = row.iter().map(|v| format!("{v:.9e}")).collect();
-                    text.push_str(&line.join(" "));
-                    text.push('\n');
-                }
-                bytes.extend_from_slice(text.as_bytes());
-            }
-            MatrixFormat::Float => {
-                for v in &self.values {
-                    bytes.extend_from_slice(&(*v as f32).to_le_bytes());
-                }
-            }
-            MatrixFormat::Double => {
-                for v in &self.values {
-                    bytes.extend_from_slice(&v.to_le_bytes());
-                }
-            }
-        }
-        bytes
+            &self.values,
+            format,
+            header,
+        )
     }
 
     pub fn write(
@@ -369,6 +348,58 @@ impl RadianceMatrix {
     ) -> std::io::Result<()> {
         std::fs::write(path, self.to_bytes(format, header))
     }
+}
+
+/// The bytes of a `rows` × `cols` × `ncomp` matrix of `values` (row-major, components
+/// innermost) with `header` lines: [`RadianceMatrix::to_bytes`] without owning the values.
+pub fn encode(
+    rows: usize,
+    cols: usize,
+    ncomp: usize,
+    values: &[f64],
+    format: MatrixFormat,
+    header: &[String],
+) -> Vec<u8> {
+    let mut out = String::from("#?RADIANCE\n");
+    for line in header {
+        // A header line may not be empty (that would end the header) nor hold newlines.
+        let line = line.replace('\n', " ");
+        if !line.trim().is_empty() {
+            out.push_str(&line);
+            out.push('\n');
+        }
+    }
+    out.push_str(&format!(
+        "NROWS={rows}\nNCOLS={cols}\nNCOMP={ncomp}\nFORMAT={}\n",
+        format.label()
+    ));
+    if format != MatrixFormat::Ascii {
+        out.push_str("BYTEORDER=LittleEndian\n");
+    }
+    out.push('\n');
+    let mut bytes = out.into_bytes();
+    match format {
+        MatrixFormat::Ascii => {
+            let mut text = String::with_capacity(values.len() * 16);
+            for row in values.chunks((cols * ncomp).max(1)) {
+                let line: Vec<String> = row.iter().map(|v| format!("{v:.9e}")).collect();
+                text.push_str(&line.join(" "));
+                text.push('\n');
+            }
+            bytes.extend_from_slice(text.as_bytes());
+        }
+        MatrixFormat::Float => {
+            for v in values {
+                bytes.extend_from_slice(&(*v as f32).to_le_bytes());
+            }
+        }
+        MatrixFormat::Double => {
+            for v in values {
+                bytes.extend_from_slice(&v.to_le_bytes());
+            }
+        }
+    }
+    bytes
 }
 
 /// The offset just past the empty line ending the header.
