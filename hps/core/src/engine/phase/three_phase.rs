@@ -131,3 +131,39 @@ impl WindowStates {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn matrix(rows: usize, cols: usize, seed: u64) -> RadianceMatrix {
+        let values = (0..rows * cols)
+            .map(|k| ((k as u64 * 2_654_435_761 + seed * 97) % 1000) as f64 / 1000.0)
+            .collect();
+        RadianceMatrix::from_grey(rows, cols, values).unwrap()
+    }
+
+    #[test]
+    fn a_state_switch_equals_the_full_product() {
+        let (v, d) = (matrix(7, 5, 1), matrix(5, 9, 2));
+        let states = [matrix(5, 5, 3), matrix(5, 5, 4), matrix(5, 5, 5)];
+        let sky = matrix(9, 1, 6);
+        let w = WindowStates::new(&v, &states, &d).unwrap();
+        assert_eq!((w.states(), w.sensors()), (3, 7));
+        let window = w.window_radiance(&sky.values).unwrap();
+        let mut out = vec![0.0; 7];
+        for (k, t) in states.iter().enumerate() {
+            w.apply_state(k, &window, &mut out).unwrap();
+            let full = three_phase(&v, t, &d, &sky).unwrap();
+            for (a, b) in out.iter().zip(&full.values) {
+                assert!((a - b).abs() <= 1e-12 * b.abs(), "state {k}: {a} vs {b}");
+            }
+        }
+        // Wrong sizes and an unknown state are errors, not panics.
+        assert!(w.window_radiance(&sky.values[1..]).is_err());
+        assert!(w.apply_state(3, &window, &mut out).is_err());
+        assert!(w.apply_state(0, &window[1..], &mut out).is_err());
+        assert!(WindowStates::new(&v, &[matrix(4, 5, 7)], &d).is_err());
+        assert!(three_phase(&v, &states[0], &d, &matrix(8, 1, 8)).is_err());
+    }
+}
