@@ -70,9 +70,12 @@ pub fn five_phase(
             expected: "one sky value per D column and one sun coefficient per sensor",
         });
     }
-    let column = |values: Vec<f64>| {
-        let n = values.len();
-        RadianceMatrix::from_grey(n, 1, values).expect("n x 1")
+    // A column of n values is n x 1: from_grey cannot refuse it.
+    let column = |values: Vec<f64>| RadianceMatrix {
+        rows: values.len(),
+        cols: 1,
+        ncomp: 1,
+        values,
     };
     let with_sun: Vec<f64> = sky.iter().zip(&sun).map(|(a, b)| a + b).collect();
     let three = three_phase(m.v, m.t, m.d, &column(with_sun))?;
