@@ -245,7 +245,7 @@ fn five_phase_sensors_in_the_beam_match_the_detailed_geometry() {
     // hit): the corpus's tensor tree of the same blinds (`blindsT3.xml`, genBSDF -t3 5) and
     // the Klems data. TensorTree3 is isotropic: it cannot hold venetian blinds' dependence on
     // the profile angle (the tutorial's anisotropic T4 file is not in the corpus snapshot);
-    // one run read the beam 81-107 % high with it, 17-38 % low with Klems.
+    // one run read the beam 81-107 % high with it, 18-39 % low with Klems.
     let thin_bsdf_c_ds = |xml: &str, name: &str, seed: u64| {
         std::fs::write(
             path(name),

@@ -243,9 +243,9 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
     );
     let d_ref = RadianceMatrix::parse("rfluxmtx D", &d_bytes).unwrap();
     let rflux_d_s = start.elapsed().as_secs_f64();
-    // 65536 rays a patch: a row that sees the ground below the horizon is a binary choice
-    // per ray (ground fraction p ~ 0.3: σ = √(p(1−p)/n), 1.2 % of the row at 8192 rays,
-    // 0.4 % here); rfluxmtx stratifies its sender samples and is steadier at 8192.
+    // 65536 rays a patch: a row that sees the ground below the horizon was a binary choice
+    // per ray before D stratified its directions (ground fraction p ~ 0.3: σ = √(p(1−p)/n),
+    // 1.2 % of the row at 8192 rays); rfluxmtx stratifies its sender samples too.
     let settings = Settings {
         ambient_bounces: 2,
         samples_per_sensor: common::compare::our_samples_here(65_536),

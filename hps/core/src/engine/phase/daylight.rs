@@ -21,6 +21,10 @@ use crate::io::radiance_matrix::RadianceMatrix;
 use crate::sky::SkyPatches;
 use rayon::prelude::*;
 
+/// Strata per axis of a batch's directions (8 × 8 = `BATCH_SAMPLES`).
+const STRATA: u32 = 8;
+const _: () = assert!(STRATA * STRATA == BATCH_SAMPLES);
+
 /// How far out of the window's plane a sender ray starts, m: clear of coplanar walls.
 const START_OFFSET_M: f64 = 1e-6;
 
@@ -52,9 +56,22 @@ pub fn daylight_matrix(
             let mut rng = Rng::for_stream(settings.seed, stream);
             let count = BATCH_SAMPLES.min(n - b * BATCH_SAMPLES);
             let mut acc = vec![0.0; bins];
-            for _ in 0..count {
+            // A full batch's directions are jittered over an 8 × 8 grid of the patch (as
+            // rfluxmtx stratifies its sender samples): a row that sees the ground is then no
+            // longer a coin toss per ray. A partial batch is sampled plainly (unbiased).
+            let strata = if count == STRATA * STRATA { STRATA } else { 0 };
+            for i in 0..count {
                 let point = window.sample_point([rng.uniform(), rng.uniform()]);
-                let arrival = window.arrival_direction(patch, [rng.uniform(), rng.uniform()]);
+                let u = if strata > 0 {
+                    let (a, b) = (i % strata, i / strata);
+                    [
+                        (f64::from(a) + rng.uniform()) / f64::from(strata),
+                        (f64::from(b) + rng.uniform()) / f64::from(strata),
+                    ]
+                } else {
+                    [rng.uniform(), rng.uniform()]
+                };
+                let arrival = window.arrival_direction(patch, u);
                 let ray = Ray::new(point - START_OFFSET_M * window.normal, -arrival);
                 escape_path(world, ray, settings, &mut rng, &mut |weight, ray| {
                     let d = ray.direction;
