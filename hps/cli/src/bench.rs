@@ -41,6 +41,15 @@ enum BenchWhat {
         #[arg(long, default_value_t = 51)]
         repeat: usize,
     },
+    /// A window state switch (three-phase, issue 20 item 5): 400 sensors, 5 window states
+    /// (each a Klems T), Reinhart MF4 sky; D s once per capture, then one V T_k product per
+    /// state, on one core.
+    States {
+        #[arg(long)]
+        json: bool,
+        #[arg(long, default_value_t = 51)]
+        repeat: usize,
+    },
     /// HDR synthesis of five full 2592x1944 frames (1 µs to 500 ms, 150 dB), on one core and
     /// on all cores, next to a naive baseline, with the accuracy against the simulated truth.
     Hdr {
@@ -59,6 +68,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         BenchWhat::Capture(args) => crate::bench_capture::run(args),
         BenchWhat::Raybox(args) => crate::bench_raybox::run(args),
         BenchWhat::Dc { json, repeat } => crate::dc::bench(*json, (*repeat).max(1)),
+        BenchWhat::States { json, repeat } => crate::dc_phase::bench(*json, (*repeat).max(1)),
         BenchWhat::Illuminance(args) => crate::bench_illuminance::run(args),
         BenchWhat::Render(args) => crate::bench_render::run(args),
         BenchWhat::Loop(args) => crate::bench_loop::run(args),

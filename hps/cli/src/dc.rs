@@ -29,13 +29,50 @@ pub struct DcArgs {
     pub ab: u32,
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
-    /// The matrix file (RADIANCE matrix format, float32).
+    /// The matrix file (RADIANCE matrix format, float32); with --three-phase a folder.
     #[arg(long)]
     pub out: PathBuf,
+    /// Three-phase matrices instead of daylight coefficients: V (sensors to the window's
+    /// Klems patches, through --scene, the room without its glazing), T (the --bsdf XML),
+    /// D (Klems patches to ground + Reinhart MF --mf sky, through --scene and --outside),
+    /// written as v.mtx, t.mtx, d.mtx in --out for dctimestep and rmtxop; with --sky, the
+    /// product V T D s too (result.mtx, and lux per sensor printed).
+    #[arg(long, requires_all = ["window", "bsdf"])]
+    pub three_phase: bool,
+    /// The window polygons (a RADIANCE file, as rfluxmtx's receiver); front normal into the
+    /// room.
+    #[arg(long)]
+    pub window: Option<PathBuf>,
+    /// The up vector of the window's Klems frame (rfluxmtx's `u=`).
+    #[arg(long, num_args = 3, allow_negative_numbers = true, default_values_t = [0.0, 0.0, 1.0])]
+    pub window_up: Vec<f64>,
+    /// The window's BSDF (WINDOW / LBNL XML, Klems).
+    #[arg(long)]
+    pub bsdf: Option<PathBuf>,
+    /// Scene files outside the room (obstructions) that D sees and V does not.
+    #[arg(long = "outside")]
+    pub outside: Vec<PathBuf>,
+    /// Rays per Klems patch for D.
+    #[arg(long, default_value_t = 4096)]
+    pub d_samples: u32,
+    /// Diffuse bounces outside for D.
+    #[arg(long, default_value_t = 2)]
+    pub d_ab: u32,
+    /// Also the five-phase's direct matrices: vd.mtx (V with -ab 1, the sensors' direct view
+    /// of the window) and dd.mtx (D with -ab 0, the window's direct view of the sky).
+    #[arg(long, requires = "three_phase")]
+    pub direct: bool,
+    /// A sky vector (RADIANCE matrix: ground, then the MF --mf sky patches, radiance;
+    /// gendaymtx's output) to multiply.
+    #[arg(long)]
+    pub sky: Option<PathBuf>,
 }
 
 pub fn run(args: &DcArgs) -> anyhow::Result<()> {
     anyhow::ensure!((1..=8).contains(&args.mf), "--mf must be between 1 and 8");
+    if args.three_phase {
+        return crate::dc_phase::run(args);
+    }
     let scene = scene::load_files_with(
         &args.scenes,
         &scene::LoadOptions {

@@ -10,6 +10,7 @@ mod calibrate;
 mod closure;
 mod compare;
 mod dc;
+mod dc_phase;
 mod demo;
 mod glare;
 mod hdr;

@@ -168,6 +168,15 @@ impl AngleBasis {
         Some(ring.first_patch + index)
     }
 
+    /// Number of patches.
+    pub fn len(&self) -> usize {
+        self.n_patches
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.n_patches == 0
+    }
+
     fn ring_of(&self, patch: usize) -> &Ring {
         let k = self
             .rings
@@ -329,7 +338,16 @@ impl KlemsMatrix {
         })
     }
 
-    fn value(&self, outgoing_patch: usize, incident_patch: usize) -> f32 {
+    pub fn incident_basis(&self) -> &AngleBasis {
+        &self.incident
+    }
+
+    pub fn outgoing_basis(&self) -> &AngleBasis {
+        &self.outgoing
+    }
+
+    /// The file's value (1/sr) for a pair of patches, before any Lambertian share is taken out.
+    pub fn value(&self, outgoing_patch: usize, incident_patch: usize) -> f32 {
         self.values[outgoing_patch * self.incident.n_patches + incident_patch]
     }
 

@@ -7,6 +7,7 @@
 
 mod error;
 mod klems;
+mod klems_transmission;
 mod part;
 mod sample;
 mod scattering_text;
@@ -17,13 +18,15 @@ mod through;
 mod xml;
 
 pub use error::BsdfError;
+pub use klems::AngleBasis;
+pub use klems_transmission::KlemsTransmission;
 pub use sample::{BsdfSample, OutgoingDistribution};
 pub use shirley_chiu::{disk_to_square, square_to_disk};
 pub use side::Side;
 pub use through::Through;
 
 use glam::DVec3;
-use klems::{AngleBasis, KlemsMatrix};
+use klems::KlemsMatrix;
 use part::Part;
 use std::f64::consts::PI;
 use std::path::Path;

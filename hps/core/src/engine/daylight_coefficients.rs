@@ -20,6 +20,7 @@ use super::material::bright;
 use super::rng::Rng;
 use super::sky::DistantEmitter;
 use super::world::World;
+use crate::io::radiance_matrix::{self, MatrixFormat, RadianceMatrix};
 use crate::scene::Sensor;
 use crate::sky::SkyPatches;
 use glam::DVec3;
@@ -108,56 +109,51 @@ impl DaylightCoefficients {
         Ok(())
     }
 
-    /// Writes the matrix in RADIANCE's matrix format (`rcollate`/`dctimestep` headers:
-    /// `NROWS` sensors, `NCOLS` bins, `NCOMP=1`, `FORMAT=float`, little-endian binary
-    /// float32), with Skylux's layout in the header: `SKYLUX_MF`, `SKYLUX_BINS=sky+ground`,
-    /// `SKYLUX_SAMPLES` and `SKYLUX_SENSOR=` lines.
+    /// Writes the matrix in RADIANCE's matrix format (`crate::io::radiance_matrix`: `NROWS`
+    /// sensors, `NCOLS` bins, `NCOMP=1`, `FORMAT=float`, little-endian binary float32), with
+    /// Skylux's layout in the header: `SKYLUX_MF`, `SKYLUX_BINS=sky+ground`, `SKYLUX_SAMPLES`
+    /// and `SKYLUX_SENSOR=` lines.
     pub fn write(&self, path: &std::path::Path) -> std::io::Result<()> {
-        let mut out = Vec::with_capacity(256 + 4 * self.lux_per_cd_m2.len());
-        out.extend_from_slice(b"#?RADIANCE\nskylux dc: daylight coefficients, lux per cd/m2\n");
-        out.extend_from_slice(
-            format!(
-                "NROWS={}\nNCOLS={}\nNCOMP=1\nFORMAT=float\nBYTEORDER=LittleEndian\n\
-                 SKYLUX_MF={}\nSKYLUX_BINS=sky+ground\nSKYLUX_SAMPLES={}\n",
+        let mut header = vec![
+            "skylux dc: daylight coefficients, lux per cd/m2".to_string(),
+            format!("SKYLUX_MF={}", self.mf),
+            "SKYLUX_BINS=sky+ground".to_string(),
+            format!("SKYLUX_SAMPLES={}", self.samples_per_sensor),
+        ];
+        header.extend(self.sensors.iter().map(|n| format!("SKYLUX_SENSOR={n}")));
+        std::fs::write(
+            path,
+            radiance_matrix::encode(
                 self.sensors.len(),
                 self.bins,
-                self.mf,
-                self.samples_per_sensor
-            )
-            .as_bytes(),
-        );
-        for name in &self.sensors {
-            out.extend_from_slice(format!("SKYLUX_SENSOR={name}\n").as_bytes());
-        }
-        out.push(b'\n');
-        for v in &self.lux_per_cd_m2 {
-            out.extend_from_slice(&(*v as f32).to_le_bytes());
-        }
-        std::fs::write(path, out)
+                1,
+                &self.lux_per_cd_m2,
+                MatrixFormat::Float,
+                &header,
+            ),
+        )
     }
 
     /// Reads what [`Self::write`] wrote; every malformed header or size is an error naming
-    /// the field.
+    /// the file and the field.
     pub fn read(path: &std::path::Path) -> Result<Self, String> {
         let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
         Self::parse(path, &bytes)
     }
 
-    /// Parses the bytes of a matrix file; `path` names it in errors.
+    /// Parses the bytes of a matrix file (RADIANCE's matrix format, any of its encodings,
+    /// one component, with `skylux dc`'s header lines); `path` names it in errors.
     pub fn parse(path: &std::path::Path, bytes: &[u8]) -> Result<Self, String> {
-        let bad = |what: String| format!("{}: {what}", path.display());
-        let end = bytes
-            .windows(2)
-            .position(|w| w == b"\n\n")
-            .ok_or_else(|| bad("no end of header (an empty line)".into()))?;
-        let header =
-            std::str::from_utf8(&bytes[..end]).map_err(|_| bad("header is not text".into()))?;
-        if !header.starts_with("#?RADIANCE") {
-            return Err(bad("not a RADIANCE matrix (no #?RADIANCE)".into()));
+        let file = path.display().to_string();
+        let bad = |what: String| format!("{file}: {what}");
+        let (matrix, header) =
+            RadianceMatrix::parse_with_header(&file, bytes).map_err(|e| e.to_string())?;
+        if matrix.ncomp != 1 {
+            return Err(bad(format!("NCOMP={}: expected 1", matrix.ncomp)));
         }
-        let (mut rows, mut cols, mut mf, mut samples) = (None, None, None, 0u32);
+        let (mut mf, mut samples) = (None, 0u32);
         let mut sensors = Vec::new();
-        for line in header.lines() {
+        for line in &header {
             let Some((k, v)) = line.split_once('=') else {
                 continue;
             };
@@ -167,23 +163,13 @@ impl DaylightCoefficients {
                     .map_err(|_| bad(format!("{k}={v}: not a count")))
             };
             match k {
-                "NROWS" => rows = Some(num(v)?),
-                "NCOLS" => cols = Some(num(v)?),
-                "NCOMP" if v.trim() != "1" => return Err(bad(format!("NCOMP={v}: expected 1"))),
-                "FORMAT" if v.trim() != "float" => {
-                    return Err(bad(format!("FORMAT={v}: expected float")))
-                }
-                "BYTEORDER" if v.trim() != "LittleEndian" => {
-                    return Err(bad(format!("BYTEORDER={v}: expected LittleEndian")))
-                }
                 "SKYLUX_MF" => mf = Some(num(v)?),
                 "SKYLUX_SAMPLES" => samples = num(v)?.min(u32::MAX as usize) as u32,
                 "SKYLUX_SENSOR" => sensors.push(v.to_string()),
                 _ => {}
             }
         }
-        let rows = rows.ok_or_else(|| bad("no NROWS".into()))?;
-        let cols = cols.ok_or_else(|| bad("no NCOLS".into()))?;
+        let (rows, cols) = (matrix.rows, matrix.cols);
         let mf = mf.ok_or_else(|| bad("no SKYLUX_MF: not written by skylux dc".into()))?;
         if !(1..=30).contains(&mf) || cols != 2 * SkyPatches::reinhart(mf).len() {
             return Err(bad(format!(
@@ -196,23 +182,11 @@ impl DaylightCoefficients {
                 sensors.len()
             )));
         }
-        let data = &bytes[end + 2..];
-        let expected = rows.checked_mul(cols).and_then(|n| n.checked_mul(4));
-        if expected != Some(data.len()) {
-            return Err(bad(format!(
-                "{} data bytes for {rows} x {cols} float32 values",
-                data.len()
-            )));
-        }
-        let lux_per_cd_m2 = data
-            .chunks_exact(4)
-            .map(|c| f64::from(f32::from_le_bytes([c[0], c[1], c[2], c[3]])))
-            .collect();
         Ok(Self {
             sensors,
             mf,
             bins: cols,
-            lux_per_cd_m2,
+            lux_per_cd_m2: matrix.values,
             samples_per_sensor: samples,
         })
     }

@@ -281,7 +281,7 @@ fn sensor_path(
         1,
         settings,
         rng,
-        &mut |t, dir| t * world.escape_radiance(dir),
+        &mut |t, ray| t * world.escape_radiance(ray.direction),
         nee.as_ref(),
         Some(last),
         settings.russian_roulette,
@@ -569,6 +569,21 @@ pub fn escape_sample(
     rng: &mut Rng,
     escape: &mut dyn FnMut(DVec3, DVec3),
 ) {
+    escape_ray_sample(world, position_m, normal, settings, rng, &mut |w, ray| {
+        escape(w, ray.direction)
+    });
+}
+
+/// [`escape_sample`] handing over the escaping ray itself (where it leaves from, too): the
+/// view matrix keeps only the escapes through the window.
+pub fn escape_ray_sample(
+    world: &World,
+    position_m: DVec3,
+    normal: DVec3,
+    settings: &Settings,
+    rng: &mut Rng,
+    escape: &mut dyn FnMut(DVec3, &Ray),
+) {
     if settings.ambient_bounces == 0 {
         return;
     }
@@ -580,8 +595,37 @@ pub fn escape_sample(
         1,
         settings,
         rng,
-        &mut |t, dir| {
-            escape(PI * t, dir);
+        &mut |t, ray| {
+            escape(PI * t, ray);
+            DVec3::ZERO
+        },
+        None,
+        None,
+        false,
+        false,
+    );
+}
+
+/// One path along `ray` (not from a sensor: no cosine, no π), each escape handed to
+/// `escape(throughput, escaping ray)`: the mean over such paths of the throughput escaping
+/// through a sky patch is the radiance seen along `ray` per unit patch radiance (how
+/// `rfluxmtx` builds a daylight matrix from a sender). At most `-ab` diffuse bounces.
+pub fn escape_path(
+    world: &World,
+    ray: Ray,
+    settings: &Settings,
+    rng: &mut Rng,
+    escape: &mut dyn FnMut(DVec3, &Ray),
+) {
+    trace(
+        world,
+        ray,
+        None,
+        0,
+        settings,
+        rng,
+        &mut |t, ray| {
+            escape(t, ray);
             DVec3::ZERO
         },
         None,
@@ -610,7 +654,7 @@ pub(crate) fn trace_radiance(
         0,
         settings,
         rng,
-        &mut |t, dir| t * world.escape_radiance(dir),
+        &mut |t, ray| t * world.escape_radiance(ray.direction),
         nee.as_ref(),
         None,
         settings.russian_roulette,
@@ -637,8 +681,8 @@ struct Tracer<'a, 'e> {
     settings: &'a Settings,
     nee: Option<&'a SkyNee<'a>>,
     roulette: bool,
-    /// What an escaping ray collects: `on_escape(throughput, direction)`.
-    on_escape: &'e mut dyn FnMut(DVec3, DVec3) -> DVec3,
+    /// What an escaping ray collects: `on_escape(throughput, ray)`.
+    on_escape: &'e mut dyn FnMut(DVec3, &Ray) -> DVec3,
 }
 
 /// The state of one path as [`trace`] follows it.
@@ -677,7 +721,7 @@ fn trace(
     ambient_used: u32,
     settings: &Settings,
     rng: &mut Rng,
-    escape: &mut dyn FnMut(DVec3, DVec3) -> DVec3,
+    escape: &mut dyn FnMut(DVec3, &Ray) -> DVec3,
     nee: Option<&SkyNee>,
     last: Option<LastDiffuse>,
     roulette: bool,
@@ -788,7 +832,7 @@ impl Tracer<'_, '_> {
             (Some(nee), Some(last)) => nee.continuation_weight(last, d),
             _ => 1.0,
         };
-        path.radiance + (self.on_escape)(path.throughput * weight, d)
+        path.radiance + (self.on_escape)(path.throughput * weight, &path.ray)
     }
 
     /// A vertex on a shaded surface: direct light from the sun, its mirror images and the sky

@@ -28,6 +28,7 @@ pub mod function;
 pub mod illuminance;
 pub mod integrator;
 pub mod material;
+pub mod phase;
 pub mod portal;
 pub mod qmc;
 pub mod radiance;

@@ -15,3 +15,23 @@ pub(super) fn dc_matrix(bytes: &[u8]) {
         Err(e) => super::checks::assert_names(&e, "fuzz.dc"),
     }
 }
+
+/// Parses the bytes as `fuzz.mtx` in RADIANCE's matrix format (`rfluxmtx`, `gendaymtx`,
+/// `dctimestep`, `skylux dc --three-phase`); a matrix read is written back and read again
+/// unchanged, and multiplied by a vector of ones.
+pub(super) fn radiance_matrix(bytes: &[u8]) {
+    use crate::io::radiance_matrix::{MatrixFormat, RadianceMatrix};
+    match RadianceMatrix::parse("fuzz.mtx", bytes) {
+        Ok(m) => {
+            assert_eq!(m.values.len(), m.rows * m.cols * m.ncomp);
+            let again = RadianceMatrix::parse("again.mtx", &m.to_bytes(MatrixFormat::Double, &[]))
+                .expect("our own output reads back");
+            assert_eq!(again, m);
+            if let Some(ones) = RadianceMatrix::from_grey(m.cols, 1, vec![1.0; m.cols]) {
+                let sums = m.multiply(&ones).expect("shapes chain");
+                assert_eq!((sums.rows, sums.ncomp), (m.rows, m.ncomp));
+            }
+        }
+        Err(e) => super::checks::assert_names(&e.to_string(), "fuzz.mtx"),
+    }
+}

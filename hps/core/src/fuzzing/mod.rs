@@ -37,6 +37,7 @@ pub const TARGETS: &[(&str, Harness)] = &[
     ("dat", data_file::dat),
     ("view", view::view),
     ("dc_matrix", matrix::dc_matrix),
+    ("radiance_matrix", matrix::radiance_matrix),
     ("regions", regions::regions),
     ("known_source", known_source::known_source),
     ("fnt", font::fnt),

@@ -2,3 +2,4 @@
 //! uses the values (the sun, the sky models).
 
 pub mod irradiance;
+pub mod radiance_matrix;

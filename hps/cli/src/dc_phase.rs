@@ -1,0 +1,242 @@
+//! `skylux dc --three-phase`: V, T and D of a room with one BSDF window, in RADIANCE's matrix
+//! format (`dctimestep v.mtx t.xml d.mtx sky` reads them), and their product with a sky
+//! vector.
+
+use crate::dc::DcArgs;
+use anyhow::Context;
+use glam::DVec3;
+use skylux_hps::bsdf::{Band, KlemsTransmission};
+use skylux_hps::engine::phase::{daylight_matrix, three_phase, view_matrix, KlemsWindow};
+use skylux_hps::engine::{Settings, World};
+use skylux_hps::io::radiance_matrix::{MatrixFormat, RadianceMatrix};
+use skylux_hps::scene;
+
+pub fn run(args: &DcArgs) -> anyhow::Result<()> {
+    let (Some(window_path), Some(bsdf_path)) = (&args.window, &args.bsdf) else {
+        anyhow::bail!("--three-phase needs --window and --bsdf");
+    };
+    let options = scene::LoadOptions {
+        allow_commands: args.allow_commands,
+        ..Default::default()
+    };
+    let room = scene::load_files_with(&args.scenes, &options)?;
+    let with_outside: Vec<_> = args.scenes.iter().chain(&args.outside).cloned().collect();
+    let outside = scene::load_files_with(&with_outside, &options)?;
+    let sensors = scene::load_sensors(&args.sensors)?;
+    let room = World::new(&room)?;
+    let outside = World::new(&outside)?;
+    anyhow::ensure!(
+        room.distant_sources().is_empty() && outside.distant_sources().is_empty(),
+        "the scene holds a sky or sun (distant sources): the matrices need the room alone"
+    );
+    let t = KlemsTransmission::load(bsdf_path, Band::Visible)?;
+    let up = DVec3::new(args.window_up[0], args.window_up[1], args.window_up[2]);
+    let window = KlemsWindow::load(window_path, up, t.incident_basis.clone())?;
+    let settings = Settings {
+        ambient_bounces: args.ab,
+        samples_per_sensor: args.ad,
+        seed: args.seed,
+        ..Default::default()
+    };
+    let bar = indicatif::ProgressBar::new(1);
+    let progress = |d, n| {
+        bar.set_length(n);
+        bar.set_position(d);
+    };
+    let v = view_matrix(&room, &sensors, &window, &settings, &progress)?;
+    let d_settings = Settings {
+        ambient_bounces: args.d_ab,
+        samples_per_sensor: args.d_samples,
+        ..settings
+    };
+    let d = daylight_matrix(&outside, &window, args.mf, &d_settings, &progress)?;
+    bar.finish_and_clear();
+    std::fs::create_dir_all(&args.out)
+        .with_context(|| format!("creating {}", args.out.display()))?;
+    let write = |m: &RadianceMatrix, name: &str, what: String| -> anyhow::Result<()> {
+        let path = args.out.join(name);
+        // RGB (grey), as dctimestep expects of every factor.
+        let rgb = m.with_components(3).context("a grey matrix")?;
+        rgb.write(&path, MatrixFormat::Float, &[what])
+            .with_context(|| format!("writing {}", path.display()))
+    };
+    write(
+        &v,
+        "v.mtx",
+        format!(
+            "skylux dc --three-phase: V, sensors x Klems patches of {}, W/m2 per W/m2/sr, {} paths, -ab {}",
+            window_path.display(),
+            args.ad,
+            args.ab
+        ),
+    )?;
+    write(
+        &t.matrix,
+        "t.mtx",
+        format!("skylux dc --three-phase: T of {}", bsdf_path.display()),
+    )?;
+    write(
+        &d,
+        "d.mtx",
+        format!(
+            "skylux dc --three-phase: D, Klems patches x (ground + Reinhart MF{}), {} rays per patch, -ab {}",
+            args.mf, args.d_samples, args.d_ab
+        ),
+    )?;
+    if args.direct {
+        let v_direct = view_matrix(
+            &room,
+            &sensors,
+            &window,
+            &Settings {
+                ambient_bounces: 1,
+                ..settings
+            },
+            &|_, _| {},
+        )?;
+        let d_direct = daylight_matrix(
+            &outside,
+            &window,
+            args.mf,
+            &Settings {
+                ambient_bounces: 0,
+                ..d_settings
+            },
+            &|_, _| {},
+        )?;
+        write(
+            &v_direct,
+            "vd.mtx",
+            format!(
+                "skylux dc --three-phase --direct: V_d (-ab 1), {} paths",
+                args.ad
+            ),
+        )?;
+        write(
+            &d_direct,
+            "dd.mtx",
+            format!(
+                "skylux dc --three-phase --direct: D_d (-ab 0), {} rays per patch",
+                args.d_samples
+            ),
+        )?;
+    }
+    println!(
+        "V {}x{}, T {}x{}, D {}x{} -> {}",
+        v.rows,
+        v.cols,
+        t.matrix.rows,
+        t.matrix.cols,
+        d.rows,
+        d.cols,
+        args.out.display()
+    );
+    if let Some(sky_path) = &args.sky {
+        let sky = RadianceMatrix::read(sky_path)?;
+        let result = three_phase(&v, &t.matrix, &d, &sky)?;
+        let path = args.out.join("result.mtx");
+        result
+            .write(
+                &path,
+                MatrixFormat::Ascii,
+                &[format!(
+                    "skylux dc --three-phase: V T D {}",
+                    sky_path.display()
+                )],
+            )
+            .with_context(|| format!("writing {}", path.display()))?;
+        let lux = result.brightness();
+        for (s, sensor) in sensors.iter().enumerate() {
+            let row: Vec<String> = (0..lux.cols)
+                .map(|c| format!("{:.1}", 179.0 * lux.get(s, c, 0)))
+                .collect();
+            println!("{},{}", sensor.name, row.join(","));
+        }
+    }
+    Ok(())
+}
+
+/// `skylux bench states`: the per-capture cost of a window with several states, with
+/// matrices of the real sizes (400 sensors, Klems full, Reinhart MF4 + ground, 5 states) and
+/// arbitrary positive values (the time does not depend on them).
+pub fn bench(json: bool, repeat: usize) -> anyhow::Result<()> {
+    use skylux_hps::engine::phase::WindowStates;
+    use skylux_hps::timing::median_ms;
+    const SENSORS: usize = 400;
+    const PATCHES: usize = 145;
+    const STATES: usize = 5;
+    let mf = 4;
+    let bins = 1 + skylux_hps::sky::SkyPatches::reinhart(mf).len();
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut matrix = |rows: usize, cols: usize| {
+        RadianceMatrix::from_grey(rows, cols, (0..rows * cols).map(|_| next()).collect())
+            .context("matrix size")
+    };
+    let v = matrix(SENSORS, PATCHES)?;
+    let d = matrix(PATCHES, bins)?;
+    let t: Vec<RadianceMatrix> = (0..STATES)
+        .map(|_| matrix(PATCHES, PATCHES))
+        .collect::<anyhow::Result<_>>()?;
+    let sky: Vec<f64> = (0..bins).map(|k| 1.0 + (k % 7) as f64).collect();
+    let precompute = std::time::Instant::now();
+    let states = WindowStates::new(&v, &t, &d)?;
+    let precompute_ms = precompute.elapsed().as_secs_f64() * 1e3;
+    let mut out = vec![0.0; SENSORS];
+    let mut window = states.window_radiance(&sky)?;
+    let mut failure = None;
+    let d_ms = median_ms(repeat, || match states.window_radiance(&sky) {
+        Ok(w) => window = w,
+        Err(e) => failure = Some(e),
+    });
+    let switch_ms = median_ms(repeat, || {
+        if let Err(e) = states.apply_state(STATES - 1, &window, &mut out) {
+            failure = Some(e);
+        }
+    });
+    let mut checksum = 0.0;
+    let all_ms = median_ms(repeat, || {
+        for k in 0..STATES {
+            if let Err(e) = states.apply_state(k, &window, &mut out) {
+                failure = Some(e);
+            }
+            checksum += out[0];
+        }
+    });
+    if let Some(e) = failure {
+        return Err(e.into());
+    }
+    checksum += window.iter().sum::<f64>();
+    if json {
+        println!(
+            "{}",
+            serde_json::json!({
+                "sensors": SENSORS,
+                "klems_patches": PATCHES,
+                "sky_bins": bins,
+                "states": STATES,
+                "precompute_ms": precompute_ms,
+                "window_radiance_ms": d_ms,
+                "state_switch_ms": switch_ms,
+                "all_states_ms": all_ms,
+                "capture_all_states_ms": d_ms + all_ms,
+                "budget_ms": 5.0,
+                "checksum": checksum,
+            })
+        );
+    } else {
+        println!(
+            "window states, {SENSORS} sensors x {PATCHES} Klems patches, MF{mf} sky ({bins} bins), \
+             one core: D s {d_ms:.3} ms per capture, one state switch {switch_ms:.3} ms, all \
+             {STATES} states {all_ms:.3} ms (capture with every state {:.3} ms; budget 5 ms); \
+             precomputing V T_k {precompute_ms:.1} ms once",
+            d_ms + all_ms
+        );
+    }
+    Ok(())
+}
