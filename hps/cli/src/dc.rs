@@ -49,6 +49,12 @@ pub struct DcArgs {
     /// The window's BSDF (WINDOW / LBNL XML, Klems).
     #[arg(long)]
     pub bsdf: Option<PathBuf>,
+    /// Another state of the same window, NAME=XML (blinds at another angle, a shade down, a
+    /// tint: a Klems BSDF on the --bsdf's basis); repeat for several. Written as
+    /// t-NAME.mtx; with --sky, the lux under every state (the --bsdf's named "bsdf") from
+    /// one product each, V and D traced once.
+    #[arg(long = "state", requires = "three_phase")]
+    pub states: Vec<String>,
     /// Scene files outside the room (obstructions) that D sees and V does not.
     #[arg(long = "outside")]
     pub outside: Vec<PathBuf>,

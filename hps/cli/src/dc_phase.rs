@@ -6,10 +6,13 @@ use crate::dc::DcArgs;
 use anyhow::Context;
 use glam::DVec3;
 use skylux_hps::bsdf::{Band, KlemsTransmission};
-use skylux_hps::engine::phase::{daylight_matrix, three_phase, view_matrix, KlemsWindow};
+use skylux_hps::engine::phase::{
+    daylight_matrix, three_phase, view_matrix, KlemsWindow, WindowStates,
+};
 use skylux_hps::engine::{Settings, World};
 use skylux_hps::io::radiance_matrix::{MatrixFormat, RadianceMatrix};
 use skylux_hps::scene;
+use std::path::Path;
 
 pub fn run(args: &DcArgs) -> anyhow::Result<()> {
     let (Some(window_path), Some(bsdf_path)) = (&args.window, &args.bsdf) else {
@@ -30,6 +33,7 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
         "the scene holds a sky or sun (distant sources): the matrices need the room alone"
     );
     let t = KlemsTransmission::load(bsdf_path, Band::Visible)?;
+    let states = load_states(args, &t)?;
     let up = DVec3::new(args.window_up[0], args.window_up[1], args.window_up[2]);
     let window = KlemsWindow::load(window_path, up, t.incident_basis.clone())?;
     let settings = Settings {
@@ -75,6 +79,13 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
         "t.mtx",
         format!("skylux dc --three-phase: T of {}", bsdf_path.display()),
     )?;
+    for ((name, matrix), spec) in states.iter().zip(&args.states) {
+        write(
+            matrix,
+            &format!("t-{name}.mtx"),
+            format!("skylux dc --three-phase: T of state {spec}"),
+        )?;
+    }
     write(
         &d,
         "d.mtx",
@@ -151,6 +162,75 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
                 .map(|c| format!("{:.1}", 179.0 * lux.get(s, c, 0)))
                 .collect();
             println!("{},{}", sensor.name, row.join(","));
+        }
+        if !states.is_empty() {
+            print_states(&v, &t.matrix, &states, &d, &sky, &sensors)?;
+        }
+    }
+    Ok(())
+}
+
+/// The window's further states (`--state NAME=XML`), each T on the --bsdf's Klems basis.
+fn load_states(
+    args: &DcArgs,
+    basis: &KlemsTransmission,
+) -> anyhow::Result<Vec<(String, RadianceMatrix)>> {
+    args.states
+        .iter()
+        .map(|spec| {
+            let (name, path) = spec
+                .split_once('=')
+                .filter(|(n, p)| !n.is_empty() && !p.is_empty())
+                .with_context(|| format!("--state {spec:?}: expected NAME=XML"))?;
+            anyhow::ensure!(
+                name.chars()
+                    .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_'),
+                "--state {spec:?}: the name may hold letters, digits, - and _ only"
+            );
+            let t = KlemsTransmission::load(Path::new(path), Band::Visible)?;
+            anyhow::ensure!(
+                (t.matrix.rows, t.matrix.cols) == (basis.matrix.rows, basis.matrix.cols),
+                "--state {name}: {path} is {}x{}, the --bsdf {}x{}: one window, one basis",
+                t.matrix.rows,
+                t.matrix.cols,
+                basis.matrix.rows,
+                basis.matrix.cols
+            );
+            Ok((name.to_string(), t.matrix))
+        })
+        .collect()
+}
+
+/// `sensor,state,lux` for the --bsdf ("bsdf") and every --state: D s once, then one product
+/// per state ([`WindowStates`]).
+fn print_states(
+    v: &RadianceMatrix,
+    t: &RadianceMatrix,
+    states: &[(String, RadianceMatrix)],
+    d: &RadianceMatrix,
+    sky: &RadianceMatrix,
+    sensors: &[scene::Sensor],
+) -> anyhow::Result<()> {
+    let grey = |m: &RadianceMatrix| {
+        if m.ncomp == 1 {
+            m.clone()
+        } else {
+            m.brightness()
+        }
+    };
+    let mut ts = vec![grey(t)];
+    ts.extend(states.iter().map(|(_, m)| grey(m)));
+    let switch = WindowStates::new(&grey(v), &ts, &grey(d))?;
+    let sky = grey(sky);
+    anyhow::ensure!(sky.cols == 1, "--sky: one column (one sky) for the states");
+    let window = switch.window_radiance(&sky.values)?;
+    let names = std::iter::once("bsdf").chain(states.iter().map(|(n, _)| n.as_str()));
+    println!("sensor,state,lux");
+    let mut irradiance = vec![0.0; sensors.len()];
+    for (k, name) in names.enumerate() {
+        switch.apply_state(k, &window, &mut irradiance)?;
+        for (sensor, e) in sensors.iter().zip(&irradiance) {
+            println!("{},{name},{:.1}", sensor.name, 179.0 * e);
         }
     }
     Ok(())

@@ -174,3 +174,116 @@ fn bad_input_is_named() {
         "{e}"
     );
 }
+
+/// Window states (`--state NAME=XML`): V and D traced once, each state one product. A state
+/// with the --bsdf's own XML reads what the --bsdf does; venetian blinds at 45° read what
+/// the product of the files written for them gives, and far less than clear glass.
+#[test]
+fn window_states_are_one_product_each() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = |name: &str| dir.path().join(name);
+    std::fs::write(
+        p("room.rad"),
+        "void plastic f 0 0 5 .2 .2 .2 0 0\nf polygon far 0 0 12 50 50 -9 51 50 -9 51 51 -9 50 51 -9\n",
+    )
+    .unwrap();
+    std::fs::write(
+        p("window.rad"),
+        "void glow g 0 0 4 1 1 1 0\ng polygon w 0 0 12 1 0 0.9 1 0 2.1 3 0 2.1 3 0 0.9\n",
+    )
+    .unwrap();
+    std::fs::write(p("s.pts"), "1 1 0.9 0 -1 0\n2 2 1.5 0 -1 0\n").unwrap();
+    let sky: String = std::iter::once("0.5\n".to_string())
+        .chain((0..145).map(|k| format!("{}\n", 1.0 + (k % 5) as f64)))
+        .collect();
+    std::fs::write(
+        p("sky.mtx"),
+        format!("#?RADIANCE\nNROWS=146\nNCOLS=1\nNCOMP=1\nFORMAT=ascii\n\n{sky}"),
+    )
+    .unwrap();
+    let ven45 = clear_glass().with_file_name("ven45.xml");
+    let out_dir = p("out");
+    let again = format!("again={}", clear_glass().display());
+    let blinds = format!("ven45={}", ven45.display());
+    let out = skylux(&[
+        "dc",
+        "--three-phase",
+        "--scene",
+        p("room.rad").to_str().unwrap(),
+        "--window",
+        p("window.rad").to_str().unwrap(),
+        "--bsdf",
+        clear_glass().to_str().unwrap(),
+        "--state",
+        &again,
+        "--state",
+        &blinds,
+        "--sensors",
+        p("s.pts").to_str().unwrap(),
+        "--mf",
+        "1",
+        "--ab",
+        "1",
+        "--ad",
+        "50000",
+        "--d-samples",
+        "64",
+        "--sky",
+        p("sky.mtx").to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let value = |prefix: &str| -> f64 {
+        let line = text
+            .lines()
+            .find(|l| l.starts_with(prefix))
+            .unwrap_or_else(|| panic!("no line {prefix} in {text}"));
+        line.rsplit(',').next().unwrap().parse().unwrap()
+    };
+    let read = |name: &str| RadianceMatrix::read(&out_dir.join(name)).unwrap();
+    let (v, d) = (read("v.mtx"), read("d.mtx"));
+    let sky = RadianceMatrix::read(&p("sky.mtx")).unwrap();
+    for sensor in ["S1", "S2"] {
+        let (plain, bsdf, same) = (
+            value(&format!("{sensor},")),
+            value(&format!("{sensor},bsdf,")),
+            value(&format!("{sensor},again,")),
+        );
+        assert!((plain - bsdf).abs() <= 0.051 && (bsdf - same).abs() <= 0.051);
+        let row = if sensor == "S1" { 0 } else { 1 };
+        let product = three_phase(&v, &read("t-ven45.mtx"), &d, &sky).unwrap();
+        let want = 179.0 * product.brightness().get(row, 0, 0);
+        let got = value(&format!("{sensor},ven45,"));
+        println!("{sensor}: clear {bsdf} lux, blinds at 45° {got} lux (files: {want:.2})");
+        assert!((got - want).abs() <= 0.051 + 1e-6 * want, "{got} vs {want}");
+        assert!(
+            got < 0.7 * bsdf,
+            "the blinds must cut the light: {got} vs {bsdf}"
+        );
+    }
+    // A state on another basis, or a bad name, is refused with the option.
+    let bad = skylux(&[
+        "dc",
+        "--three-phase",
+        "--scene",
+        p("room.rad").to_str().unwrap(),
+        "--window",
+        p("window.rad").to_str().unwrap(),
+        "--bsdf",
+        clear_glass().to_str().unwrap(),
+        "--state",
+        "no file",
+        "--sensors",
+        p("s.pts").to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    let e = String::from_utf8_lossy(&bad.stderr);
+    assert!(!bad.status.success() && e.contains("--state"), "{e}");
+}
