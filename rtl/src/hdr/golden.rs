@@ -1,0 +1,209 @@
+//! Golden model of the HDR selection, written from the specification (issue 22 item 1), not
+//! from the RTL: frames of grouped words in raster order, no clocks or pipelines.
+
+use skylux_regmap::words::{grouped, hdr_map};
+
+/// Groups the filled mask holds: positions are counted modulo this (the RTL's
+/// [`crate::hdr::MASK_ADDRESS_BITS`]-bit counter).
+pub const MASK_GROUPS: usize = 1 << 21;
+
+/// The selection's thresholds (`hdr.*` registers), on the grouped word's luminance.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct HdrConfig {
+    /// A group is usable at or above this (2^-14 DN): a floor below which a shorter exposure
+    /// would do no worse. 0 leaves it to `bayer.valid.MIN`.
+    pub min_q14: u32,
+    /// ... and at or below this: a saturation ceiling tighter than `bayer.valid.MAX` if wanted.
+    pub max_q14: u32,
+}
+
+impl Default for HdrConfig {
+    /// The registers' reset values: only the grouped word's flags decide.
+    fn default() -> Self {
+        HdrConfig {
+            min_q14: 0,
+            max_q14: (1 << grouped::LUMA_WIDTH) - 1,
+        }
+    }
+}
+
+/// Whether a group's word is usable: no sample out of `bayer.valid`'s range and the luminance
+/// inside the thresholds.
+pub fn usable(config: &HdrConfig, word: u32) -> bool {
+    let l = grouped::luma_q14(word);
+    grouped::valid(word) && l >= config.min_q14 && l <= config.max_q14
+}
+
+/// One frame of a set as the fabric sees it.
+#[derive(Clone, Debug)]
+pub struct SetFrame<'a> {
+    /// The frame's exposure index (three bits are kept).
+    pub exposure_index: u8,
+    /// The first frame of a set: the mask's old contents do not count.
+    pub first_of_set: bool,
+    pub words: &'a [u32],
+}
+
+/// The filled mask, one bit per group position, kept across frames as the block RAM keeps it
+/// (zero at power-up).
+#[derive(Clone, Debug)]
+pub struct FilledMask {
+    bits: Vec<bool>,
+}
+
+impl Default for FilledMask {
+    fn default() -> Self {
+        FilledMask {
+            bits: vec![false; MASK_GROUPS],
+        }
+    }
+}
+
+impl FilledMask {
+    /// What the block emits for `frame`: per word, the map word and whether it is written
+    /// (not yet filled). Updates the mask.
+    pub fn frame(&mut self, config: &HdrConfig, frame: &SetFrame) -> Vec<(u32, bool)> {
+        frame
+            .words
+            .iter()
+            .enumerate()
+            .map(|(i, &word)| {
+                let bit = &mut self.bits[i % MASK_GROUPS];
+                let filled = !frame.first_of_set && *bit;
+                *bit = filled || usable(config, word);
+                (hdr_map::from_grouped(word, frame.exposure_index), !filled)
+            })
+            .collect()
+    }
+}
+
+/// The map a set leaves in memory, declaratively: for each group, the word of the first
+/// frame (the longest exposure) in which it is usable, or the last frame's. All frames cover
+/// the first frame's groups.
+pub fn select(config: &HdrConfig, frames: &[SetFrame]) -> Vec<u32> {
+    let Some(last) = frames.last() else {
+        return vec![];
+    };
+    (0..frames[0].words.len())
+        .map(|i| {
+            let from = frames
+                .iter()
+                .find(|f| usable(config, f.words[i]))
+                .unwrap_or(last);
+            hdr_map::from_grouped(from.words[i], from.exposure_index)
+        })
+        .collect()
+}
+
+/// Applies a frame's writes to a map buffer (the DMA's byte enables).
+pub fn apply(map: &mut [u32], writes: &[(u32, bool)]) {
+    for (m, &(word, write)) in map.iter_mut().zip(writes) {
+        if write {
+            *m = word;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const OK: bool = false;
+
+    fn g(l: u32, under: bool, over: bool) -> u32 {
+        grouped::pack(l, under, over)
+    }
+
+    #[test]
+    fn the_longest_usable_exposure_wins_by_hand() {
+        // Three groups over three exposures, long (index 0) to short (2):
+        // group 0 usable in the longest; group 1 over there, usable in 1 and 2 (1 wins);
+        // group 2 over everywhere (the last frame's word, flags kept).
+        let e0 = [g(1000, OK, OK), g(9, OK, true), g(9, OK, true)];
+        let e1 = [g(40, OK, OK), g(2000, OK, OK), g(9, OK, true)];
+        let e2 = [g(1, true, OK), g(70, OK, OK), g(7, OK, true)];
+        let frames = [
+            SetFrame {
+                exposure_index: 0,
+                first_of_set: true,
+                words: &e0,
+            },
+            SetFrame {
+                exposure_index: 1,
+                first_of_set: false,
+                words: &e1,
+            },
+            SetFrame {
+                exposure_index: 2,
+                first_of_set: false,
+                words: &e2,
+            },
+        ];
+        let c = HdrConfig::default();
+        let map = select(&c, &frames);
+        assert_eq!(
+            map,
+            vec![
+                hdr_map::from_grouped(e0[0], 0),
+                hdr_map::from_grouped(e1[1], 1),
+                hdr_map::from_grouped(e2[2], 2),
+            ]
+        );
+        assert!(hdr_map::over(map[2]));
+        // The streamed writes leave the same map, and write each group once it is filled.
+        let mut mask = FilledMask::default();
+        let mut memory = vec![0xDEAD_BEEF; 3];
+        let writes: Vec<_> = frames.iter().map(|f| mask.frame(&c, f)).collect();
+        for w in &writes {
+            apply(&mut memory, w);
+        }
+        assert_eq!(memory, map);
+        let written: Vec<Vec<bool>> = writes
+            .iter()
+            .map(|w| w.iter().map(|x| x.1).collect())
+            .collect();
+        assert_eq!(
+            written,
+            vec![
+                vec![true, true, true],
+                vec![false, true, true],
+                vec![false, false, true]
+            ]
+        );
+    }
+
+    #[test]
+    fn thresholds_narrow_the_usable_range() {
+        let c = HdrConfig {
+            min_q14: 100,
+            max_q14: 200,
+        };
+        assert!(!usable(&c, g(99, OK, OK)));
+        assert!(usable(&c, g(100, OK, OK)));
+        assert!(usable(&c, g(200, OK, OK)));
+        assert!(!usable(&c, g(201, OK, OK)));
+        assert!(!usable(&c, g(150, true, OK)));
+        assert!(!usable(&HdrConfig::default(), g(150, OK, true)));
+    }
+
+    #[test]
+    fn a_new_set_ignores_the_old_mask() {
+        let c = HdrConfig::default();
+        let mut mask = FilledMask::default();
+        let w = [g(5, OK, OK)];
+        let first = |words| SetFrame {
+            exposure_index: 0,
+            first_of_set: true,
+            words,
+        };
+        assert_eq!(mask.frame(&c, &first(&w))[0].1, true);
+        // Filled now: a later frame of the same set is masked, a new set's first is not.
+        let later = SetFrame {
+            exposure_index: 1,
+            first_of_set: false,
+            words: &w,
+        };
+        assert_eq!(mask.frame(&c, &later)[0].1, false);
+        assert_eq!(mask.frame(&c, &first(&w))[0].1, true);
+    }
+}

@@ -1,0 +1,90 @@
+//! The HDR selection: per grouped word taken by the DMA, the map word and whether to write it
+//! ([`super::golden`] is the specification).
+
+use rust_hdl::prelude::*;
+
+/// Address bits of the filled mask: 2^21 groups cover the full 1296 x 972 groups of the
+/// MT9P031's 2592 x 1944 array (1,259,712; hardware-facts.md §1).
+pub const MASK_ADDRESS_BITS: usize = 21;
+
+/// The filled mask and the map word, with no latency: the outputs describe the word at the
+/// head of the DMA's FIFO, so the ingest puts them into the beat it pushes when it takes it.
+///
+/// The mask's block RAM reads synchronously, so it is addressed one cycle ahead with the
+/// position of the next head word: 0 after `restart`, the current one plus `take` otherwise.
+/// A taken word writes its bit (filled already, or usable now; only usable now in a set's
+/// first frame) in the same edge that reads the next position, never the same address.
+/// Protocol: `restart` (a frame opens) never comes with `take`, and a frame's first word is
+/// taken at the earliest the cycle after `restart`.
+#[derive(LogicBlock, Default)]
+pub struct HdrSelect {
+    pub clock: Signal<In, Clock>,
+    /// A frame opens: its first word is group 0. Samples `first_of_set` and `exposure_index`.
+    pub restart: Signal<In, Bit>,
+    /// The opening frame is a set's first (the longest exposure): the mask's old bits are
+    /// not read.
+    pub first_of_set: Signal<In, Bit>,
+    pub exposure_index: Signal<In, Bits<3>>,
+    /// The head word (a grouped word, `skylux_regmap::words::grouped`) is taken this cycle.
+    pub take: Signal<In, Bit>,
+    pub word: Signal<In, Bits<32>>,
+    /// Usable range of the luminance, 2^-14 DN, inclusive (`hdr.min`, `hdr.max`).
+    pub min_q14: Signal<In, Bits<30>>,
+    pub max_q14: Signal<In, Bits<30>>,
+    /// The head word as a map word (`skylux_regmap::words::hdr_map`).
+    pub map_word: Signal<Out, Bits<32>>,
+    /// Write it: its group is not filled yet.
+    pub map_write: Signal<Out, Bit>,
+
+    mask: RAM<Bit, MASK_ADDRESS_BITS>,
+    pos: DFF<Bits<MASK_ADDRESS_BITS>>,
+    set_first: DFF<Bit>,
+    index: DFF<Bits<3>>,
+
+    next_pos: Signal<Local, Bits<MASK_ADDRESS_BITS>>,
+    luma: Signal<Local, Bits<30>>,
+    usable: Signal<Local, Bit>,
+    filled: Signal<Local, Bit>,
+}
+
+impl Logic for HdrSelect {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, pos, set_first, index);
+        self.mask.read_clock.next = self.clock.val();
+        self.mask.write_clock.next = self.clock.val();
+
+        // ---- where the next head word lies ----------------------------------------------
+        self.next_pos.next = self.pos.q.val();
+        if self.take.val() {
+            self.next_pos.next = self.pos.q.val() + 1;
+        }
+        if self.restart.val() {
+            self.next_pos.next = 0.into();
+            self.set_first.d.next = self.first_of_set.val();
+            self.index.d.next = self.exposure_index.val();
+        }
+        self.pos.d.next = self.next_pos.val();
+        self.mask.read_address.next = self.next_pos.val();
+
+        // ---- the head word --------------------------------------------------------------
+        self.luma.next = self.word.val().get_bits::<30>(0);
+        self.usable.next = !self.word.val().get_bit(31)
+            & !self.word.val().get_bit(30)
+            & (self.luma.val() >= self.min_q14.val())
+            & (self.luma.val() <= self.max_q14.val());
+        self.filled.next = false;
+        if !self.set_first.q.val() {
+            self.filled.next = self.mask.read_data.val();
+        }
+        self.mask.write_address.next = self.pos.q.val();
+        self.mask.write_data.next = self.filled.val() | self.usable.val();
+        self.mask.write_enable.next = self.take.val();
+
+        // Flags, exposure index at bits 29..27, the luminance's Q16.11 below.
+        self.map_word.next = (bit_cast::<32, 2>(self.word.val().get_bits::<2>(30)) << 30)
+            | (bit_cast::<32, 3>(self.index.q.val()) << 27)
+            | bit_cast::<32, 27>(self.word.val().get_bits::<27>(3));
+        self.map_write.next = !self.filled.val();
+    }
+}
