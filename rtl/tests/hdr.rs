@@ -132,3 +132,32 @@ fn one_group_frames_back_to_back() {
         assert_eq!(got[0].1, k <= 1, "frame {k}");
     }
 }
+
+/// Positions past 2^20 live in the second block RAM: a set of two frames of 2^20 + 3000 groups
+/// (as many as a full 2592 x 1944 frame's 1,259,712 would not add much but time), the second
+/// frame's writes equal to the golden model's on both sides of the boundary.
+#[test]
+fn positions_past_two_to_the_twenty_use_the_second_ram() {
+    let mut rng = StdRng::seed_from_u64(20);
+    let mut bench = HdrBench::new(4);
+    let c = HdrConfig::default();
+    bench.configure(&c);
+    let mut mask = FilledMask::default();
+    let n = (1 << 20) + 3000;
+    let frames: Vec<Vec<u32>> = (0..2).map(|_| words(&mut rng, n, &c)).collect();
+    for (k, w) in frames.iter().enumerate() {
+        let f = SetFrame {
+            exposure_index: k as u8,
+            first_of_set: k == 0,
+            words: w,
+        };
+        let got = bench.frame(&f, || 0);
+        let expected = mask.frame(&c, &f);
+        assert!(got == expected, "frame {k} differs from the golden model");
+        if k == 1 {
+            let tail = &got[1 << 20..];
+            let masked = tail.iter().filter(|w| !w.1).count();
+            assert!(masked > 500 && masked < 2900, "past 2^20: {masked} masked");
+        }
+    }
+}

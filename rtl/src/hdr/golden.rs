@@ -3,9 +3,21 @@
 
 use skylux_regmap::words::{grouped, hdr_map};
 
-/// Groups the filled mask holds: positions are counted modulo this (the RTL's
-/// [`crate::hdr::MASK_ADDRESS_BITS`]-bit counter).
-pub const MASK_GROUPS: usize = 1 << 21;
+/// Bits of the filled mask: 2^20 for positions below 2^20, then 2^18 (the RTL's two block
+/// RAMs, [`crate::hdr::MASK_LOW_BITS`] and [`crate::hdr::MASK_HIGH_BITS`]).
+pub const MASK_GROUPS: usize = (1 << 20) + (1 << 18);
+
+/// Where the mask keeps group position `i`: positions count in 21 bits (wrapping); below 2^20
+/// they are their own slot, above it their low 18 bits pick one of the last 2^18 slots (no
+/// frame has more than 1,259,712 groups, so none alias).
+pub fn mask_slot(i: usize) -> usize {
+    let p = i % (1 << 21);
+    if p < 1 << 20 {
+        p
+    } else {
+        (1 << 20) + p % (1 << 18)
+    }
+}
 
 /// The selection's thresholds (`hdr.*` registers), on the grouped word's luminance.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -68,7 +80,7 @@ impl FilledMask {
             .iter()
             .enumerate()
             .map(|(i, &word)| {
-                let bit = &mut self.bits[i % MASK_GROUPS];
+                let bit = &mut self.bits[mask_slot(i)];
                 let filled = !frame.first_of_set && *bit;
                 *bit = filled || usable(config, word);
                 (hdr_map::from_grouped(word, frame.exposure_index), !filled)
@@ -170,6 +182,17 @@ mod tests {
                 vec![false, false, true]
             ]
         );
+    }
+
+    #[test]
+    fn mask_slots_cover_the_full_frame_once() {
+        let full = 1296 * 972;
+        let mut seen = vec![false; MASK_GROUPS];
+        for i in 0..full {
+            assert!(!std::mem::replace(&mut seen[mask_slot(i)], true), "{i}");
+        }
+        assert_eq!(mask_slot((1 << 20) + 5), (1 << 20) + 5);
+        assert_eq!(mask_slot((1 << 21) + 3), 3, "21-bit positions wrap");
     }
 
     #[test]

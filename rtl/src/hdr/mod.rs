@@ -13,4 +13,4 @@ pub mod bench;
 pub mod golden;
 mod select;
 
-pub use select::{HdrSelect, MASK_ADDRESS_BITS};
+pub use select::{HdrSelect, MASK_ADDRESS_BITS, MASK_HIGH_BITS, MASK_LOW_BITS};

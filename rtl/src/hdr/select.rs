@@ -3,9 +3,13 @@
 
 use rust_hdl::prelude::*;
 
-/// Address bits of the filled mask: 2^21 groups cover the full 1296 x 972 groups of the
-/// MT9P031's 2592 x 1944 array (1,259,712; hardware-facts.md §1).
+/// Bits of a group's position: 2^21 covers the full 1296 x 972 groups of the MT9P031's
+/// 2592 x 1944 array (1,259,712; hardware-facts.md §1).
 pub const MASK_ADDRESS_BITS: usize = 21;
+/// The mask is two block RAMs, 2^20 + 2^18 = 1,310,720 bits, since one of 2^21 would spend
+/// 96 M10K on positions no frame has (`golden::mask_slot` places a position).
+pub const MASK_LOW_BITS: usize = 20;
+pub const MASK_HIGH_BITS: usize = 18;
 
 /// The filled mask and the map word, with no latency: the outputs describe the word at the
 /// head of the DMA's FIFO, so the ingest puts them into the beat it pushes when it takes it.
@@ -33,10 +37,12 @@ pub struct HdrSelect {
     pub max_q14: Signal<In, Bits<30>>,
     /// The head word as a map word (`skylux_regmap::words::hdr_map`).
     pub map_word: Signal<Out, Bits<32>>,
-    /// Write it: its group is not filled yet.
+    /// With `take`: write the word, its group is not filled yet. Low without `take` (so the
+    /// mask's power-up contents, undefined in Verilog, never reach it between frames).
     pub map_write: Signal<Out, Bit>,
 
-    mask: RAM<Bit, MASK_ADDRESS_BITS>,
+    mask_low: RAM<Bit, MASK_LOW_BITS>,
+    mask_high: RAM<Bit, MASK_HIGH_BITS>,
     pos: DFF<Bits<MASK_ADDRESS_BITS>>,
     set_first: DFF<Bit>,
     index: DFF<Bits<3>>,
@@ -51,8 +57,10 @@ impl Logic for HdrSelect {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, pos, set_first, index);
-        self.mask.read_clock.next = self.clock.val();
-        self.mask.write_clock.next = self.clock.val();
+        self.mask_low.read_clock.next = self.clock.val();
+        self.mask_low.write_clock.next = self.clock.val();
+        self.mask_high.read_clock.next = self.clock.val();
+        self.mask_high.write_clock.next = self.clock.val();
 
         // ---- where the next head word lies ----------------------------------------------
         self.next_pos.next = self.pos.q.val();
@@ -65,7 +73,9 @@ impl Logic for HdrSelect {
             self.index.d.next = self.exposure_index.val();
         }
         self.pos.d.next = self.next_pos.val();
-        self.mask.read_address.next = self.next_pos.val();
+        // Positions below 2^20 in the low RAM, the others in the high one.
+        self.mask_low.read_address.next = self.next_pos.val().get_bits::<20>(0);
+        self.mask_high.read_address.next = self.next_pos.val().get_bits::<18>(0);
 
         // ---- the head word --------------------------------------------------------------
         self.luma.next = self.word.val().get_bits::<30>(0);
@@ -75,16 +85,24 @@ impl Logic for HdrSelect {
             & (self.luma.val() <= self.max_q14.val());
         self.filled.next = false;
         if !self.set_first.q.val() {
-            self.filled.next = self.mask.read_data.val();
+            // The RAMs read at the edge that made `pos` this position.
+            if self.pos.q.val().get_bit(20) {
+                self.filled.next = self.mask_high.read_data.val();
+            } else {
+                self.filled.next = self.mask_low.read_data.val();
+            }
         }
-        self.mask.write_address.next = self.pos.q.val();
-        self.mask.write_data.next = self.filled.val() | self.usable.val();
-        self.mask.write_enable.next = self.take.val();
+        self.mask_low.write_address.next = self.pos.q.val().get_bits::<20>(0);
+        self.mask_high.write_address.next = self.pos.q.val().get_bits::<18>(0);
+        self.mask_low.write_data.next = self.filled.val() | self.usable.val();
+        self.mask_high.write_data.next = self.filled.val() | self.usable.val();
+        self.mask_low.write_enable.next = self.take.val() & !self.pos.q.val().get_bit(20);
+        self.mask_high.write_enable.next = self.take.val() & self.pos.q.val().get_bit(20);
 
         // Flags, exposure index at bits 29..27, the luminance's Q16.11 below.
         self.map_word.next = (bit_cast::<32, 2>(self.word.val().get_bits::<2>(30)) << 30)
             | (bit_cast::<32, 3>(self.index.q.val()) << 27)
             | bit_cast::<32, 27>(self.word.val().get_bits::<27>(3));
-        self.map_write.next = !self.filled.val();
+        self.map_write.next = self.take.val() & !self.filled.val();
     }
 }
