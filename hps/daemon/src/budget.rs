@@ -336,6 +336,7 @@ fn hps_read(repeat: usize) -> HpsRead {
             timestamp_cycles: 1,
             exposure_index: slot as u8,
             raw: true,
+            hdr_map: false,
             flags: 0,
             last_line_pixels: WIDTH_PX as u16,
             lines: HEIGHT_PX as u16,

@@ -207,6 +207,7 @@ mod tests {
             timestamp_cycles: 1234,
             exposure_index: 2,
             raw: false,
+            hdr_map: false,
             flags,
             last_line_pixels: 8,
             lines: 4,
