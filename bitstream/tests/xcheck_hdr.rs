@@ -37,8 +37,8 @@ fn hdr_select_verilog_equals_rust_hdl() {
     assert_eq!(bench.frame(&f, || 0), mask.frame(&config, &f));
     for set in 0..4 {
         let config = HdrConfig {
-            min_q14: rng.gen_range(0..1 << 16),
-            max_q14: rng.gen_range(1 << 26..1 << 29),
+            min_q11: rng.gen_range(0..1 << 13),
+            max_q11: rng.gen_range(1 << 23..1 << 26),
         };
         bench.configure(&config);
         for k in 0..5u8 {

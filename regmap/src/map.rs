@@ -593,13 +593,14 @@ register_block! {
         }
         /// A group is usable at or above this luminance (and inside `bayer.valid`).
         min @ 0x004 {
-            /// Grouped-word units (2^-14 DN).
-            Q14 [0 +: 30] RW = 0;
+            /// Map-word units (2^-11 DN): the grouped word's luminance without its last three
+            /// bits, so the map word tells a usable group exactly.
+            Q11 [0 +: 27] RW = 0;
         }
         /// ... and at or below this one.
         max @ 0x008 {
-            /// Grouped-word units (2^-14 DN).
-            Q14 [0 +: 30] RW = 0x3FFF_FFFF;
+            /// Map-word units (2^-11 DN).
+            Q11 [0 +: 27] RW = 0x7FF_FFFF;
         }
     }
 }

@@ -10,17 +10,22 @@ use skylux_regmap::words::grouped;
 use skylux_rtl::hdr::bench::HdrBench;
 use skylux_rtl::hdr::golden::{apply, select, FilledMask, HdrConfig, SetFrame};
 
-/// Words around the thresholds: below, at, inside, at the top, above, with flags at random.
+/// Words around the thresholds (which compare the luminance without its last three bits):
+/// below, at the floor's first and last step below, at the ceiling's last step and above,
+/// inside, with flags at random.
 fn words(rng: &mut StdRng, n: usize, c: &HdrConfig) -> Vec<u32> {
     let top = grouped::LUMA_MAX_Q14 as u32;
+    let (lo, hi) = ((c.min_q11 << 3).min(top), ((c.max_q11 << 3) | 7).min(top));
     (0..n)
         .map(|_| {
-            let l = match rng.gen_range(0..6) {
-                0 => rng.gen_range(0..=c.min_q14),
-                1 => c.min_q14,
-                2 => c.max_q14.min(top),
-                3 => rng.gen_range(c.max_q14.min(top)..=top),
-                _ => rng.gen_range(c.min_q14..=c.max_q14.min(top)),
+            let l = match rng.gen_range(0..7) {
+                0 => rng.gen_range(0..=lo),
+                1 => lo.saturating_sub(1),
+                2 => lo,
+                3 => hi,
+                4 => (hi + 1).min(top),
+                5 => rng.gen_range(hi..=top),
+                _ => rng.gen_range(lo..=hi),
             };
             grouped::pack(l, rng.gen_bool(0.15), rng.gen_bool(0.2))
         })
@@ -31,11 +36,11 @@ fn random_config(rng: &mut StdRng) -> HdrConfig {
     if rng.gen_bool(0.3) {
         return HdrConfig::default();
     }
-    let top = grouped::LUMA_MAX_Q14 as u32;
+    let top = (grouped::LUMA_MAX_Q14 >> 3) as u32;
     let (a, b) = (rng.gen_range(0..top), rng.gen_range(0..top));
     HdrConfig {
-        min_q14: a.min(b),
-        max_q14: a.max(b),
+        min_q11: a.min(b),
+        max_q11: a.max(b),
     }
 }
 

@@ -60,8 +60,8 @@ pub struct CapturePath {
     pub sun_window_y_max: Signal<In, Bits<11>>,
     pub hdr_ctrl_enable: Signal<In, Bit>,
     pub hdr_ctrl_first_index: Signal<In, Bits<3>>,
-    pub hdr_min_q14: Signal<In, Bits<30>>,
-    pub hdr_max_q14: Signal<In, Bits<30>>,
+    pub hdr_min_q11: Signal<In, Bits<27>>,
+    pub hdr_max_q11: Signal<In, Bits<27>>,
     // Frame tags from the exposure sequencer.
     pub tag_exposure_index: Signal<In, Bits<3>>,
     pub tag_frame_number: Signal<In, Bits<32>>,
@@ -169,8 +169,8 @@ impl Logic for CapturePath {
         self.ingest.beat_room.next = self.writer.beat_room.val();
         self.ingest.hdr_enable.next = self.hdr_ctrl_enable.val();
         self.ingest.hdr_first_index.next = self.hdr_ctrl_first_index.val();
-        self.ingest.hdr_min_q14.next = self.hdr_min_q14.val();
-        self.ingest.hdr_max_q14.next = self.hdr_max_q14.val();
+        self.ingest.hdr_min_q11.next = self.hdr_min_q11.val();
+        self.ingest.hdr_max_q11.next = self.hdr_max_q11.val();
 
         self.writer.restart.next = self.dma_ctrl_reset.val();
         self.writer.window_base.next = self.dma_window_base_addr.val();

@@ -65,8 +65,8 @@ pub struct FrameIngest {
     /// and the usable luminance range.
     pub hdr_enable: Signal<In, Bit>,
     pub hdr_first_index: Signal<In, Bits<3>>,
-    pub hdr_min_q14: Signal<In, Bits<30>>,
-    pub hdr_max_q14: Signal<In, Bits<30>>,
+    pub hdr_min_q11: Signal<In, Bits<27>>,
+    pub hdr_max_q11: Signal<In, Bits<27>>,
     /// From the writer.
     pub writer_idle: Signal<In, Bit>,
     pub frame_closed: Signal<In, Bit>,
@@ -278,8 +278,8 @@ impl Logic for FrameIngest {
         self.hdr.exposure_index.next = self.pending_exposure.q.val();
         self.hdr.take.next = false;
         self.hdr.word.next = self.payload.val();
-        self.hdr.min_q14.next = self.hdr_min_q14.val();
-        self.hdr.max_q14.next = self.hdr_max_q14.val();
+        self.hdr.min_q11.next = self.hdr_min_q11.val();
+        self.hdr.max_q11.next = self.hdr_max_q11.val();
         self.out_word.next = self.payload.val();
         self.out_enables.next = 0xF.into();
         if self.hdr_frame.q.val() {

@@ -34,8 +34,8 @@ impl HdrBench {
 
     pub fn configure(&mut self, c: &HdrConfig) {
         let d = &mut self.driver.dut;
-        d.min_q14.next = u64::from(c.min_q14).into();
-        d.max_q14.next = u64::from(c.max_q14).into();
+        d.min_q11.next = u64::from(c.min_q11).into();
+        d.max_q11.next = u64::from(c.max_q11).into();
     }
 
     /// Settles the inputs set, then one rising and falling edge.

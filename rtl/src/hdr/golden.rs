@@ -1,7 +1,9 @@
 //! Golden model of the HDR selection, written from the specification (issue 22 item 1), not
 //! from the RTL: frames of grouped words in raster order, no clocks or pipelines.
 
-use skylux_regmap::words::{grouped, hdr_map};
+use skylux_regmap::words::hdr_map;
+#[cfg(test)]
+use skylux_regmap::words::grouped;
 
 /// Bits of the filled mask: 2^20 for positions below 2^20, then 2^18 (the RTL's two block
 /// RAMs, [`crate::hdr::MASK_LOW_BITS`] and [`crate::hdr::MASK_HIGH_BITS`]).
@@ -19,31 +21,11 @@ pub fn mask_slot(i: usize) -> usize {
     }
 }
 
-/// The selection's thresholds (`hdr.*` registers), on the grouped word's luminance.
-#[derive(Copy, Clone, Debug, PartialEq, Eq)]
-pub struct HdrConfig {
-    /// A group is usable at or above this (2^-14 DN): a floor below which a shorter exposure
-    /// would do no worse. 0 leaves it to `bayer.valid.MIN`.
-    pub min_q14: u32,
-    /// ... and at or below this: a saturation ceiling tighter than `bayer.valid.MAX` if wanted.
-    pub max_q14: u32,
-}
+pub use skylux_regmap::hdr_values::HdrConfig;
 
-impl Default for HdrConfig {
-    /// The registers' reset values: only the grouped word's flags decide.
-    fn default() -> Self {
-        HdrConfig {
-            min_q14: 0,
-            max_q14: (1 << grouped::LUMA_WIDTH) - 1,
-        }
-    }
-}
-
-/// Whether a group's word is usable: no sample out of `bayer.valid`'s range and the luminance
-/// inside the thresholds.
+/// Whether a group's word is usable ([`HdrConfig::usable`], the rule the HPS shares).
 pub fn usable(config: &HdrConfig, word: u32) -> bool {
-    let l = grouped::luma_q14(word);
-    grouped::valid(word) && l >= config.min_q14 && l <= config.max_q14
+    config.usable(word)
 }
 
 /// One frame of a set as the fabric sees it.
@@ -198,13 +180,14 @@ mod tests {
     #[test]
     fn thresholds_narrow_the_usable_range() {
         let c = HdrConfig {
-            min_q14: 100,
-            max_q14: 200,
+            min_q11: 100,
+            max_q11: 200,
         };
-        assert!(!usable(&c, g(99, OK, OK)));
-        assert!(usable(&c, g(100, OK, OK)));
-        assert!(usable(&c, g(200, OK, OK)));
-        assert!(!usable(&c, g(201, OK, OK)));
+        // Luminances in 2^-14 DN: the thresholds apply to them without their last 3 bits.
+        assert!(!usable(&c, g(799, OK, OK)));
+        assert!(usable(&c, g(800, OK, OK)));
+        assert!(usable(&c, g(1607, OK, OK)));
+        assert!(!usable(&c, g(1608, OK, OK)));
         assert!(!usable(&c, g(150, true, OK)));
         assert!(!usable(&HdrConfig::default(), g(150, OK, true)));
     }

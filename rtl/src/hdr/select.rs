@@ -32,9 +32,10 @@ pub struct HdrSelect {
     /// The head word (a grouped word, `skylux_regmap::words::grouped`) is taken this cycle.
     pub take: Signal<In, Bit>,
     pub word: Signal<In, Bits<32>>,
-    /// Usable range of the luminance, 2^-14 DN, inclusive (`hdr.min`, `hdr.max`).
-    pub min_q14: Signal<In, Bits<30>>,
-    pub max_q14: Signal<In, Bits<30>>,
+    /// Usable range of the luminance in the map word's units, 2^-11 DN, inclusive (`hdr.min`,
+    /// `hdr.max`).
+    pub min_q11: Signal<In, Bits<27>>,
+    pub max_q11: Signal<In, Bits<27>>,
     /// The head word as a map word (`skylux_regmap::words::hdr_map`).
     pub map_word: Signal<Out, Bits<32>>,
     /// With `take`: write the word, its group is not filled yet. Low without `take` (so the
@@ -48,7 +49,7 @@ pub struct HdrSelect {
     index: DFF<Bits<3>>,
 
     next_pos: Signal<Local, Bits<MASK_ADDRESS_BITS>>,
-    luma: Signal<Local, Bits<30>>,
+    luma: Signal<Local, Bits<27>>,
     usable: Signal<Local, Bit>,
     filled: Signal<Local, Bit>,
 }
@@ -78,11 +79,11 @@ impl Logic for HdrSelect {
         self.mask_high.read_address.next = self.next_pos.val().get_bits::<18>(0);
 
         // ---- the head word --------------------------------------------------------------
-        self.luma.next = self.word.val().get_bits::<30>(0);
+        self.luma.next = self.word.val().get_bits::<27>(3);
         self.usable.next = !self.word.val().get_bit(31)
             & !self.word.val().get_bit(30)
-            & (self.luma.val() >= self.min_q14.val())
-            & (self.luma.val() <= self.max_q14.val());
+            & (self.luma.val() >= self.min_q11.val())
+            & (self.luma.val() <= self.max_q11.val());
         self.filled.next = false;
         if !self.set_first.q.val() {
             // The RAMs read at the edge that made `pos` this position.
@@ -102,7 +103,7 @@ impl Logic for HdrSelect {
         // Flags, exposure index at bits 29..27, the luminance's Q16.11 below.
         self.map_word.next = (bit_cast::<32, 2>(self.word.val().get_bits::<2>(30)) << 30)
             | (bit_cast::<32, 3>(self.index.q.val()) << 27)
-            | bit_cast::<32, 27>(self.word.val().get_bits::<27>(3));
+            | bit_cast::<32, 27>(self.luma.val());
         self.map_write.next = self.take.val() & !self.filled.val();
     }
 }
