@@ -457,14 +457,14 @@
 #define SKYLUX_SUN_FRAMES_COUNT_SHIFT 0u
 #define SKYLUX_SUN_FRAMES_COUNT_MASK 0x0000FFFFu
 
-/* hdr: HDR in the fabric (`skylux_rtl::hdr`; word format `crate::words::hdr_map`): the DMA writes the exposures of a set, long to short, as one map into one ring slot (set `dma.slots` to 1), each group from the longest exposure in which it is usable, with byte enables masking the groups already written. Grouped mode only; read the map after the set's last `FRAME_DONE`. */
+/* hdr: HDR in the fabric (`skylux_rtl::hdr`; word format `crate::words::hdr_map`): the DMA writes the frames of a set, long to short, as one map into one ring slot (set `dma.slots` to 1), each group from the longest exposure in which it is usable, with byte enables masking the groups already written. Grouped mode only; read the map after the set's last `FRAME_DONE`. A set may span several sequences (shield openings). */
 #define SKYLUX_HDR_BASE 0x8000u
 #define SKYLUX_HDR_CTRL_OFFSET 0x8000u
 #define SKYLUX_HDR_CTRL_RESET 0x00000000u
 #define SKYLUX_HDR_CTRL_ENABLE_SHIFT 0u
 #define SKYLUX_HDR_CTRL_ENABLE_MASK 0x00000001u
-#define SKYLUX_HDR_CTRL_FIRST_INDEX_SHIFT 4u
-#define SKYLUX_HDR_CTRL_FIRST_INDEX_MASK 0x00000070u
+#define SKYLUX_HDR_CTRL_NEW_SET_SHIFT 1u
+#define SKYLUX_HDR_CTRL_NEW_SET_MASK 0x00000002u
 #define SKYLUX_HDR_MIN_OFFSET 0x8004u
 #define SKYLUX_HDR_MIN_RESET 0x00000000u
 #define SKYLUX_HDR_MIN_Q11_SHIFT 0u

@@ -578,18 +578,19 @@ register_block! {
 
 register_block! {
     /// HDR in the fabric (`skylux_rtl::hdr`; word format `crate::words::hdr_map`): the DMA
-    /// writes the exposures of a set, long to short, as one map into one ring slot (set
+    /// writes the frames of a set, long to short, as one map into one ring slot (set
     /// `dma.slots` to 1), each group from the longest exposure in which it is usable, with
     /// byte enables masking the groups already written. Grouped mode only; read the map after
-    /// the set's last `FRAME_DONE`.
+    /// the set's last `FRAME_DONE`. A set may span several sequences (shield openings).
     hdr @ 0x8000 {
-        /// Whether and where a set begins.
+        /// Map mode, and where a set begins.
         ctrl @ 0x000 {
             /// Write maps instead of frames (grouped mode only).
             ENABLE [0 +: 1] RW = 0;
-            /// The exposure index that begins a set (the longest exposure): its frame writes
-            /// every group, whatever earlier sets left.
-            FIRST_INDEX [4 +: 3] RW = 0;
+            /// The next map frame begins a set (the longest exposure): it writes every group,
+            /// whatever earlier sets left, and is the map words' exposure 0; each later frame
+            /// counts one up (to 7).
+            NEW_SET [1 +: 1] W1P = 0;
         }
         /// A group is usable at or above this luminance (and inside `bayer.valid`).
         min @ 0x004 {

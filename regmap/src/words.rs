@@ -125,7 +125,8 @@ pub mod grouped {
 ///   (truncated). The integer part is whole (16 bits hold [`grouped::LUMA_MAX_Q14`]); the
 ///   2^-11 DN step is below 1e-4 of the smallest usable signal (`bayer.valid.MIN` minus
 ///   black, tens of DN), so dropping three bits costs nothing measurable.
-/// - EXPOSURE: the frame's exposure index in the sequence (`seq.*`), as in its descriptor.
+/// - EXPOSURE: the frame's place in its set: 0 for the frame after `hdr.ctrl.NEW_SET` (the
+///   longest exposure), one more for each later frame, 7 for the eighth and after.
 /// - UNDER, OVER: the grouped word's flags, unchanged.
 pub mod hdr_map {
     use super::grouped;
@@ -140,7 +141,7 @@ pub mod hdr_map {
     pub const LUMA_MASK: u32 = (1 << LUMA_WIDTH) - 1;
     /// Position of the exposure index.
     pub const EXPOSURE_LSB: u32 = 27;
-    /// Width of the exposure index (`seq` has up to eight exposures).
+    /// Width of the exposure field (`seq` has up to eight exposures).
     pub const EXPOSURE_WIDTH: u32 = 3;
 
     // The largest grouped luminance fits, and the fields do not overlap the flags.
@@ -161,7 +162,7 @@ pub mod hdr_map {
     pub fn luma(word: u32) -> f64 {
         luma_q11(word) as f64 / (1u32 << LUMA_FRAC_BITS) as f64
     }
-    /// The exposure the word came from.
+    /// The place in its set of the frame the word came from.
     pub const fn exposure_index(word: u32) -> u8 {
         ((word >> EXPOSURE_LSB) & 7) as u8
     }

@@ -80,17 +80,20 @@ impl PixelSource for LogRamp {
 #[test]
 #[ignore = "about 10 minutes: run with --ignored"]
 fn the_core_writes_the_golden_map_of_a_five_exposure_set_256_by_192() {
-    run_set(256, 192);
+    run_set(256, 192, false);
 }
 
+/// The set split over two sequences (as two shield openings are): the exposure tags restart,
+/// the set does not.
 #[test]
-fn the_core_writes_the_golden_map_of_a_five_exposure_set_32_by_16() {
-    run_set(32, 16);
+fn the_core_writes_the_golden_map_of_a_five_exposure_set_over_two_sequences_32_by_16() {
+    run_set(32, 16, true);
 }
 
-/// One set over a `WIDTH` x `HEIGHT` window, checked end to end.
+/// One set over a `WIDTH` x `HEIGHT` window, in one sequence or in two (3 + 2 exposures),
+/// checked end to end.
 #[allow(non_snake_case)]
-fn run_set(WIDTH: u32, HEIGHT: u32) {
+fn run_set(WIDTH: u32, HEIGHT: u32, split: bool) {
     let groups = (WIDTH / 2 * HEIGHT / 2) as usize;
     let settings = Arc::new(Mutex::new(vec![]));
     let capture = {
@@ -127,7 +130,6 @@ fn run_set(WIDTH: u32, HEIGHT: u32) {
     })
     .unwrap();
     f.capture_configure(&capture).unwrap();
-    f.set_exposures(&slots()).unwrap();
     f.configure_shield(&ShieldConfig {
         steps: 3,
         step_period_cycles: 40,
@@ -136,17 +138,22 @@ fn run_set(WIDTH: u32, HEIGHT: u32) {
     })
     .unwrap();
     let config = HdrConfig::default();
-    f.hdr_configure(&config, 0, true).unwrap();
-    let outcome = f.run_sequence(2_000_000).unwrap();
-    assert_eq!(outcome.frames, 5);
-    let mut written = 0;
-    for _ in 0..200_000 {
-        written = f.frames_written().unwrap();
-        if written >= 5 {
-            break;
+    f.hdr_configure(&config, true).unwrap();
+    f.hdr_new_set().unwrap();
+    let sequences = if split { vec![0..3, 3..5] } else { vec![0..5] };
+    for range in sequences.clone() {
+        f.set_exposures(&slots()[range.clone()]).unwrap();
+        let outcome = f.run_sequence(2_000_000).unwrap();
+        assert_eq!(outcome.frames as usize, range.len());
+        let mut written = 0;
+        for _ in 0..200_000 {
+            written = f.frames_written().unwrap();
+            if written as usize >= range.end {
+                break;
+            }
         }
+        assert_eq!(written as usize, range.end, "the DMA finished every frame");
     }
-    assert_eq!(written, 5, "the DMA finished every frame");
     let faults = f.capture_take_faults().unwrap();
     assert!(!faults.any(), "{faults:?}");
 
@@ -158,7 +165,9 @@ fn run_set(WIDTH: u32, HEIGHT: u32) {
         .expect("slot 0 holds the map");
     let d = &got.descriptor;
     assert!(d.hdr_map && !d.raw, "{d:?}");
-    assert_eq!((d.exposure_index, d.flags), (4, 0));
+    // The last frame's own tag: its index in its sequence.
+    let last_tag = sequences.last().map_or(0, |r| r.len() - 1);
+    assert_eq!((usize::from(d.exposure_index), d.flags), (last_tag, 0));
     assert_eq!(got.checksum_ok(), None, "a map has no payload checksum");
 
     // The golden model over the frames the sensor sent.

@@ -229,9 +229,9 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
     reg  [10:0] regs$sun_box_y_max;
     reg  [15:0] regs$sun_frames_count;
     wire  regs$hdr_ctrl_enable;
-    wire  [2:0] regs$hdr_ctrl_first_index;
-    wire  [29:0] regs$hdr_min_q14;
-    wire  [29:0] regs$hdr_max_q14;
+    wire  regs$hdr_ctrl_new_set;
+    wire  [26:0] regs$hdr_min_q11;
+    wire  [26:0] regs$hdr_max_q11;
     reg  sensor$clock;
     reg  sensor$i2c_ctrl_start;
     reg  sensor$i2c_ctrl_read;
@@ -333,9 +333,9 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
     reg  [10:0] capture$sun_window_y_min;
     reg  [10:0] capture$sun_window_y_max;
     reg  capture$hdr_ctrl_enable;
-    reg  [2:0] capture$hdr_ctrl_first_index;
-    reg  [29:0] capture$hdr_min_q14;
-    reg  [29:0] capture$hdr_max_q14;
+    reg  capture$hdr_ctrl_new_set;
+    reg  [26:0] capture$hdr_min_q11;
+    reg  [26:0] capture$hdr_max_q11;
     reg  [2:0] capture$tag_exposure_index;
     reg  [31:0] capture$tag_frame_number;
     reg  [63:0] capture$tag_timestamp;
@@ -602,9 +602,9 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
         .sun_box_y_max(regs$sun_box_y_max),
         .sun_frames_count(regs$sun_frames_count),
         .hdr_ctrl_enable(regs$hdr_ctrl_enable),
-        .hdr_ctrl_first_index(regs$hdr_ctrl_first_index),
-        .hdr_min_q14(regs$hdr_min_q14),
-        .hdr_max_q14(regs$hdr_max_q14)
+        .hdr_ctrl_new_set(regs$hdr_ctrl_new_set),
+        .hdr_min_q11(regs$hdr_min_q11),
+        .hdr_max_q11(regs$hdr_max_q11)
     );
     skylux_core$sensor sensor(
         .clock(sensor$clock),
@@ -710,9 +710,9 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
         .sun_window_y_min(capture$sun_window_y_min),
         .sun_window_y_max(capture$sun_window_y_max),
         .hdr_ctrl_enable(capture$hdr_ctrl_enable),
-        .hdr_ctrl_first_index(capture$hdr_ctrl_first_index),
-        .hdr_min_q14(capture$hdr_min_q14),
-        .hdr_max_q14(capture$hdr_max_q14),
+        .hdr_ctrl_new_set(capture$hdr_ctrl_new_set),
+        .hdr_min_q11(capture$hdr_min_q11),
+        .hdr_max_q11(capture$hdr_max_q11),
         .tag_exposure_index(capture$tag_exposure_index),
         .tag_frame_number(capture$tag_frame_number),
         .tag_timestamp(capture$tag_timestamp),
@@ -994,15 +994,15 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
         regs$sun_box_y_max = capture$sun_box_y_max;
         regs$sun_frames_count = capture$sun_frames_count;
         capture$hdr_ctrl_enable = regs$hdr_ctrl_enable;
-        capture$hdr_ctrl_first_index = regs$hdr_ctrl_first_index;
-        capture$hdr_min_q14 = regs$hdr_min_q14;
-        capture$hdr_max_q14 = regs$hdr_max_q14;
+        capture$hdr_ctrl_new_set = regs$hdr_ctrl_new_set;
+        capture$hdr_min_q11 = regs$hdr_min_q11;
+        capture$hdr_max_q11 = regs$hdr_max_q11;
     end
     
 endmodule // top
 
 
-module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sensor_data,capture_ctrl_enable,capture_ctrl_raw,capture_window_width,capture_window_height,bayer_mode_phase,bayer_black_level,bayer_valid_min,bayer_valid_max,bayer_weight_r_q2_14,bayer_weight_g_q2_14,bayer_weight_b_q2_14,dma_ctrl_enable,dma_ctrl_reset,dma_window_base_addr,dma_window_size_bytes,dma_slot_stride_bytes,dma_slots_count,dma_bus_timeout_cycles,sun_ctrl_enable,sun_ctrl_exposure_index,sun_threshold_q14,sun_window_x_min,sun_window_x_max,sun_window_y_min,sun_window_y_max,hdr_ctrl_enable,hdr_ctrl_first_index,hdr_min_q14,hdr_max_q14,tag_exposure_index,tag_frame_number,tag_timestamp,capture_status_frame_valid,capture_status_line_short_set,capture_status_line_long_set,capture_status_frame_short_set,capture_status_frame_long_set,capture_status_fifo_overflow_set,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,dma_status_busy,dma_status_slot,dma_status_frame_done_set,dma_status_out_of_window_set,dma_status_overflow_set,dma_status_bus_timeout_set,dma_frames_written_count,sun_count_groups,sun_over_count_groups,sun_sum_l_lo_value,sun_sum_l_hi_value,sun_sum_xl_lo_value,sun_sum_xl_hi_value,sun_sum_yl_lo_value,sun_sum_yl_hi_value,sun_max_l_q14,sun_box_x_min,sun_box_x_max,sun_box_y_min,sun_box_y_max,sun_frames_count,irq_frame_done,irq_dma_error,irq_capture_error,avm_address,avm_burstcount,avm_write,avm_writedata,avm_byteenable,avm_waitrequest);
+module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sensor_data,capture_ctrl_enable,capture_ctrl_raw,capture_window_width,capture_window_height,bayer_mode_phase,bayer_black_level,bayer_valid_min,bayer_valid_max,bayer_weight_r_q2_14,bayer_weight_g_q2_14,bayer_weight_b_q2_14,dma_ctrl_enable,dma_ctrl_reset,dma_window_base_addr,dma_window_size_bytes,dma_slot_stride_bytes,dma_slots_count,dma_bus_timeout_cycles,sun_ctrl_enable,sun_ctrl_exposure_index,sun_threshold_q14,sun_window_x_min,sun_window_x_max,sun_window_y_min,sun_window_y_max,hdr_ctrl_enable,hdr_ctrl_new_set,hdr_min_q11,hdr_max_q11,tag_exposure_index,tag_frame_number,tag_timestamp,capture_status_frame_valid,capture_status_line_short_set,capture_status_line_long_set,capture_status_frame_short_set,capture_status_frame_long_set,capture_status_fifo_overflow_set,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,dma_status_busy,dma_status_slot,dma_status_frame_done_set,dma_status_out_of_window_set,dma_status_overflow_set,dma_status_bus_timeout_set,dma_frames_written_count,sun_count_groups,sun_over_count_groups,sun_sum_l_lo_value,sun_sum_l_hi_value,sun_sum_xl_lo_value,sun_sum_xl_hi_value,sun_sum_yl_lo_value,sun_sum_yl_hi_value,sun_max_l_q14,sun_box_x_min,sun_box_x_max,sun_box_y_min,sun_box_y_max,sun_frames_count,irq_frame_done,irq_dma_error,irq_capture_error,avm_address,avm_burstcount,avm_write,avm_writedata,avm_byteenable,avm_waitrequest);
     
     // Module arguments
     input wire  pixclk;
@@ -1036,9 +1036,9 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
     input wire  [10:0] sun_window_y_min;
     input wire  [10:0] sun_window_y_max;
     input wire  hdr_ctrl_enable;
-    input wire  [2:0] hdr_ctrl_first_index;
-    input wire  [29:0] hdr_min_q14;
-    input wire  [29:0] hdr_max_q14;
+    input wire  hdr_ctrl_new_set;
+    input wire  [26:0] hdr_min_q11;
+    input wire  [26:0] hdr_max_q11;
     input wire  [2:0] tag_exposure_index;
     input wire  [31:0] tag_frame_number;
     input wire  [63:0] tag_timestamp;
@@ -1145,9 +1145,9 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
     reg  [31:0] ingest$tag_frame_number;
     reg  [63:0] ingest$tag_timestamp;
     reg  ingest$hdr_enable;
-    reg  [2:0] ingest$hdr_first_index;
-    reg  [29:0] ingest$hdr_min_q14;
-    reg  [29:0] ingest$hdr_max_q14;
+    reg  ingest$hdr_new_set;
+    reg  [26:0] ingest$hdr_min_q11;
+    reg  [26:0] ingest$hdr_max_q11;
     reg  ingest$writer_idle;
     reg  ingest$frame_closed;
     reg  ingest$beat_room;
@@ -1302,9 +1302,9 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
         .tag_frame_number(ingest$tag_frame_number),
         .tag_timestamp(ingest$tag_timestamp),
         .hdr_enable(ingest$hdr_enable),
-        .hdr_first_index(ingest$hdr_first_index),
-        .hdr_min_q14(ingest$hdr_min_q14),
-        .hdr_max_q14(ingest$hdr_max_q14),
+        .hdr_new_set(ingest$hdr_new_set),
+        .hdr_min_q11(ingest$hdr_min_q11),
+        .hdr_max_q11(ingest$hdr_max_q11),
         .writer_idle(ingest$writer_idle),
         .frame_closed(ingest$frame_closed),
         .beat_room(ingest$beat_room),
@@ -1442,9 +1442,9 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
         ingest$frame_closed = writer$frame_closed;
         ingest$beat_room = writer$beat_room;
         ingest$hdr_enable = hdr_ctrl_enable;
-        ingest$hdr_first_index = hdr_ctrl_first_index;
-        ingest$hdr_min_q14 = hdr_min_q14;
-        ingest$hdr_max_q14 = hdr_max_q14;
+        ingest$hdr_new_set = hdr_ctrl_new_set;
+        ingest$hdr_min_q11 = hdr_min_q11;
+        ingest$hdr_max_q11 = hdr_max_q11;
         writer$restart = dma_ctrl_reset;
         writer$window_base = dma_window_base_addr;
         writer$window_size = dma_window_size_bytes;
@@ -5072,7 +5072,7 @@ module skylux_core$capture$grouper$quads$out_top_right(d,q,clock);
 endmodule // skylux_core$capture$grouper$quads$out_top_right
 
 
-module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read,frame_valid_async,heartbeat_async,enable,raw,tag_exposure_index,tag_frame_number,tag_timestamp,hdr_enable,hdr_first_index,hdr_min_q14,hdr_max_q14,writer_idle,frame_closed,beat_room,beat_push,beat_data,beat_byteenable,frame_open,frame_ended,desc_frame_number,desc_timestamp,desc_info,desc_geometry,desc_words,desc_checksum,capture_status_frame_valid,capture_status_line_short_set,capture_status_line_long_set,capture_status_frame_short_set,capture_status_frame_long_set,capture_status_fifo_overflow_set,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,dma_status_overflow_set,taken_valid,taken_word,taken_first,taken_exposure_index);
+module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read,frame_valid_async,heartbeat_async,enable,raw,tag_exposure_index,tag_frame_number,tag_timestamp,hdr_enable,hdr_new_set,hdr_min_q11,hdr_max_q11,writer_idle,frame_closed,beat_room,beat_push,beat_data,beat_byteenable,frame_open,frame_ended,desc_frame_number,desc_timestamp,desc_info,desc_geometry,desc_words,desc_checksum,capture_status_frame_valid,capture_status_line_short_set,capture_status_line_long_set,capture_status_frame_short_set,capture_status_frame_long_set,capture_status_fifo_overflow_set,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,dma_status_overflow_set,taken_valid,taken_word,taken_first,taken_exposure_index);
     
     // Module arguments
     input wire  clock;
@@ -5088,9 +5088,9 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
     input wire  [31:0] tag_frame_number;
     input wire  [63:0] tag_timestamp;
     input wire  hdr_enable;
-    input wire  [2:0] hdr_first_index;
-    input wire  [29:0] hdr_min_q14;
-    input wire  [29:0] hdr_max_q14;
+    input wire  hdr_new_set;
+    input wire  [26:0] hdr_min_q11;
+    input wire  [26:0] hdr_max_q11;
     input wire  writer_idle;
     input wire  frame_closed;
     input wire  beat_room;
@@ -5134,8 +5134,8 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
     reg  [2:0] hdr$exposure_index;
     reg  hdr$take;
     reg  [31:0] hdr$word;
-    reg  [29:0] hdr$min_q14;
-    reg  [29:0] hdr$max_q14;
+    reg  [26:0] hdr$min_q11;
+    reg  [26:0] hdr$max_q11;
     wire  [31:0] hdr$map_word;
     wire  hdr$map_write;
     reg  [1:0] state$d;
@@ -5201,6 +5201,12 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
     reg  hdr_frame$d;
     wire  hdr_frame$q;
     reg  hdr_frame$clock;
+    reg  new_set_pending$d;
+    wire  new_set_pending$q;
+    reg  new_set_pending$clock;
+    reg  [2:0] set_ordinal$d;
+    wire  [2:0] set_ordinal$q;
+    reg  set_ordinal$clock;
     reg  [7:0] high_water$d;
     wire  [7:0] high_water$q;
     reg  high_water$clock;
@@ -5229,6 +5235,7 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
     reg  [31:0] marker_flags;
     reg  [31:0] out_word;
     reg  [3:0] out_enables;
+    reg  [2:0] next_ordinal;
     
     // Sub module instances
     skylux_core$capture$ingest$hdr hdr(
@@ -5238,8 +5245,8 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         .exposure_index(hdr$exposure_index),
         .take(hdr$take),
         .word(hdr$word),
-        .min_q14(hdr$min_q14),
-        .max_q14(hdr$max_q14),
+        .min_q11(hdr$min_q11),
+        .max_q11(hdr$max_q11),
         .map_word(hdr$map_word),
         .map_write(hdr$map_write)
     );
@@ -5348,6 +5355,16 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         .q(hdr_frame$q),
         .clock(hdr_frame$clock)
     );
+    skylux_core$capture$ingest$new_set_pending new_set_pending(
+        .d(new_set_pending$d),
+        .q(new_set_pending$q),
+        .clock(new_set_pending$clock)
+    );
+    skylux_core$capture$ingest$set_ordinal set_ordinal(
+        .d(set_ordinal$d),
+        .q(set_ordinal$q),
+        .clock(set_ordinal$clock)
+    );
     skylux_core$capture$ingest$high_water high_water(
         .d(high_water$d),
         .q(high_water$q),
@@ -5397,6 +5414,8 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         half_valid$clock = clock;
         half_enables$clock = clock;
         hdr_frame$clock = clock;
+        new_set_pending$clock = clock;
+        set_ordinal$clock = clock;
         high_water$clock = clock;
         last_high_water$clock = clock;
         last_pixels$clock = clock;
@@ -5423,6 +5442,8 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         half_valid$d = half_valid$q;
         half_enables$d = half_enables$q;
         hdr_frame$d = hdr_frame$q;
+        new_set_pending$d = new_set_pending$q;
+        set_ordinal$d = set_ordinal$q;
         high_water$d = high_water$q;
         last_high_water$d = last_high_water$q;
         last_pixels$d = last_pixels$q;
@@ -5491,12 +5512,22 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         info_start = (info_start & ~(1 << (32'h9)) | ((hdr_enable & ~raw) << (32'h9)));
         hdr$clock = clock;
         hdr$restart = 1'b0;
-        hdr$first_of_set = pending_exposure$q == hdr_first_index;
-        hdr$exposure_index = pending_exposure$q;
+        if (hdr_new_set) begin
+            new_set_pending$d = 1'b1;
+        end
+        next_ordinal = set_ordinal$q + 32'h1;
+        if (set_ordinal$q == 32'h7) begin
+            next_ordinal = 32'h7;
+        end
+        if (new_set_pending$q) begin
+            next_ordinal = 32'h0;
+        end
+        hdr$first_of_set = new_set_pending$q;
+        hdr$exposure_index = next_ordinal;
         hdr$take = 1'b0;
         hdr$word = payload;
-        hdr$min_q14 = hdr_min_q14;
-        hdr$max_q14 = hdr_max_q14;
+        hdr$min_q11 = hdr_min_q11;
+        hdr$max_q11 = hdr_max_q11;
         out_word = payload;
         out_enables = 32'hf;
         if (hdr_frame$q) begin
@@ -5533,6 +5564,10 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
                             half_valid$d = 1'b0;
                             hdr$restart = 1'b1;
                             hdr_frame$d = hdr_enable & ~raw;
+                            if (hdr_enable & ~raw) begin
+                                set_ordinal$d = next_ordinal;
+                                new_set_pending$d = 1'b0;
+                            end
                             state$d = IngestState$Frame;
                         end
                     end
@@ -5854,7 +5889,7 @@ module skylux_core$capture$ingest$hb_sync(d,q,clock);
 endmodule // skylux_core$capture$ingest$hb_sync
 
 
-module skylux_core$capture$ingest$hdr(clock,restart,first_of_set,exposure_index,take,word,min_q14,max_q14,map_word,map_write);
+module skylux_core$capture$ingest$hdr(clock,restart,first_of_set,exposure_index,take,word,min_q11,max_q11,map_word,map_write);
     
     // Module arguments
     input wire  clock;
@@ -5863,8 +5898,8 @@ module skylux_core$capture$ingest$hdr(clock,restart,first_of_set,exposure_index,
     input wire  [2:0] exposure_index;
     input wire  take;
     input wire  [31:0] word;
-    input wire  [29:0] min_q14;
-    input wire  [29:0] max_q14;
+    input wire  [26:0] min_q11;
+    input wire  [26:0] max_q11;
     output reg  [31:0] map_word;
     output reg  map_write;
     
@@ -5895,7 +5930,7 @@ module skylux_core$capture$ingest$hdr(clock,restart,first_of_set,exposure_index,
     
     // Local signals
     reg  [20:0] next_pos;
-    reg  [29:0] luma;
+    reg  [26:0] luma;
     reg  usable;
     reg  filled;
     
@@ -5958,8 +5993,8 @@ module skylux_core$capture$ingest$hdr(clock,restart,first_of_set,exposure_index,
         pos$d = next_pos;
         mask_low$read_address = next_pos[(32'h0)+:(20)];
         mask_high$read_address = next_pos[(32'h0)+:(18)];
-        luma = word[(32'h0)+:(30)];
-        usable = ~word[32'h1f] & ~word[32'h1e] & (luma >= min_q14) & (luma <= max_q14);
+        luma = word[(32'h3)+:(27)];
+        usable = ~word[32'h1f] & ~word[32'h1e] & (luma >= min_q11) & (luma <= max_q11);
         filled = 1'b0;
         if (~set_first$q) begin
             if (pos$q[32'h14]) begin
@@ -5975,7 +6010,7 @@ module skylux_core$capture$ingest$hdr(clock,restart,first_of_set,exposure_index,
         mask_high$write_data = filled | usable;
         mask_low$write_enable = take & ~pos$q[32'h14];
         mask_high$write_enable = take & pos$q[32'h14];
-        map_word = (((word[(32'h1e)+:(2)]) & 32'hffffffff) << 32'h1e) | (((index$q) & 32'hffffffff) << 32'h1b) | ((word[(32'h3)+:(27)]) & 32'hffffffff);
+        map_word = (((word[(32'h1e)+:(2)]) & 32'hffffffff) << 32'h1e) | (((index$q) & 32'hffffffff) << 32'h1b) | ((luma) & 32'hffffffff);
         map_write = take & ~filled;
     end
     
@@ -6211,6 +6246,25 @@ module skylux_core$capture$ingest$last_pixels(d,q,clock);
 endmodule // skylux_core$capture$ingest$last_pixels
 
 
+module skylux_core$capture$ingest$new_set_pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$ingest$new_set_pending
+
+
 module skylux_core$capture$ingest$pending_exposure(d,q,clock);
     
     // Module arguments
@@ -6266,6 +6320,25 @@ module skylux_core$capture$ingest$pending_timestamp(d,q,clock);
     end
           
 endmodule // skylux_core$capture$ingest$pending_timestamp
+
+
+module skylux_core$capture$ingest$set_ordinal(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$ingest$set_ordinal
 
 
 module skylux_core$capture$ingest$since_heartbeat(d,q,clock);
@@ -13356,7 +13429,7 @@ module skylux_core$raybox$written(d,q,clock);
 endmodule // skylux_core$raybox$written
 
 
-module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_byteenable,avs_readdata,irq,sys_scratch_value,sys_bus_status_unmapped_read,sys_bus_status_unmapped_write,sys_time_lo_cycles,sys_time_hi_cycles,sys_irq_status_frame_done,sys_irq_status_frame_done_set,sys_irq_status_sequence_done,sys_irq_status_sequence_done_set,sys_irq_status_dma_error,sys_irq_status_dma_error_set,sys_irq_status_capture_error,sys_irq_status_capture_error_set,sys_irq_status_i2c_done,sys_irq_status_i2c_done_set,sys_irq_status_raybox_done,sys_irq_status_raybox_done_set,sys_irq_enable_frame_done,sys_irq_enable_sequence_done,sys_irq_enable_dma_error,sys_irq_enable_capture_error,sys_irq_enable_i2c_done,sys_irq_enable_raybox_done,i2c_ctrl_start,i2c_ctrl_read,i2c_target_addr7,i2c_reg_addr_addr,i2c_write_data_data,i2c_read_data_data,i2c_status_busy,i2c_status_done,i2c_status_done_set,i2c_status_nack,i2c_status_nack_set,i2c_status_timeout,i2c_status_timeout_set,i2c_status_bus_stuck,i2c_status_bus_stuck_set,i2c_status_refused,i2c_status_refused_set,i2c_clock_div_half_period,i2c_timeout_cycles,i2c_sensor_pins_reset_n,i2c_sensor_pins_strobe,seq_ctrl_start,seq_ctrl_abort,seq_ctrl_ext_trigger,seq_count_exposures,seq_status_busy,seq_status_index,seq_status_shield_open,seq_status_done,seq_status_done_set,seq_status_shield_limit_hit,seq_status_shield_limit_hit_set,seq_status_i2c_error,seq_status_i2c_error_set,seq_status_refused,seq_status_refused_set,seq_status_aborted,seq_status_aborted_set,seq_shield_limit_cycles,seq_shield_steps_steps,seq_shield_step_period_cycles,seq_frame_number_value,seq_trigger_pulse_cycles,seq_exp_shutter_width_rows$0,seq_exp_shutter_width_rows$1,seq_exp_shutter_width_rows$2,seq_exp_shutter_width_rows$3,seq_exp_shutter_width_rows$4,seq_exp_shutter_width_rows$5,seq_exp_shutter_width_rows$6,seq_exp_shutter_width_rows$7,seq_exp_shutter_delay_value$0,seq_exp_shutter_delay_value$1,seq_exp_shutter_delay_value$2,seq_exp_shutter_delay_value$3,seq_exp_shutter_delay_value$4,seq_exp_shutter_delay_value$5,seq_exp_shutter_delay_value$6,seq_exp_shutter_delay_value$7,seq_exp_gain_code$0,seq_exp_gain_code$1,seq_exp_gain_code$2,seq_exp_gain_code$3,seq_exp_gain_code$4,seq_exp_gain_code$5,seq_exp_gain_code$6,seq_exp_gain_code$7,capture_ctrl_enable,capture_ctrl_raw,capture_window_width,capture_window_height,capture_status_frame_valid,capture_status_line_short,capture_status_line_short_set,capture_status_line_long,capture_status_line_long_set,capture_status_frame_short,capture_status_frame_short_set,capture_status_frame_long,capture_status_frame_long_set,capture_status_fifo_overflow,capture_status_fifo_overflow_set,capture_status_pixclk_stopped,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,bayer_mode_phase,bayer_black_level,bayer_valid_min,bayer_valid_max,bayer_weight_r_q2_14,bayer_weight_g_q2_14,bayer_weight_b_q2_14,dma_ctrl_enable,dma_ctrl_reset,dma_window_base_addr,dma_window_size_bytes,dma_slot_stride_bytes,dma_slots_count,dma_status_busy,dma_status_slot,dma_status_frame_done,dma_status_frame_done_set,dma_status_out_of_window,dma_status_out_of_window_set,dma_status_overflow,dma_status_overflow_set,dma_status_bus_timeout,dma_status_bus_timeout_set,dma_frames_written_count,dma_bus_timeout_cycles,raybox_ctrl_start,raybox_ctrl_abort,raybox_work_base_addr,raybox_work_count_items,raybox_result_base_addr,raybox_window_base_addr,raybox_window_size_bytes,raybox_status_busy,raybox_status_done,raybox_status_done_set,raybox_status_bad_descriptor,raybox_status_bad_descriptor_set,raybox_status_out_of_window,raybox_status_out_of_window_set,raybox_status_bus_timeout,raybox_status_bus_timeout_set,raybox_tests_done_count,raybox_info_lanes,raybox_bus_timeout_cycles,sun_ctrl_enable,sun_ctrl_exposure_index,sun_threshold_q14,sun_window_x_min,sun_window_x_max,sun_window_y_min,sun_window_y_max,sun_count_groups,sun_over_count_groups,sun_sum_l_lo_value,sun_sum_l_hi_value,sun_sum_xl_lo_value,sun_sum_xl_hi_value,sun_sum_yl_lo_value,sun_sum_yl_hi_value,sun_max_l_q14,sun_box_x_min,sun_box_x_max,sun_box_y_min,sun_box_y_max,sun_frames_count,hdr_ctrl_enable,hdr_ctrl_first_index,hdr_min_q14,hdr_max_q14);
+module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_byteenable,avs_readdata,irq,sys_scratch_value,sys_bus_status_unmapped_read,sys_bus_status_unmapped_write,sys_time_lo_cycles,sys_time_hi_cycles,sys_irq_status_frame_done,sys_irq_status_frame_done_set,sys_irq_status_sequence_done,sys_irq_status_sequence_done_set,sys_irq_status_dma_error,sys_irq_status_dma_error_set,sys_irq_status_capture_error,sys_irq_status_capture_error_set,sys_irq_status_i2c_done,sys_irq_status_i2c_done_set,sys_irq_status_raybox_done,sys_irq_status_raybox_done_set,sys_irq_enable_frame_done,sys_irq_enable_sequence_done,sys_irq_enable_dma_error,sys_irq_enable_capture_error,sys_irq_enable_i2c_done,sys_irq_enable_raybox_done,i2c_ctrl_start,i2c_ctrl_read,i2c_target_addr7,i2c_reg_addr_addr,i2c_write_data_data,i2c_read_data_data,i2c_status_busy,i2c_status_done,i2c_status_done_set,i2c_status_nack,i2c_status_nack_set,i2c_status_timeout,i2c_status_timeout_set,i2c_status_bus_stuck,i2c_status_bus_stuck_set,i2c_status_refused,i2c_status_refused_set,i2c_clock_div_half_period,i2c_timeout_cycles,i2c_sensor_pins_reset_n,i2c_sensor_pins_strobe,seq_ctrl_start,seq_ctrl_abort,seq_ctrl_ext_trigger,seq_count_exposures,seq_status_busy,seq_status_index,seq_status_shield_open,seq_status_done,seq_status_done_set,seq_status_shield_limit_hit,seq_status_shield_limit_hit_set,seq_status_i2c_error,seq_status_i2c_error_set,seq_status_refused,seq_status_refused_set,seq_status_aborted,seq_status_aborted_set,seq_shield_limit_cycles,seq_shield_steps_steps,seq_shield_step_period_cycles,seq_frame_number_value,seq_trigger_pulse_cycles,seq_exp_shutter_width_rows$0,seq_exp_shutter_width_rows$1,seq_exp_shutter_width_rows$2,seq_exp_shutter_width_rows$3,seq_exp_shutter_width_rows$4,seq_exp_shutter_width_rows$5,seq_exp_shutter_width_rows$6,seq_exp_shutter_width_rows$7,seq_exp_shutter_delay_value$0,seq_exp_shutter_delay_value$1,seq_exp_shutter_delay_value$2,seq_exp_shutter_delay_value$3,seq_exp_shutter_delay_value$4,seq_exp_shutter_delay_value$5,seq_exp_shutter_delay_value$6,seq_exp_shutter_delay_value$7,seq_exp_gain_code$0,seq_exp_gain_code$1,seq_exp_gain_code$2,seq_exp_gain_code$3,seq_exp_gain_code$4,seq_exp_gain_code$5,seq_exp_gain_code$6,seq_exp_gain_code$7,capture_ctrl_enable,capture_ctrl_raw,capture_window_width,capture_window_height,capture_status_frame_valid,capture_status_line_short,capture_status_line_short_set,capture_status_line_long,capture_status_line_long_set,capture_status_frame_short,capture_status_frame_short_set,capture_status_frame_long,capture_status_frame_long_set,capture_status_fifo_overflow,capture_status_fifo_overflow_set,capture_status_pixclk_stopped,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,bayer_mode_phase,bayer_black_level,bayer_valid_min,bayer_valid_max,bayer_weight_r_q2_14,bayer_weight_g_q2_14,bayer_weight_b_q2_14,dma_ctrl_enable,dma_ctrl_reset,dma_window_base_addr,dma_window_size_bytes,dma_slot_stride_bytes,dma_slots_count,dma_status_busy,dma_status_slot,dma_status_frame_done,dma_status_frame_done_set,dma_status_out_of_window,dma_status_out_of_window_set,dma_status_overflow,dma_status_overflow_set,dma_status_bus_timeout,dma_status_bus_timeout_set,dma_frames_written_count,dma_bus_timeout_cycles,raybox_ctrl_start,raybox_ctrl_abort,raybox_work_base_addr,raybox_work_count_items,raybox_result_base_addr,raybox_window_base_addr,raybox_window_size_bytes,raybox_status_busy,raybox_status_done,raybox_status_done_set,raybox_status_bad_descriptor,raybox_status_bad_descriptor_set,raybox_status_out_of_window,raybox_status_out_of_window_set,raybox_status_bus_timeout,raybox_status_bus_timeout_set,raybox_tests_done_count,raybox_info_lanes,raybox_bus_timeout_cycles,sun_ctrl_enable,sun_ctrl_exposure_index,sun_threshold_q14,sun_window_x_min,sun_window_x_max,sun_window_y_min,sun_window_y_max,sun_count_groups,sun_over_count_groups,sun_sum_l_lo_value,sun_sum_l_hi_value,sun_sum_xl_lo_value,sun_sum_xl_hi_value,sun_sum_yl_lo_value,sun_sum_yl_hi_value,sun_max_l_q14,sun_box_x_min,sun_box_x_max,sun_box_y_min,sun_box_y_max,sun_frames_count,hdr_ctrl_enable,hdr_ctrl_new_set,hdr_min_q11,hdr_max_q11);
     
     // Module arguments
     input wire  clock;
@@ -13544,9 +13617,9 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
     input wire  [10:0] sun_box_y_max;
     input wire  [15:0] sun_frames_count;
     output reg  hdr_ctrl_enable;
-    output reg  [2:0] hdr_ctrl_first_index;
-    output reg  [29:0] hdr_min_q14;
-    output reg  [29:0] hdr_max_q14;
+    output reg  hdr_ctrl_new_set;
+    output reg  [26:0] hdr_min_q11;
+    output reg  [26:0] hdr_max_q11;
     
     // Stub signals
     reg  [31:0] rdata$d;
@@ -13780,6 +13853,9 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
     reg  [31:0] r_hdr_ctrl$d;
     wire  [31:0] r_hdr_ctrl$q;
     reg  r_hdr_ctrl$clock;
+    reg  [31:0] p_hdr_ctrl$d;
+    wire  [31:0] p_hdr_ctrl$q;
+    reg  p_hdr_ctrl$clock;
     reg  [31:0] r_hdr_min$d;
     wire  [31:0] r_hdr_min$q;
     reg  r_hdr_min$clock;
@@ -14251,6 +14327,11 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         .q(r_hdr_ctrl$q),
         .clock(r_hdr_ctrl$clock)
     );
+    skylux_core$regs$p_hdr_ctrl p_hdr_ctrl(
+        .d(p_hdr_ctrl$d),
+        .q(p_hdr_ctrl$q),
+        .clock(p_hdr_ctrl$clock)
+    );
     skylux_core$regs$r_hdr_min r_hdr_min(
         .d(r_hdr_min$d),
         .q(r_hdr_min$q),
@@ -14341,6 +14422,7 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         r_sun_window_x$clock = clock;
         r_sun_window_y$clock = clock;
         r_hdr_ctrl$clock = clock;
+        p_hdr_ctrl$clock = clock;
         r_hdr_min$clock = clock;
         r_hdr_max$clock = clock;
         rdata$d = rdata$q;
@@ -14420,6 +14502,7 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         r_sun_window_x$d = r_sun_window_x$q;
         r_sun_window_y$d = r_sun_window_y$q;
         r_hdr_ctrl$d = r_hdr_ctrl$q;
+        p_hdr_ctrl$d = p_hdr_ctrl$q;
         r_hdr_min$d = r_hdr_min$q;
         r_hdr_max$d = r_hdr_max$q;
         byte_mask = 32'h0;
@@ -14512,6 +14595,7 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         nx_sun_window_x = r_sun_window_x$q;
         nx_sun_window_y = r_sun_window_y$q;
         nx_hdr_ctrl = r_hdr_ctrl$q;
+        p_hdr_ctrl$d = 32'h0;
         nx_hdr_min = r_hdr_min$q;
         nx_hdr_max = r_hdr_max$q;
         if (avs_write) begin
@@ -14883,15 +14967,16 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
                     end
                 8192:
                     begin
-                        nx_hdr_ctrl = ((r_hdr_ctrl$q & (~(byte_mask & 64'h71))) | (avs_writedata & (byte_mask & 64'h71))) & (~(avs_writedata & (byte_mask & 64'h0)));
+                        nx_hdr_ctrl = ((r_hdr_ctrl$q & (~(byte_mask & 64'h1))) | (avs_writedata & (byte_mask & 64'h1))) & (~(avs_writedata & (byte_mask & 64'h0)));
+                        p_hdr_ctrl$d = avs_writedata & (byte_mask & 64'h2);
                     end
                 8193:
                     begin
-                        nx_hdr_min = ((r_hdr_min$q & (~(byte_mask & 64'h3fffffff))) | (avs_writedata & (byte_mask & 64'h3fffffff))) & (~(avs_writedata & (byte_mask & 64'h0)));
+                        nx_hdr_min = ((r_hdr_min$q & (~(byte_mask & 64'h7ffffff))) | (avs_writedata & (byte_mask & 64'h7ffffff))) & (~(avs_writedata & (byte_mask & 64'h0)));
                     end
                 8194:
                     begin
-                        nx_hdr_max = ((r_hdr_max$q & (~(byte_mask & 64'h3fffffff))) | (avs_writedata & (byte_mask & 64'h3fffffff))) & (~(avs_writedata & (byte_mask & 64'h0)));
+                        nx_hdr_max = ((r_hdr_max$q & (~(byte_mask & 64'h7ffffff))) | (avs_writedata & (byte_mask & 64'h7ffffff))) & (~(avs_writedata & (byte_mask & 64'h0)));
                     end
                 default:
                     begin
@@ -15292,15 +15377,15 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
                     end
                 8192:
                     begin
-                        rdata$d = (r_hdr_ctrl$q & 64'h71);
+                        rdata$d = (r_hdr_ctrl$q & 64'h1);
                     end
                 8193:
                     begin
-                        rdata$d = (r_hdr_min$q & 64'h3fffffff);
+                        rdata$d = (r_hdr_min$q & 64'h7ffffff);
                     end
                 8194:
                     begin
-                        rdata$d = (r_hdr_max$q & 64'h3fffffff);
+                        rdata$d = (r_hdr_max$q & 64'h7ffffff);
                     end
                 default:
                     begin
@@ -15494,11 +15579,11 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         sun_window_y_max = r_sun_window_y$q[(32'h10)+:(11)];
         r_hdr_ctrl$d = nx_hdr_ctrl;
         hdr_ctrl_enable = r_hdr_ctrl$q[32'h0];
-        hdr_ctrl_first_index = r_hdr_ctrl$q[(32'h4)+:(3)];
+        hdr_ctrl_new_set = p_hdr_ctrl$q[32'h1];
         r_hdr_min$d = nx_hdr_min;
-        hdr_min_q14 = r_hdr_min$q[(32'h0)+:(30)];
+        hdr_min_q11 = r_hdr_min$q[(32'h0)+:(27)];
         r_hdr_max$d = nx_hdr_max;
-        hdr_max_q14 = r_hdr_max$q[(32'h0)+:(30)];
+        hdr_max_q11 = r_hdr_max$q[(32'h0)+:(27)];
         avs_readdata = rdata$q;
         irq = |(r_sys_irq_status$q & r_sys_irq_enable$q);
     end
@@ -15542,6 +15627,25 @@ module skylux_core$regs$p_dma_ctrl(d,q,clock);
     end
           
 endmodule // skylux_core$regs$p_dma_ctrl
+
+
+module skylux_core$regs$p_hdr_ctrl(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$regs$p_hdr_ctrl
 
 
 module skylux_core$regs$p_i2c_ctrl(d,q,clock);
@@ -16476,7 +16580,7 @@ module skylux_core$regs$r_hdr_max(d,q,clock);
     input wire  clock;
     
     // Constant declarations
-    localparam  init = 32'h3fffffff;
+    localparam  init = 32'h7ffffff;
     
     // Stub signals
     reg  [31:0] dff$d;

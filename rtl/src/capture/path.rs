@@ -59,7 +59,7 @@ pub struct CapturePath {
     pub sun_window_y_min: Signal<In, Bits<11>>,
     pub sun_window_y_max: Signal<In, Bits<11>>,
     pub hdr_ctrl_enable: Signal<In, Bit>,
-    pub hdr_ctrl_first_index: Signal<In, Bits<3>>,
+    pub hdr_ctrl_new_set: Signal<In, Bit>,
     pub hdr_min_q11: Signal<In, Bits<27>>,
     pub hdr_max_q11: Signal<In, Bits<27>>,
     // Frame tags from the exposure sequencer.
@@ -168,7 +168,7 @@ impl Logic for CapturePath {
         self.ingest.frame_closed.next = self.writer.frame_closed.val();
         self.ingest.beat_room.next = self.writer.beat_room.val();
         self.ingest.hdr_enable.next = self.hdr_ctrl_enable.val();
-        self.ingest.hdr_first_index.next = self.hdr_ctrl_first_index.val();
+        self.ingest.hdr_new_set.next = self.hdr_ctrl_new_set.val();
         self.ingest.hdr_min_q11.next = self.hdr_min_q11.val();
         self.ingest.hdr_max_q11.next = self.hdr_max_q11.val();
 

@@ -43,7 +43,9 @@ const _: () = assert!(descriptor::HDR_MAP == 1 << 9);
 /// End markers update the capture status in every state, so `capture.*` works with the DMA
 /// disabled. In HDR mode (`hdr_enable`, sampled when a frame opens, grouped mode only) each
 /// taken word goes out as its map word through [`HdrSelect`], with byte enables clear for
-/// groups already filled; the checksum stays that of the grouped words.
+/// groups already filled; the checksum stays that of the grouped words. A map frame after
+/// `hdr_new_set` begins a set and is its exposure 0; the others count up from their set's
+/// first, so a set may span sequences whose exposure tags restart.
 #[derive(LogicBlock, Default)]
 pub struct FrameIngest {
     pub clock: Signal<In, Clock>,
@@ -61,10 +63,10 @@ pub struct FrameIngest {
     pub tag_exposure_index: Signal<In, Bits<3>>,
     pub tag_frame_number: Signal<In, Bits<32>>,
     pub tag_timestamp: Signal<In, Bits<64>>,
-    /// `hdr.*`: write the frames of a set as one map (grouped mode only), where a set begins,
-    /// and the usable luminance range.
+    /// `hdr.*`: write the frames of a set as one map (grouped mode only), the pulse that makes
+    /// the next map frame a set's first, and the usable luminance range.
     pub hdr_enable: Signal<In, Bit>,
-    pub hdr_first_index: Signal<In, Bits<3>>,
+    pub hdr_new_set: Signal<In, Bit>,
     pub hdr_min_q11: Signal<In, Bits<27>>,
     pub hdr_max_q11: Signal<In, Bits<27>>,
     /// From the writer.
@@ -126,6 +128,10 @@ pub struct FrameIngest {
     half_valid: DFF<Bit>,
     half_enables: DFF<Bits<4>>,
     hdr_frame: DFF<Bit>,
+    /// `NEW_SET` came: the next map frame begins a set.
+    new_set_pending: DFF<Bit>,
+    /// The current map frame's place in its set (the map words' exposure field).
+    set_ordinal: DFF<Bits<3>>,
     high_water: DFF<Bits<{ entry::FILL_BITS }>>,
     last_high_water: DFF<Bits<{ entry::FILL_BITS }>>,
     last_pixels: DFF<Bits<12>>,
@@ -145,6 +151,7 @@ pub struct FrameIngest {
     // enables.
     out_word: Signal<Local, Bits<32>>,
     out_enables: Signal<Local, Bits<4>>,
+    next_ordinal: Signal<Local, Bits<3>>,
 }
 
 impl Logic for FrameIngest {
@@ -174,6 +181,8 @@ impl Logic for FrameIngest {
             half_valid,
             half_enables,
             hdr_frame,
+            new_set_pending,
+            set_ordinal,
             high_water,
             last_high_water,
             last_pixels,
@@ -274,8 +283,18 @@ impl Logic for FrameIngest {
         // ---- HDR: the map word and whether to write it, for the word taken ---------------
         self.hdr.clock.next = self.clock.val();
         self.hdr.restart.next = false;
-        self.hdr.first_of_set.next = self.pending_exposure.q.val() == self.hdr_first_index.val();
-        self.hdr.exposure_index.next = self.pending_exposure.q.val();
+        if self.hdr_new_set.val() {
+            self.new_set_pending.d.next = true;
+        }
+        self.next_ordinal.next = self.set_ordinal.q.val() + 1;
+        if self.set_ordinal.q.val() == 7 {
+            self.next_ordinal.next = 7.into();
+        }
+        if self.new_set_pending.q.val() {
+            self.next_ordinal.next = 0.into();
+        }
+        self.hdr.first_of_set.next = self.new_set_pending.q.val();
+        self.hdr.exposure_index.next = self.next_ordinal.val();
         self.hdr.take.next = false;
         self.hdr.word.next = self.payload.val();
         self.hdr.min_q11.next = self.hdr_min_q11.val();
@@ -318,6 +337,10 @@ impl Logic for FrameIngest {
                         self.half_valid.d.next = false;
                         self.hdr.restart.next = true;
                         self.hdr_frame.d.next = self.hdr_enable.val() & !self.raw.val();
+                        if self.hdr_enable.val() & !self.raw.val() {
+                            self.set_ordinal.d.next = self.next_ordinal.val();
+                            self.new_set_pending.d.next = false;
+                        }
                         self.state.d.next = IngestState::Frame;
                     }
                 } else if !self.fifo_empty.val() {

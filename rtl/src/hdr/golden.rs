@@ -31,7 +31,7 @@ pub fn usable(config: &HdrConfig, word: u32) -> bool {
 /// One frame of a set as the fabric sees it.
 #[derive(Clone, Debug)]
 pub struct SetFrame<'a> {
-    /// The frame's exposure index (three bits are kept).
+    /// The frame's place in its set, the map words' exposure field (three bits are kept).
     pub exposure_index: u8,
     /// The first frame of a set: the mask's old contents do not count.
     pub first_of_set: bool,

@@ -28,6 +28,7 @@ pub struct HdrSelect {
     /// The opening frame is a set's first (the longest exposure): the mask's old bits are
     /// not read.
     pub first_of_set: Signal<In, Bit>,
+    /// The opening frame's place in its set (the map words' exposure field).
     pub exposure_index: Signal<In, Bits<3>>,
     /// The head word (a grouped word, `skylux_regmap::words::grouped`) is taken this cycle.
     pub take: Signal<In, Bit>,
