@@ -57,7 +57,11 @@ fn hdr_select_verilog_equals_rust_hdl() {
             let got = bench.frame(&f, || usize::from(rng.gen_bool(0.3)) * 2);
             // The recorded run is itself right, so the replay compares against a meaningful
             // trace.
-            assert_eq!(got, mask.frame(&config, &f), "rust-hdl vs golden, set {set}");
+            assert_eq!(
+                got,
+                mask.frame(&config, &f),
+                "rust-hdl vs golden, set {set}"
+            );
             masked += got.iter().filter(|w| !w.1).count();
         }
     }

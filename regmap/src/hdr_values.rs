@@ -38,7 +38,10 @@ impl HdrConfig {
     /// from was.
     pub fn usable_map_word(&self, map_word: u32) -> bool {
         let l = hdr_map::luma_q11(map_word);
-        !hdr_map::over(map_word) && !hdr_map::under(map_word) && l >= self.min_q11 && l <= self.max_q11
+        !hdr_map::over(map_word)
+            && !hdr_map::under(map_word)
+            && l >= self.min_q11
+            && l <= self.max_q11
     }
 }
 

@@ -86,7 +86,11 @@ fn run(seed: u64, sets: usize, gap_percent: u32) -> usize {
             masked += got.iter().filter(|w| !w.1).count();
             apply(&mut memory, &got);
         }
-        assert_eq!(memory, select(&config, &frames), "seed {seed}: the map left");
+        assert_eq!(
+            memory,
+            select(&config, &frames),
+            "seed {seed}: the map left"
+        );
         // A stray shorter frame (a window change) reads and writes only its own groups.
         if rng.gen_bool(0.2) {
             let w = words(&mut rng, groups / 2, &config);
@@ -104,7 +108,10 @@ fn run(seed: u64, sets: usize, gap_percent: u32) -> usize {
 #[test]
 fn random_sets_equal_the_golden_model() {
     let masked: usize = (0..8).map(|seed| run(seed, 12, 30)).sum();
-    assert!(masked > 500, "too few masked writes to mean anything: {masked}");
+    assert!(
+        masked > 500,
+        "too few masked writes to mean anything: {masked}"
+    );
 }
 
 proptest! {

@@ -140,7 +140,12 @@ fn run_set(WIDTH: u32, HEIGHT: u32, split: bool) {
     let config = HdrConfig::default();
     f.hdr_configure(&config, true).unwrap();
     f.hdr_new_set().unwrap();
-    let sequences = if split { vec![0..3, 3..5] } else { vec![0..5] };
+    // The exposures of each sequence, as ranges of `slots()`.
+    let sequences: Vec<std::ops::Range<usize>> = if split {
+        vec![0..3, 3..5]
+    } else {
+        std::iter::once(0..5).collect()
+    };
     for range in sequences.clone() {
         f.set_exposures(&slots()[range.clone()]).unwrap();
         let outcome = f.run_sequence(2_000_000).unwrap();
@@ -204,8 +209,16 @@ fn run_set(WIDTH: u32, HEIGHT: u32, split: bool) {
         .collect();
     let golden = select(&config, &set);
     assert_eq!(got.words.len(), golden.len());
-    let differing = got.words.iter().zip(&golden).filter(|(a, b)| a != b).count();
-    assert_eq!(differing, 0, "the map differs from the golden model in {differing} groups");
+    let differing = got
+        .words
+        .iter()
+        .zip(&golden)
+        .filter(|(a, b)| a != b)
+        .count();
+    assert_eq!(
+        differing, 0,
+        "the map differs from the golden model in {differing} groups"
+    );
 
     // The case exercises the selection: groups from every exposure, groups no exposure covers
     // both ways, and writes masked after a group was filled.
@@ -220,10 +233,16 @@ fn run_set(WIDTH: u32, HEIGHT: u32, split: bool) {
         .iter()
         .map(|s| mask.frame(&config, s).iter().filter(|w| !w.1).count())
         .sum();
-    assert!(masked > groups / 2, "masked writes: {masked} of {groups} groups");
+    assert!(
+        masked > groups / 2,
+        "masked writes: {masked} of {groups} groups"
+    );
     let end = WINDOW_BASE + u64::from(capture.window_size_bytes);
     for a in rig.frame_writes() {
-        assert!(a.write && a.address >= WINDOW_BASE && a.address + a.bytes <= end, "{a:?}");
+        assert!(
+            a.write && a.address >= WINDOW_BASE && a.address + a.bytes <= end,
+            "{a:?}"
+        );
     }
 
     // The HPS: the map into a LuminanceMap, against the merge of the frames the sensor sent.
@@ -277,7 +296,11 @@ fn run_set(WIDTH: u32, HEIGHT: u32, split: bool) {
         .collect();
     let from_merge = merge(&raw, &device, BayerPattern::GRBG, &geometry).unwrap();
     assert_eq!(from_fabric.flags, from_merge.flags);
-    let valid = from_fabric.flags.iter().filter(|f| **f == MapFlag::Valid).count();
+    let valid = from_fabric
+        .flags
+        .iter()
+        .filter(|f| **f == MapFlag::Valid)
+        .count();
     assert!(valid > groups / 2, "valid groups: {valid} of {groups}");
     let mut worst: f64 = 0.0;
     for (i, (a, b)) in from_fabric
@@ -292,6 +315,9 @@ fn run_set(WIDTH: u32, HEIGHT: u32, split: bool) {
     }
     // No noise here: the two differ by the sensor's quantisation of the exposures the merge
     // adds, at most 0.5 DN in the 15 DN of the dimmest usable group.
-    assert!(worst < 0.035, "worst relative difference to the merge: {worst}");
+    assert!(
+        worst < 0.035,
+        "worst relative difference to the merge: {worst}"
+    );
     println!("fabric map vs merge: worst relative difference {worst:.2e}, {valid} valid groups");
 }

@@ -125,7 +125,13 @@ fn the_fabric_selection_stays_within_1_15_of_the_noise_bound() {
     );
     assert!(n > 500_000, "too few groups to judge: {n}");
     assert!(merge_ratio < 1.01, "the merge: {merge_ratio}x the bound");
-    assert!(fabric_ratio < 1.15, "the fabric's selection: {fabric_ratio}x the bound");
+    assert!(
+        fabric_ratio < 1.15,
+        "the fabric's selection: {fabric_ratio}x the bound"
+    );
     // Selection throws information away: it cannot beat the merge by more than noise.
-    assert!(fabric_ratio > merge_ratio * 0.999, "{fabric_ratio} vs {merge_ratio}");
+    assert!(
+        fabric_ratio > merge_ratio * 0.999,
+        "{fabric_ratio} vs {merge_ratio}"
+    );
 }

@@ -39,13 +39,12 @@ use skylux_hps::fpga::sensor::{reg, I2cTiming, SensorConfig, SensorError};
 use skylux_hps::fpga::sequence::{SequenceError, ShieldConfig};
 use skylux_hps::fpga::shield_plan::{plan_openings_with_gaps, OpeningCost};
 use skylux_hps::fpga::{
-    CaptureConfig as RingConfig, CaptureFaults, ExposureSlot, Fabric, GroupingConfig,
-    MAX_EXPOSURES,
+    CaptureConfig as RingConfig, CaptureFaults, ExposureSlot, Fabric, GroupingConfig, MAX_EXPOSURES,
 };
 use skylux_hps::hdr::FabricMap;
 use skylux_regmap::hdr_values::HdrConfig;
-use skylux_regmap::words::WEIGHT_ONE;
 use skylux_regmap::words::raw;
+use skylux_regmap::words::WEIGHT_ONE;
 use std::ops::Range;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
@@ -673,15 +672,24 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
             .ring
             .read_slot(&mut self.memory, 0)
             .map_err(|e| SourceError::Other(format!("slot 0: {e}")))?
-            .ok_or_else(|| SourceError::Other("slot 0: no map although the DMA counted it".into()))?;
+            .ok_or_else(|| {
+                SourceError::Other("slot 0: no map although the DMA counted it".into())
+            })?;
         let (w, h) = (self.plan.width_px as usize, self.plan.height_px as usize);
         let d = &captured.descriptor;
-        let mut flags: Vec<String> = captured.flag_names().iter().map(|n| n.to_string()).collect();
+        let mut flags: Vec<String> = captured
+            .flag_names()
+            .iter()
+            .map(|n| n.to_string())
+            .collect();
         if !d.hdr_map {
             flags.push("NOT_MAP".into());
         }
         if usize::from(d.lines) != h || usize::from(d.last_line_pixels) != w {
-            flags.push(format!("SIZE {}x{} (expected {w}x{h})", d.last_line_pixels, d.lines));
+            flags.push(format!(
+                "SIZE {}x{} (expected {w}x{h})",
+                d.last_line_pixels, d.lines
+            ));
         }
         if faults.any() && flags.is_empty() {
             flags.push(format!("CAPTURE_STATUS {faults:?}"));

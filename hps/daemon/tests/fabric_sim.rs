@@ -202,7 +202,11 @@ fn skyluxd_runs_a_cycle_on_the_simulated_fabric_and_its_map_is_the_offline_merge
 fn tiny_map_config(dir: &std::path::Path) -> std::path::PathBuf {
     let path = tiny_fabric_config(dir, "fabric");
     let text = std::fs::read_to_string(&path).unwrap();
-    let text = text.replacen("[fabric]", "[fabric]\nhdr = \"fabric\"", 1);
+    assert!(
+        text.contains("hdr = \"hps\" "),
+        "the example's [fabric] hdr line"
+    );
+    let text = text.replacen("hdr = \"hps\" ", "hdr = \"fabric\" ", 1);
     std::fs::write(&path, text).unwrap();
     path
 }
@@ -224,7 +228,10 @@ fn the_fabric_map_is_the_golden_selection_of_the_sensor_frames() {
     assert!(set.frames.is_empty(), "a map, not frames");
     assert_eq!(set.frame_flags, vec![Vec::<String>::new()]);
     let m = set.fabric_map.as_ref().expect("the fabric's map");
-    assert_eq!((m.map.width, m.map.height, m.raw_width, m.raw_height), (8, 6, 16, 12));
+    assert_eq!(
+        (m.map.width, m.map.height, m.raw_width, m.raw_height),
+        (8, 6, 16, 12)
+    );
     // Long to short: the configuration's [300, 1000] µs run as 1000 then 300.
     let e: Vec<f64> = set.config.exposure.iter().map(|e| e.exposure_us).collect();
     assert!(e.len() == 2 && e[0] > e[1], "{e:?}");
@@ -264,6 +271,21 @@ fn the_fabric_map_is_the_golden_selection_of_the_sensor_frames() {
             words,
         })
         .collect();
+    let summary: Vec<(u8, bool, bool, u32)> = m
+        .map
+        .words
+        .iter()
+        .map(|&w| {
+            use skylux_regmap::words::hdr_map;
+            (
+                hdr_map::exposure_index(w),
+                hdr_map::under(w),
+                hdr_map::over(w),
+                hdr_map::luma_q11(w),
+            )
+        })
+        .collect();
+    eprintln!("map words (exposure, under, over, luma_q11): {summary:?}");
     assert_eq!(m.map.words, select(&m.hdr, &frames));
 }
 

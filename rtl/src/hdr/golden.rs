@@ -1,9 +1,9 @@
 //! Golden model of the HDR selection, written from the specification (issue 22 item 1), not
 //! from the RTL: frames of grouped words in raster order, no clocks or pipelines.
 
-use skylux_regmap::words::hdr_map;
 #[cfg(test)]
 use skylux_regmap::words::grouped;
+use skylux_regmap::words::hdr_map;
 
 /// Bits of the filled mask: 2^20 for positions below 2^20, then 2^18 (the RTL's two block
 /// RAMs, [`crate::hdr::MASK_LOW_BITS`] and [`crate::hdr::MASK_HIGH_BITS`]).
@@ -202,14 +202,14 @@ mod tests {
             first_of_set: true,
             words,
         };
-        assert_eq!(mask.frame(&c, &first(&w))[0].1, true);
+        assert!(mask.frame(&c, &first(&w))[0].1);
         // Filled now: a later frame of the same set is masked, a new set's first is not.
         let later = SetFrame {
             exposure_index: 1,
             first_of_set: false,
             words: &w,
         };
-        assert_eq!(mask.frame(&c, &later)[0].1, false);
-        assert_eq!(mask.frame(&c, &first(&w))[0].1, true);
+        assert!(!mask.frame(&c, &later)[0].1);
+        assert!(mask.frame(&c, &first(&w))[0].1);
     }
 }

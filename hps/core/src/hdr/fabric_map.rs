@@ -79,7 +79,12 @@ pub fn fabric_map(
         flags: vec![MapFlag::UnderRange; n],
         relative_sigma: vec![f32::NAN; n],
     };
-    for (i, (&word, &inv_v)) in map.words.iter().zip(&geometry.inverse_vignetting).enumerate() {
+    for (i, (&word, &inv_v)) in map
+        .words
+        .iter()
+        .zip(&geometry.inverse_vignetting)
+        .enumerate()
+    {
         let k = usize::from(hdr_map::exposure_index(word));
         let single = (config.usable_map_word(word) && inv_v != 0.0)
             .then(|| merger.single(k, hdr_map::luma(word), inv_v))

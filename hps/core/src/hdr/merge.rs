@@ -375,7 +375,12 @@ impl Merger {
     /// with signal `signal_dn` (the weighted, black-subtracted sum): the merge's formula with
     /// one valid exposure (its pilot is the exposure's own rate). `None` for an exposure the
     /// set does not have.
-    pub(super) fn single(&self, k: usize, signal_dn: f64, inverse_vignetting: f32) -> Option<(f32, f32)> {
+    pub(super) fn single(
+        &self,
+        k: usize,
+        signal_dn: f64,
+        inverse_vignetting: f32,
+    ) -> Option<(f32, f32)> {
         let (tg, shot) = (*self.tg.get(k)?, self.shot_var_per_rate[k]);
         let rate = signal_dn / tg;
         let inv = tg * tg / (rate.max(0.0) * shot + self.floor_var);
