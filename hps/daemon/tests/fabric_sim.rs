@@ -198,10 +198,27 @@ fn skyluxd_runs_a_cycle_on_the_simulated_fabric_and_its_map_is_the_offline_merge
     );
 }
 
-/// The tiny configuration with the fabric making the map.
+/// The tiny configuration with the fabric making the map, and a camera without the example
+/// device's ND 1.0 filter (`cg` 1 instead of 10): behind it the tiny window's sky stays below
+/// `valid_min` at 1000 µs, so no group would be usable.
 fn tiny_map_config(dir: &std::path::Path) -> std::path::PathBuf {
     let path = tiny_fabric_config(dir, "fabric");
+    // The path as `config_with` writes it.
+    let example = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .join("daemon/device.toml");
+    let device = std::fs::read_to_string(&example).unwrap();
+    assert!(device.contains("cg = 10.0 "), "the example device's cg line");
+    let bare = dir.join("device.toml");
+    std::fs::write(&bare, device.replacen("cg = 10.0 ", "cg = 1.0 ", 1)).unwrap();
     let text = std::fs::read_to_string(&path).unwrap();
+    let quoted = format!("\"{}\"", example.display());
+    assert!(text.contains(&quoted), "the configuration's device path");
+    let text = text.replacen(
+        &quoted,
+        &format!("\"{}\"", bare.display()),
+        1,
+    );
     assert!(
         text.contains("hdr = \"hps\" "),
         "the example's [fabric] hdr line"
@@ -287,6 +304,14 @@ fn the_fabric_map_is_the_golden_selection_of_the_sensor_frames() {
         .collect();
     eprintln!("map words (exposure, under, over, luma_q11): {summary:?}");
     assert_eq!(m.map.words, select(&m.hdr, &frames));
+    // The case exercises the selection: groups usable in the longest exposure, and groups
+    // the set's last frame wrote.
+    let from_longest = summary.iter().filter(|w| w.0 == 0).count();
+    assert!(
+        from_longest > 0 && from_longest < summary.len(),
+        "groups from the longest exposure: {from_longest} of {}",
+        summary.len()
+    );
 }
 
 /// ~1 min of simulation plus the daylight coefficients: `--ignored`.
