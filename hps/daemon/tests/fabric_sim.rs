@@ -199,8 +199,10 @@ fn skyluxd_runs_a_cycle_on_the_simulated_fabric_and_its_map_is_the_offline_merge
 }
 
 /// The tiny configuration with the fabric making the map, and a camera without the example
-/// device's ND 1.0 filter (`cg` 1 instead of 10): behind it the tiny window's sky stays below
-/// `valid_min` at 1000 µs, so no group would be usable.
+/// device's ND 1.0 filter (`cg` 1 instead of 10) and with `valid_min` at 10 DN instead of 40:
+/// with the example's, the tiny window's sky stays under-range at 1000 µs (2 to 6 DN), so no
+/// group would be usable; with these, the 1000 µs frame's groups (8 to 60 DN) mostly are and
+/// the 300 µs frame's mostly are not.
 fn tiny_map_config(dir: &std::path::Path) -> std::path::PathBuf {
     let path = tiny_fabric_config(dir, "fabric");
     // The path as `config_with` writes it.
@@ -210,7 +212,11 @@ fn tiny_map_config(dir: &std::path::Path) -> std::path::PathBuf {
     let device = std::fs::read_to_string(&example).unwrap();
     assert!(device.contains("cg = 10.0 "), "the example device's cg line");
     let bare = dir.join("device.toml");
-    std::fs::write(&bare, device.replacen("cg = 10.0 ", "cg = 1.0 ", 1)).unwrap();
+    assert!(device.contains("valid_min_dn = 40.0"), "the example device's valid_min line");
+    let device = device
+        .replacen("cg = 10.0 ", "cg = 1.0 ", 1)
+        .replacen("valid_min_dn = 40.0", "valid_min_dn = 10.0", 1);
+    std::fs::write(&bare, device).unwrap();
     let text = std::fs::read_to_string(&path).unwrap();
     let quoted = format!("\"{}\"", example.display());
     assert!(text.contains(&quoted), "the configuration's device path");
