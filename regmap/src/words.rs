@@ -8,6 +8,9 @@
 //!   an over-range flag.
 //! - **Raw** ([`raw`], for calibration): the samples unchanged, two per word.
 //!
+//! In HDR map mode (`hdr.*`) the DMA writes [`hdr_map`] words instead: one per group over a
+//! whole set of exposures.
+//!
 //! Words leave the block in emission order (below) and the DMA stores them at increasing
 //! addresses, so two consecutive words form one little-endian 64-bit beat: the earlier word in
 //! bits [31:0].

@@ -210,21 +210,25 @@ fn tiny_map_config(dir: &std::path::Path) -> std::path::PathBuf {
         .join("..")
         .join("daemon/device.toml");
     let device = std::fs::read_to_string(&example).unwrap();
-    assert!(device.contains("cg = 10.0 "), "the example device's cg line");
+    assert!(
+        device.contains("cg = 10.0 "),
+        "the example device's cg line"
+    );
     let bare = dir.join("device.toml");
-    assert!(device.contains("valid_min_dn = 40.0"), "the example device's valid_min line");
-    let device = device
-        .replacen("cg = 10.0 ", "cg = 1.0 ", 1)
-        .replacen("valid_min_dn = 40.0", "valid_min_dn = 10.0", 1);
+    assert!(
+        device.contains("valid_min_dn = 40.0"),
+        "the example device's valid_min line"
+    );
+    let device = device.replacen("cg = 10.0 ", "cg = 1.0 ", 1).replacen(
+        "valid_min_dn = 40.0",
+        "valid_min_dn = 10.0",
+        1,
+    );
     std::fs::write(&bare, device).unwrap();
     let text = std::fs::read_to_string(&path).unwrap();
     let quoted = format!("\"{}\"", example.display());
     assert!(text.contains(&quoted), "the configuration's device path");
-    let text = text.replacen(
-        &quoted,
-        &format!("\"{}\"", bare.display()),
-        1,
-    );
+    let text = text.replacen(&quoted, &format!("\"{}\"", bare.display()), 1);
     assert!(
         text.contains("hdr = \"hps\" "),
         "the example's [fabric] hdr line"
