@@ -42,6 +42,10 @@ pub const BLOCKS: &[ExportedBlock] = &[
         verilog: fresh::<skylux_rtl::sun::SunAccumulators>,
     },
     ExportedBlock {
+        name: "hdr_select",
+        verilog: fresh::<skylux_rtl::hdr::HdrSelect>,
+    },
+    ExportedBlock {
         name: "capture_path",
         verilog: fresh::<skylux_rtl::capture::CapturePath>,
     },

@@ -69,7 +69,7 @@ fn register_file_verilog_equals_rust_hdl() {
     let offsets: Vec<u32> = skylux_regmap::reset_image()
         .into_iter()
         .map(|(o, _)| o)
-        .chain([0x0FF0, 0x8000, 0x1F_FFFC])
+        .chain([0x0FF0, 0x9000, 0x1F_FFFC])
         .collect();
     for _ in 0..500 {
         let offset = offsets[rng.gen_range(0..offsets.len())];

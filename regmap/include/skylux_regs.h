@@ -1,4 +1,4 @@
-/* Skylux register map v0.3.
+/* Skylux register map v0.4.
  * Generated from regmap/src/map.rs by skylux-regmap; do not edit.
  * Offsets are bytes from SKYLUX_LW_BRIDGE_BASE. */
 #ifndef SKYLUX_REGS_H
@@ -8,7 +8,7 @@
 #define SKYLUX_LW_BRIDGE_SPAN 0x00200000u
 #define SKYLUX_DESIGN_ID 0x534B594Cu
 #define SKYLUX_VERSION_MAJOR 0u
-#define SKYLUX_VERSION_MINOR 3u
+#define SKYLUX_VERSION_MINOR 4u
 #define SKYLUX_UNMAPPED_READ_VALUE 0xDEADBEEFu
 
 /* sys: Identification, scratch, time base, interrupts and bus errors. */
@@ -19,10 +19,10 @@
 #define SKYLUX_SYS_ID_VALUE_MASK 0xFFFFFFFFu
 #define SKYLUX_SYS_ID_VALUE_VALUE 0x534B594Cu
 #define SKYLUX_SYS_VERSION_OFFSET 0x0004u
-#define SKYLUX_SYS_VERSION_RESET 0x00000003u
+#define SKYLUX_SYS_VERSION_RESET 0x00000004u
 #define SKYLUX_SYS_VERSION_MINOR_SHIFT 0u
 #define SKYLUX_SYS_VERSION_MINOR_MASK 0x0000FFFFu
-#define SKYLUX_SYS_VERSION_MINOR_VALUE 0x3u
+#define SKYLUX_SYS_VERSION_MINOR_VALUE 0x4u
 #define SKYLUX_SYS_VERSION_MAJOR_SHIFT 16u
 #define SKYLUX_SYS_VERSION_MAJOR_MASK 0xFFFF0000u
 #define SKYLUX_SYS_VERSION_MAJOR_VALUE 0x0u
@@ -456,5 +456,22 @@
 #define SKYLUX_SUN_FRAMES_RESET 0x00000000u
 #define SKYLUX_SUN_FRAMES_COUNT_SHIFT 0u
 #define SKYLUX_SUN_FRAMES_COUNT_MASK 0x0000FFFFu
+
+/* hdr: HDR in the fabric (`skylux_rtl::hdr`; word format `crate::words::hdr_map`): the DMA writes the frames of a set, long to short, as one map into one ring slot (set `dma.slots` to 1), each group from the longest exposure in which it is usable, with byte enables masking the groups already written. Grouped mode only; read the map after the set's last `FRAME_DONE`. A set may span several sequences (shield openings). */
+#define SKYLUX_HDR_BASE 0x8000u
+#define SKYLUX_HDR_CTRL_OFFSET 0x8000u
+#define SKYLUX_HDR_CTRL_RESET 0x00000000u
+#define SKYLUX_HDR_CTRL_ENABLE_SHIFT 0u
+#define SKYLUX_HDR_CTRL_ENABLE_MASK 0x00000001u
+#define SKYLUX_HDR_CTRL_NEW_SET_SHIFT 1u
+#define SKYLUX_HDR_CTRL_NEW_SET_MASK 0x00000002u
+#define SKYLUX_HDR_MIN_OFFSET 0x8004u
+#define SKYLUX_HDR_MIN_RESET 0x00000000u
+#define SKYLUX_HDR_MIN_Q11_SHIFT 0u
+#define SKYLUX_HDR_MIN_Q11_MASK 0x07FFFFFFu
+#define SKYLUX_HDR_MAX_OFFSET 0x8008u
+#define SKYLUX_HDR_MAX_RESET 0x07FFFFFFu
+#define SKYLUX_HDR_MAX_Q11_SHIFT 0u
+#define SKYLUX_HDR_MAX_Q11_MASK 0x07FFFFFFu
 
 #endif /* SKYLUX_REGS_H */

@@ -59,6 +59,9 @@ pub mod word {
 pub const EXPOSURE_INDEX_MASK: u32 = 0x7;
 /// [`word::INFO`]: the payload holds raw samples (`capture.ctrl.RAW`), not grouped words.
 pub const RAW_MODE: u32 = 1 << 8;
+/// [`word::INFO`]: the payload is an HDR map (`hdr.ctrl.ENABLE`, `crate::words::hdr_map`), the
+/// set's frames up to this one merged; the checksum is that of the frame's grouped words.
+pub const HDR_MAP: u32 = 1 << 9;
 /// Position of the last line's pixel count in [`word::GEOMETRY`].
 pub const PIXELS_LSB: u32 = 0;
 /// Position of the line count in [`word::GEOMETRY`].
@@ -112,6 +115,8 @@ pub struct Descriptor {
     pub timestamp_cycles: u64,
     pub exposure_index: u8,
     pub raw: bool,
+    /// The payload is an HDR map ([`HDR_MAP`]).
+    pub hdr_map: bool,
     /// [`flag`] bits, at their positions in the info word.
     pub flags: u32,
     pub last_line_pixels: u16,
@@ -130,6 +135,7 @@ impl Descriptor {
             (self.timestamp_cycles >> 32) as u32,
             (self.exposure_index as u32 & EXPOSURE_INDEX_MASK)
                 | if self.raw { RAW_MODE } else { 0 }
+                | if self.hdr_map { HDR_MAP } else { 0 }
                 | (self.flags & flag::ALL),
             ((self.last_line_pixels as u32 & COUNT_MASK) << PIXELS_LSB)
                 | ((self.lines as u32 & COUNT_MASK) << LINES_LSB),
@@ -151,6 +157,7 @@ impl Descriptor {
                 | words[word::TIMESTAMP_LO] as u64,
             exposure_index: (info & EXPOSURE_INDEX_MASK) as u8,
             raw: info & RAW_MODE != 0,
+            hdr_map: info & HDR_MAP != 0,
             flags: info & flag::ALL,
             last_line_pixels: ((geometry >> PIXELS_LSB) & COUNT_MASK) as u16,
             lines: ((geometry >> LINES_LSB) & COUNT_MASK) as u16,
@@ -190,6 +197,7 @@ mod tests {
             timestamp_cycles: 0x0123_4567_89AB_CDEF,
             exposure_index: 5,
             raw: true,
+            hdr_map: true,
             flags: flag::LINE_SHORT | flag::FRAMES_SKIPPED,
             last_line_pixels: 2592,
             lines: 1944,

@@ -19,6 +19,7 @@
 extern crate alloc;
 
 pub mod descriptor;
+pub mod hdr_values;
 mod map;
 pub mod raybox_format;
 pub mod render;

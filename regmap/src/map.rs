@@ -16,6 +16,7 @@ pub const MAP: &[Block] = &[
     dma::BLOCK,
     raybox::BLOCK,
     sun::BLOCK,
+    hdr::BLOCK,
 ];
 
 /// The value of `sys.id`: ASCII "SKYL". The HPS refuses to drive anything else.
@@ -23,7 +24,7 @@ pub const DESIGN_ID: u32 = 0x534B_594C;
 /// Major version of the map: the HPS refuses a different major version.
 pub const VERSION_MAJOR: u32 = 0;
 /// Minor version: compatible additions. The HPS accepts a newer minor version.
-pub const VERSION_MINOR: u32 = 3;
+pub const VERSION_MINOR: u32 = 4;
 
 register_block! {
     /// Identification, scratch, time base, interrupts and bus errors.
@@ -571,6 +572,36 @@ register_block! {
         frames @ 0x03C {
             /// Count (wraps).
             COUNT [0 +: 16] RO = 0;
+        }
+    }
+}
+
+register_block! {
+    /// HDR in the fabric (`skylux_rtl::hdr`; word format `crate::words::hdr_map`): the DMA
+    /// writes the frames of a set, long to short, as one map into one ring slot (set
+    /// `dma.slots` to 1), each group from the longest exposure in which it is usable, with
+    /// byte enables masking the groups already written. Grouped mode only; read the map after
+    /// the set's last `FRAME_DONE`. A set may span several sequences (shield openings).
+    hdr @ 0x8000 {
+        /// Map mode, and where a set begins.
+        ctrl @ 0x000 {
+            /// Write maps instead of frames (grouped mode only).
+            ENABLE [0 +: 1] RW = 0;
+            /// The next map frame begins a set (the longest exposure): it writes every group,
+            /// whatever earlier sets left, and is the map words' exposure 0; each later frame
+            /// counts one up (to 7).
+            NEW_SET [1 +: 1] W1P = 0;
+        }
+        /// A group is usable at or above this luminance (and inside `bayer.valid`).
+        min @ 0x004 {
+            /// Map-word units (2^-11 DN): the grouped word's luminance without its last three
+            /// bits, so the map word tells a usable group exactly.
+            Q11 [0 +: 27] RW = 0;
+        }
+        /// ... and at or below this one.
+        max @ 0x008 {
+            /// Map-word units (2^-11 DN).
+            Q11 [0 +: 27] RW = 0x7FF_FFFF;
         }
     }
 }

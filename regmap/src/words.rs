@@ -8,6 +8,9 @@
 //!   an over-range flag.
 //! - **Raw** ([`raw`], for calibration): the samples unchanged, two per word.
 //!
+//! In HDR map mode (`hdr.*`) the DMA writes [`hdr_map`] words instead: one per group over a
+//! whole set of exposures.
+//!
 //! Words leave the block in emission order (below) and the DMA stores them at increasing
 //! addresses, so two consecutive words form one little-endian 64-bit beat: the earlier word in
 //! bits [31:0].
@@ -109,6 +112,72 @@ pub mod grouped {
     }
 }
 
+/// The fabric's HDR map (issue 22 item 1, registers `hdr.*`): one word per 2x2 group, written
+/// over the exposures of a set into one buffer. Each group holds the grouped word of the
+/// longest exposure in which it was usable (exposures run long to short), or, if none was, the
+/// set's last exposure's word with its flags; the word says which exposure it came from.
+///
+/// ```text
+///  31    30    29    27 26                          0
+/// +----+-----+--------+-----------------------------+
+/// |OVER|UNDER|EXPOSURE|  luminance, unsigned Q16.11  |
+/// +----+-----+--------+-----------------------------+
+/// ```
+///
+/// - Luminance: the grouped word's Q16.14 field shifted right by [`hdr_map::DROPPED_FRAC_BITS`]
+///   (truncated). The integer part is whole (16 bits hold [`grouped::LUMA_MAX_Q14`]); the
+///   2^-11 DN step is below 1e-4 of the smallest usable signal (`bayer.valid.MIN` minus
+///   black, tens of DN), so dropping three bits costs nothing measurable.
+/// - EXPOSURE: the frame's place in its set: 0 for the frame after `hdr.ctrl.NEW_SET` (the
+///   longest exposure), one more for each later frame, 7 for the eighth and after.
+/// - UNDER, OVER: the grouped word's flags, unchanged.
+pub mod hdr_map {
+    use super::grouped;
+
+    /// Fractional bits of the luminance.
+    pub const LUMA_FRAC_BITS: u32 = 11;
+    /// Fractional bits of the grouped word dropped.
+    pub const DROPPED_FRAC_BITS: u32 = grouped::LUMA_FRAC_BITS - LUMA_FRAC_BITS;
+    /// Width of the luminance field (bit 0 up).
+    pub const LUMA_WIDTH: u32 = 27;
+    /// Mask of the luminance field.
+    pub const LUMA_MASK: u32 = (1 << LUMA_WIDTH) - 1;
+    /// Position of the exposure index.
+    pub const EXPOSURE_LSB: u32 = 27;
+    /// Width of the exposure field (`seq` has up to eight exposures).
+    pub const EXPOSURE_WIDTH: u32 = 3;
+
+    // The largest grouped luminance fits, and the fields do not overlap the flags.
+    const _: () = assert!(grouped::LUMA_MAX_Q14 >> DROPPED_FRAC_BITS < 1 << LUMA_WIDTH);
+    const _: () = assert!(EXPOSURE_LSB + EXPOSURE_WIDTH == grouped::UNDER_BIT);
+
+    /// The map word for a grouped word of exposure `exposure_index` (three bits kept).
+    pub const fn from_grouped(word: u32, exposure_index: u8) -> u32 {
+        (word & (grouped::OVER | grouped::UNDER))
+            | (((exposure_index as u32) & 7) << EXPOSURE_LSB)
+            | (grouped::luma_q14(word) >> DROPPED_FRAC_BITS)
+    }
+    /// The luminance, in units of 2^-11 DN.
+    pub const fn luma_q11(word: u32) -> u32 {
+        word & LUMA_MASK
+    }
+    /// The luminance in digital numbers (weighted, black-subtracted), as the merge's signal.
+    pub fn luma(word: u32) -> f64 {
+        luma_q11(word) as f64 / (1u32 << LUMA_FRAC_BITS) as f64
+    }
+    /// The place in its set of the frame the word came from.
+    pub const fn exposure_index(word: u32) -> u8 {
+        ((word >> EXPOSURE_LSB) & 7) as u8
+    }
+    /// The grouped word's flags.
+    pub const fn under(word: u32) -> bool {
+        grouped::under(word)
+    }
+    pub const fn over(word: u32) -> bool {
+        grouped::over(word)
+    }
+}
+
 /// Raw mode (for calibration): the samples unchanged, in sensor read-out order, two per word.
 ///
 /// ```text
@@ -168,6 +237,24 @@ mod tests {
         assert_eq!(grouped::luma(0x4000), 1.0);
         assert_eq!(grouped::pack(0, false, true), 0x8000_0000);
         assert!(grouped::valid(grouped::pack(u32::MAX, false, false)));
+    }
+
+    #[test]
+    fn hdr_map_round_trip() {
+        let g = grouped::pack(grouped::LUMA_MAX_Q14 as u32, false, true);
+        let w = hdr_map::from_grouped(g, 5);
+        assert_eq!(hdr_map::exposure_index(w), 5);
+        assert!(hdr_map::over(w) && !hdr_map::under(w));
+        assert_eq!(
+            hdr_map::luma_q11(w),
+            (grouped::LUMA_MAX_Q14 >> 3) as u32,
+            "integer part whole"
+        );
+        // 1.0 DN plus 2^-14 (dropped): 1.0 DN.
+        let w = hdr_map::from_grouped(grouped::pack(0x4001, true, false), 9);
+        assert_eq!(hdr_map::luma(w), 1.0);
+        assert_eq!(hdr_map::exposure_index(w), 1, "three bits of the index");
+        assert!(hdr_map::under(w) && !hdr_map::over(w));
     }
 
     #[test]

@@ -21,6 +21,7 @@ const OWNERS: &[(&str, &str, &str)] = &[
     ("dma", "capture", ""),
     ("raybox", "raybox", "raybox_"),
     ("sun", "capture", ""),
+    ("hdr", "capture", ""),
 ];
 
 /// Registers wired by hand (block, register): they go to pins, not to a sub-block.

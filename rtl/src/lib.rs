@@ -9,6 +9,7 @@ pub mod capture;
 pub mod core;
 pub mod dma;
 pub mod drive;
+pub mod hdr;
 pub mod i2c;
 pub mod raybox;
 pub mod regfile;

@@ -211,7 +211,7 @@ fn random_transfers_match_the_behavioural_model() {
     let offsets: Vec<u32> = reset_image()
         .into_iter()
         .map(|(o, _)| o)
-        .chain([0x0FF0, 0x8000, 0x1F_FFFC])
+        .chain([0x0FF0, 0x9000, 0x1F_FFFC])
         .collect();
     let mut h = host();
     let mut model = RegisterFileModel::default();

@@ -228,6 +228,10 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
     reg  [10:0] regs$sun_box_y_min;
     reg  [10:0] regs$sun_box_y_max;
     reg  [15:0] regs$sun_frames_count;
+    wire  regs$hdr_ctrl_enable;
+    wire  regs$hdr_ctrl_new_set;
+    wire  [26:0] regs$hdr_min_q11;
+    wire  [26:0] regs$hdr_max_q11;
     reg  sensor$clock;
     reg  sensor$i2c_ctrl_start;
     reg  sensor$i2c_ctrl_read;
@@ -328,6 +332,10 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
     reg  [10:0] capture$sun_window_x_max;
     reg  [10:0] capture$sun_window_y_min;
     reg  [10:0] capture$sun_window_y_max;
+    reg  capture$hdr_ctrl_enable;
+    reg  capture$hdr_ctrl_new_set;
+    reg  [26:0] capture$hdr_min_q11;
+    reg  [26:0] capture$hdr_max_q11;
     reg  [2:0] capture$tag_exposure_index;
     reg  [31:0] capture$tag_frame_number;
     reg  [63:0] capture$tag_timestamp;
@@ -592,7 +600,11 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
         .sun_box_x_max(regs$sun_box_x_max),
         .sun_box_y_min(regs$sun_box_y_min),
         .sun_box_y_max(regs$sun_box_y_max),
-        .sun_frames_count(regs$sun_frames_count)
+        .sun_frames_count(regs$sun_frames_count),
+        .hdr_ctrl_enable(regs$hdr_ctrl_enable),
+        .hdr_ctrl_new_set(regs$hdr_ctrl_new_set),
+        .hdr_min_q11(regs$hdr_min_q11),
+        .hdr_max_q11(regs$hdr_max_q11)
     );
     skylux_core$sensor sensor(
         .clock(sensor$clock),
@@ -697,6 +709,10 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
         .sun_window_x_max(capture$sun_window_x_max),
         .sun_window_y_min(capture$sun_window_y_min),
         .sun_window_y_max(capture$sun_window_y_max),
+        .hdr_ctrl_enable(capture$hdr_ctrl_enable),
+        .hdr_ctrl_new_set(capture$hdr_ctrl_new_set),
+        .hdr_min_q11(capture$hdr_min_q11),
+        .hdr_max_q11(capture$hdr_max_q11),
         .tag_exposure_index(capture$tag_exposure_index),
         .tag_frame_number(capture$tag_frame_number),
         .tag_timestamp(capture$tag_timestamp),
@@ -977,12 +993,16 @@ module skylux_core(clk,avs_address,avs_read,avs_write,avs_writedata,avs_byteenab
         regs$sun_box_y_min = capture$sun_box_y_min;
         regs$sun_box_y_max = capture$sun_box_y_max;
         regs$sun_frames_count = capture$sun_frames_count;
+        capture$hdr_ctrl_enable = regs$hdr_ctrl_enable;
+        capture$hdr_ctrl_new_set = regs$hdr_ctrl_new_set;
+        capture$hdr_min_q11 = regs$hdr_min_q11;
+        capture$hdr_max_q11 = regs$hdr_max_q11;
     end
     
 endmodule // top
 
 
-module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sensor_data,capture_ctrl_enable,capture_ctrl_raw,capture_window_width,capture_window_height,bayer_mode_phase,bayer_black_level,bayer_valid_min,bayer_valid_max,bayer_weight_r_q2_14,bayer_weight_g_q2_14,bayer_weight_b_q2_14,dma_ctrl_enable,dma_ctrl_reset,dma_window_base_addr,dma_window_size_bytes,dma_slot_stride_bytes,dma_slots_count,dma_bus_timeout_cycles,sun_ctrl_enable,sun_ctrl_exposure_index,sun_threshold_q14,sun_window_x_min,sun_window_x_max,sun_window_y_min,sun_window_y_max,tag_exposure_index,tag_frame_number,tag_timestamp,capture_status_frame_valid,capture_status_line_short_set,capture_status_line_long_set,capture_status_frame_short_set,capture_status_frame_long_set,capture_status_fifo_overflow_set,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,dma_status_busy,dma_status_slot,dma_status_frame_done_set,dma_status_out_of_window_set,dma_status_overflow_set,dma_status_bus_timeout_set,dma_frames_written_count,sun_count_groups,sun_over_count_groups,sun_sum_l_lo_value,sun_sum_l_hi_value,sun_sum_xl_lo_value,sun_sum_xl_hi_value,sun_sum_yl_lo_value,sun_sum_yl_hi_value,sun_max_l_q14,sun_box_x_min,sun_box_x_max,sun_box_y_min,sun_box_y_max,sun_frames_count,irq_frame_done,irq_dma_error,irq_capture_error,avm_address,avm_burstcount,avm_write,avm_writedata,avm_byteenable,avm_waitrequest);
+module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sensor_data,capture_ctrl_enable,capture_ctrl_raw,capture_window_width,capture_window_height,bayer_mode_phase,bayer_black_level,bayer_valid_min,bayer_valid_max,bayer_weight_r_q2_14,bayer_weight_g_q2_14,bayer_weight_b_q2_14,dma_ctrl_enable,dma_ctrl_reset,dma_window_base_addr,dma_window_size_bytes,dma_slot_stride_bytes,dma_slots_count,dma_bus_timeout_cycles,sun_ctrl_enable,sun_ctrl_exposure_index,sun_threshold_q14,sun_window_x_min,sun_window_x_max,sun_window_y_min,sun_window_y_max,hdr_ctrl_enable,hdr_ctrl_new_set,hdr_min_q11,hdr_max_q11,tag_exposure_index,tag_frame_number,tag_timestamp,capture_status_frame_valid,capture_status_line_short_set,capture_status_line_long_set,capture_status_frame_short_set,capture_status_frame_long_set,capture_status_fifo_overflow_set,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,dma_status_busy,dma_status_slot,dma_status_frame_done_set,dma_status_out_of_window_set,dma_status_overflow_set,dma_status_bus_timeout_set,dma_frames_written_count,sun_count_groups,sun_over_count_groups,sun_sum_l_lo_value,sun_sum_l_hi_value,sun_sum_xl_lo_value,sun_sum_xl_hi_value,sun_sum_yl_lo_value,sun_sum_yl_hi_value,sun_max_l_q14,sun_box_x_min,sun_box_x_max,sun_box_y_min,sun_box_y_max,sun_frames_count,irq_frame_done,irq_dma_error,irq_capture_error,avm_address,avm_burstcount,avm_write,avm_writedata,avm_byteenable,avm_waitrequest);
     
     // Module arguments
     input wire  pixclk;
@@ -1015,6 +1035,10 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
     input wire  [10:0] sun_window_x_max;
     input wire  [10:0] sun_window_y_min;
     input wire  [10:0] sun_window_y_max;
+    input wire  hdr_ctrl_enable;
+    input wire  hdr_ctrl_new_set;
+    input wire  [26:0] hdr_min_q11;
+    input wire  [26:0] hdr_max_q11;
     input wire  [2:0] tag_exposure_index;
     input wire  [31:0] tag_frame_number;
     input wire  [63:0] tag_timestamp;
@@ -1120,11 +1144,16 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
     reg  [2:0] ingest$tag_exposure_index;
     reg  [31:0] ingest$tag_frame_number;
     reg  [63:0] ingest$tag_timestamp;
+    reg  ingest$hdr_enable;
+    reg  ingest$hdr_new_set;
+    reg  [26:0] ingest$hdr_min_q11;
+    reg  [26:0] ingest$hdr_max_q11;
     reg  ingest$writer_idle;
     reg  ingest$frame_closed;
     reg  ingest$beat_room;
     wire  ingest$beat_push;
     wire  [63:0] ingest$beat_data;
+    wire  [7:0] ingest$beat_byteenable;
     wire  ingest$frame_open;
     wire  ingest$frame_ended;
     wire  [31:0] ingest$desc_frame_number;
@@ -1158,6 +1187,7 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
     reg  [23:0] writer$bus_timeout;
     reg  writer$beat_push;
     reg  [63:0] writer$beat_data;
+    reg  [7:0] writer$beat_byteenable;
     reg  writer$frame_open;
     reg  writer$frame_ended;
     reg  [31:0] writer$desc_frame_number;
@@ -1271,11 +1301,16 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
         .tag_exposure_index(ingest$tag_exposure_index),
         .tag_frame_number(ingest$tag_frame_number),
         .tag_timestamp(ingest$tag_timestamp),
+        .hdr_enable(ingest$hdr_enable),
+        .hdr_new_set(ingest$hdr_new_set),
+        .hdr_min_q11(ingest$hdr_min_q11),
+        .hdr_max_q11(ingest$hdr_max_q11),
         .writer_idle(ingest$writer_idle),
         .frame_closed(ingest$frame_closed),
         .beat_room(ingest$beat_room),
         .beat_push(ingest$beat_push),
         .beat_data(ingest$beat_data),
+        .beat_byteenable(ingest$beat_byteenable),
         .frame_open(ingest$frame_open),
         .frame_ended(ingest$frame_ended),
         .desc_frame_number(ingest$desc_frame_number),
@@ -1311,6 +1346,7 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
         .bus_timeout(writer$bus_timeout),
         .beat_push(writer$beat_push),
         .beat_data(writer$beat_data),
+        .beat_byteenable(writer$beat_byteenable),
         .frame_open(writer$frame_open),
         .frame_ended(writer$frame_ended),
         .desc_frame_number(writer$desc_frame_number),
@@ -1405,6 +1441,10 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
         ingest$writer_idle = writer$writer_idle;
         ingest$frame_closed = writer$frame_closed;
         ingest$beat_room = writer$beat_room;
+        ingest$hdr_enable = hdr_ctrl_enable;
+        ingest$hdr_new_set = hdr_ctrl_new_set;
+        ingest$hdr_min_q11 = hdr_min_q11;
+        ingest$hdr_max_q11 = hdr_max_q11;
         writer$restart = dma_ctrl_reset;
         writer$window_base = dma_window_base_addr;
         writer$window_size = dma_window_size_bytes;
@@ -1413,6 +1453,7 @@ module skylux_core$capture(pixclk,clock,sensor_frame_valid,sensor_line_valid,sen
         writer$bus_timeout = dma_bus_timeout_cycles;
         writer$beat_push = ingest$beat_push;
         writer$beat_data = ingest$beat_data;
+        writer$beat_byteenable = ingest$beat_byteenable;
         writer$frame_open = ingest$frame_open;
         writer$frame_ended = ingest$frame_ended;
         writer$desc_frame_number = ingest$desc_frame_number;
@@ -5031,7 +5072,7 @@ module skylux_core$capture$grouper$quads$out_top_right(d,q,clock);
 endmodule // skylux_core$capture$grouper$quads$out_top_right
 
 
-module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read,frame_valid_async,heartbeat_async,enable,raw,tag_exposure_index,tag_frame_number,tag_timestamp,writer_idle,frame_closed,beat_room,beat_push,beat_data,frame_open,frame_ended,desc_frame_number,desc_timestamp,desc_info,desc_geometry,desc_words,desc_checksum,capture_status_frame_valid,capture_status_line_short_set,capture_status_line_long_set,capture_status_frame_short_set,capture_status_frame_long_set,capture_status_fifo_overflow_set,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,dma_status_overflow_set,taken_valid,taken_word,taken_first,taken_exposure_index);
+module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read,frame_valid_async,heartbeat_async,enable,raw,tag_exposure_index,tag_frame_number,tag_timestamp,hdr_enable,hdr_new_set,hdr_min_q11,hdr_max_q11,writer_idle,frame_closed,beat_room,beat_push,beat_data,beat_byteenable,frame_open,frame_ended,desc_frame_number,desc_timestamp,desc_info,desc_geometry,desc_words,desc_checksum,capture_status_frame_valid,capture_status_line_short_set,capture_status_line_long_set,capture_status_frame_short_set,capture_status_frame_long_set,capture_status_fifo_overflow_set,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,dma_status_overflow_set,taken_valid,taken_word,taken_first,taken_exposure_index);
     
     // Module arguments
     input wire  clock;
@@ -5046,11 +5087,16 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
     input wire  [2:0] tag_exposure_index;
     input wire  [31:0] tag_frame_number;
     input wire  [63:0] tag_timestamp;
+    input wire  hdr_enable;
+    input wire  hdr_new_set;
+    input wire  [26:0] hdr_min_q11;
+    input wire  [26:0] hdr_max_q11;
     input wire  writer_idle;
     input wire  frame_closed;
     input wire  beat_room;
     output reg  beat_push;
     output reg  [63:0] beat_data;
+    output reg  [7:0] beat_byteenable;
     output reg  frame_open;
     output reg  frame_ended;
     output reg  [31:0] desc_frame_number;
@@ -5082,6 +5128,16 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
     localparam IngestState$Ended = 2;
     
     // Stub signals
+    reg  hdr$clock;
+    reg  hdr$restart;
+    reg  hdr$first_of_set;
+    reg  [2:0] hdr$exposure_index;
+    reg  hdr$take;
+    reg  [31:0] hdr$word;
+    reg  [26:0] hdr$min_q11;
+    reg  [26:0] hdr$max_q11;
+    wire  [31:0] hdr$map_word;
+    wire  hdr$map_write;
     reg  [1:0] state$d;
     wire  [1:0] state$q;
     reg  state$clock;
@@ -5139,6 +5195,18 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
     reg  half_valid$d;
     wire  half_valid$q;
     reg  half_valid$clock;
+    reg  [3:0] half_enables$d;
+    wire  [3:0] half_enables$q;
+    reg  half_enables$clock;
+    reg  hdr_frame$d;
+    wire  hdr_frame$q;
+    reg  hdr_frame$clock;
+    reg  new_set_pending$d;
+    wire  new_set_pending$q;
+    reg  new_set_pending$clock;
+    reg  [2:0] set_ordinal$d;
+    wire  [2:0] set_ordinal$q;
+    reg  set_ordinal$clock;
     reg  [7:0] high_water$d;
     wire  [7:0] high_water$q;
     reg  high_water$clock;
@@ -5165,8 +5233,23 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
     reg  pixclk_stopped;
     reg  close_now;
     reg  [31:0] marker_flags;
+    reg  [31:0] out_word;
+    reg  [3:0] out_enables;
+    reg  [2:0] next_ordinal;
     
     // Sub module instances
+    skylux_core$capture$ingest$hdr hdr(
+        .clock(hdr$clock),
+        .restart(hdr$restart),
+        .first_of_set(hdr$first_of_set),
+        .exposure_index(hdr$exposure_index),
+        .take(hdr$take),
+        .word(hdr$word),
+        .min_q11(hdr$min_q11),
+        .max_q11(hdr$max_q11),
+        .map_word(hdr$map_word),
+        .map_write(hdr$map_write)
+    );
     skylux_core$capture$ingest$state state(
         .d(state$d),
         .q(state$q),
@@ -5262,6 +5345,26 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         .q(half_valid$q),
         .clock(half_valid$clock)
     );
+    skylux_core$capture$ingest$half_enables half_enables(
+        .d(half_enables$d),
+        .q(half_enables$q),
+        .clock(half_enables$clock)
+    );
+    skylux_core$capture$ingest$hdr_frame hdr_frame(
+        .d(hdr_frame$d),
+        .q(hdr_frame$q),
+        .clock(hdr_frame$clock)
+    );
+    skylux_core$capture$ingest$new_set_pending new_set_pending(
+        .d(new_set_pending$d),
+        .q(new_set_pending$q),
+        .clock(new_set_pending$clock)
+    );
+    skylux_core$capture$ingest$set_ordinal set_ordinal(
+        .d(set_ordinal$d),
+        .q(set_ordinal$q),
+        .clock(set_ordinal$clock)
+    );
     skylux_core$capture$ingest$high_water high_water(
         .d(high_water$d),
         .q(high_water$q),
@@ -5309,6 +5412,10 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         checksum$clock = clock;
         half$clock = clock;
         half_valid$clock = clock;
+        half_enables$clock = clock;
+        hdr_frame$clock = clock;
+        new_set_pending$clock = clock;
+        set_ordinal$clock = clock;
         high_water$clock = clock;
         last_high_water$clock = clock;
         last_pixels$clock = clock;
@@ -5333,6 +5440,10 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         checksum$d = checksum$q;
         half$d = half$q;
         half_valid$d = half_valid$q;
+        half_enables$d = half_enables$q;
+        hdr_frame$d = hdr_frame$q;
+        new_set_pending$d = new_set_pending$q;
+        set_ordinal$d = set_ordinal$q;
         high_water$d = high_water$q;
         last_high_water$d = last_high_water$q;
         last_pixels$d = last_pixels$q;
@@ -5398,8 +5509,36 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         capture_fifo_high_water_words = ((last_high_water$q) & 16'hffff);
         info_start = ((pending_exposure$q) & 32'hffffffff);
         info_start = (info_start & ~(1 << (32'h8)) | ((raw) << (32'h8)));
+        info_start = (info_start & ~(1 << (32'h9)) | ((hdr_enable & ~raw) << (32'h9)));
+        hdr$clock = clock;
+        hdr$restart = 1'b0;
+        if (hdr_new_set) begin
+            new_set_pending$d = 1'b1;
+        end
+        next_ordinal = set_ordinal$q + 32'h1;
+        if (set_ordinal$q == 32'h7) begin
+            next_ordinal = 32'h7;
+        end
+        if (new_set_pending$q) begin
+            next_ordinal = 32'h0;
+        end
+        hdr$first_of_set = new_set_pending$q;
+        hdr$exposure_index = next_ordinal;
+        hdr$take = 1'b0;
+        hdr$word = payload;
+        hdr$min_q11 = hdr_min_q11;
+        hdr$max_q11 = hdr_max_q11;
+        out_word = payload;
+        out_enables = 32'hf;
+        if (hdr_frame$q) begin
+            out_word = hdr$map_word;
+            if (~hdr$map_write) begin
+                out_enables = 32'h0;
+            end
+        end
         beat_push = 1'b0;
         beat_data = 32'h0;
+        beat_byteenable = 32'hff;
         taken_valid = 1'b0;
         taken_word = payload;
         taken_first = words$q == 32'h0;
@@ -5423,6 +5562,12 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
                             words$d = 32'h0;
                             checksum$d = 32'h0;
                             half_valid$d = 1'b0;
+                            hdr$restart = 1'b1;
+                            hdr_frame$d = hdr_enable & ~raw;
+                            if (hdr_enable & ~raw) begin
+                                set_ordinal$d = next_ordinal;
+                                new_set_pending$d = 1'b0;
+                            end
                             state$d = IngestState$Frame;
                         end
                     end
@@ -5436,15 +5581,18 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
                         if (beat_room) begin
                             fifo_read = 1'b1;
                             taken_valid = 1'b1;
+                            hdr$take = 1'b1;
                             words$d = words$q + 32'h1;
                             checksum$d = checksum$q + payload;
                             if (half_valid$q) begin
                                 beat_push = 1'b1;
-                                beat_data = ((half$q) & 64'hffffffffffffffff) | (((payload) & 64'hffffffffffffffff) << 32'h20);
+                                beat_data = ((half$q) & 64'hffffffffffffffff) | (((out_word) & 64'hffffffffffffffff) << 32'h20);
+                                beat_byteenable = ((half_enables$q) & 8'hff) | (((out_enables) & 8'hff) << 32'h4);
                                 half_valid$d = 1'b0;
                             end
                             else begin
-                                half$d = payload;
+                                half$d = out_word;
+                                half_enables$d = out_enables;
                                 half_valid$d = 1'b1;
                             end
                         end
@@ -5470,6 +5618,7 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
                         if (half_valid$q) begin
                             beat_push = 1'b1;
                             beat_data = ((half$q) & 64'hffffffffffffffff);
+                            beat_byteenable = ((half_enables$q) & 8'hff) | 32'hf0;
                             half_valid$d = 1'b0;
                         end
                     end
@@ -5645,6 +5794,25 @@ module skylux_core$capture$ingest$half(d,q,clock);
 endmodule // skylux_core$capture$ingest$half
 
 
+module skylux_core$capture$ingest$half_enables(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$ingest$half_enables
+
+
 module skylux_core$capture$ingest$half_valid(d,q,clock);
     
     // Module arguments
@@ -5719,6 +5887,268 @@ module skylux_core$capture$ingest$hb_sync(d,q,clock);
     end
           
 endmodule // skylux_core$capture$ingest$hb_sync
+
+
+module skylux_core$capture$ingest$hdr(clock,restart,first_of_set,exposure_index,take,word,min_q11,max_q11,map_word,map_write);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  restart;
+    input wire  first_of_set;
+    input wire  [2:0] exposure_index;
+    input wire  take;
+    input wire  [31:0] word;
+    input wire  [26:0] min_q11;
+    input wire  [26:0] max_q11;
+    output reg  [31:0] map_word;
+    output reg  map_write;
+    
+    // Stub signals
+    reg  [19:0] mask_low$read_address;
+    reg  mask_low$read_clock;
+    wire  mask_low$read_data;
+    reg  [19:0] mask_low$write_address;
+    reg  mask_low$write_clock;
+    reg  mask_low$write_data;
+    reg  mask_low$write_enable;
+    reg  [17:0] mask_high$read_address;
+    reg  mask_high$read_clock;
+    wire  mask_high$read_data;
+    reg  [17:0] mask_high$write_address;
+    reg  mask_high$write_clock;
+    reg  mask_high$write_data;
+    reg  mask_high$write_enable;
+    reg  [20:0] pos$d;
+    wire  [20:0] pos$q;
+    reg  pos$clock;
+    reg  set_first$d;
+    wire  set_first$q;
+    reg  set_first$clock;
+    reg  [2:0] index$d;
+    wire  [2:0] index$q;
+    reg  index$clock;
+    
+    // Local signals
+    reg  [20:0] next_pos;
+    reg  [26:0] luma;
+    reg  usable;
+    reg  filled;
+    
+    // Sub module instances
+    skylux_core$capture$ingest$hdr$mask_low mask_low(
+        .read_address(mask_low$read_address),
+        .read_clock(mask_low$read_clock),
+        .read_data(mask_low$read_data),
+        .write_address(mask_low$write_address),
+        .write_clock(mask_low$write_clock),
+        .write_data(mask_low$write_data),
+        .write_enable(mask_low$write_enable)
+    );
+    skylux_core$capture$ingest$hdr$mask_high mask_high(
+        .read_address(mask_high$read_address),
+        .read_clock(mask_high$read_clock),
+        .read_data(mask_high$read_data),
+        .write_address(mask_high$write_address),
+        .write_clock(mask_high$write_clock),
+        .write_data(mask_high$write_data),
+        .write_enable(mask_high$write_enable)
+    );
+    skylux_core$capture$ingest$hdr$pos pos(
+        .d(pos$d),
+        .q(pos$q),
+        .clock(pos$clock)
+    );
+    skylux_core$capture$ingest$hdr$set_first set_first(
+        .d(set_first$d),
+        .q(set_first$q),
+        .clock(set_first$clock)
+    );
+    skylux_core$capture$ingest$hdr$index index(
+        .d(index$d),
+        .q(index$q),
+        .clock(index$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        pos$clock = clock;
+        set_first$clock = clock;
+        index$clock = clock;
+        pos$d = pos$q;
+        set_first$d = set_first$q;
+        index$d = index$q;
+        mask_low$read_clock = clock;
+        mask_low$write_clock = clock;
+        mask_high$read_clock = clock;
+        mask_high$write_clock = clock;
+        next_pos = pos$q;
+        if (take) begin
+            next_pos = pos$q + 32'h1;
+        end
+        if (restart) begin
+            next_pos = 32'h0;
+            set_first$d = first_of_set;
+            index$d = exposure_index;
+        end
+        pos$d = next_pos;
+        mask_low$read_address = next_pos[(32'h0)+:(20)];
+        mask_high$read_address = next_pos[(32'h0)+:(18)];
+        luma = word[(32'h3)+:(27)];
+        usable = ~word[32'h1f] & ~word[32'h1e] & (luma >= min_q11) & (luma <= max_q11);
+        filled = 1'b0;
+        if (~set_first$q) begin
+            if (pos$q[32'h14]) begin
+                filled = mask_high$read_data;
+            end
+            else begin
+                filled = mask_low$read_data;
+            end
+        end
+        mask_low$write_address = pos$q[(32'h0)+:(20)];
+        mask_high$write_address = pos$q[(32'h0)+:(18)];
+        mask_low$write_data = filled | usable;
+        mask_high$write_data = filled | usable;
+        mask_low$write_enable = take & ~pos$q[32'h14];
+        mask_high$write_enable = take & pos$q[32'h14];
+        map_word = (((word[(32'h1e)+:(2)]) & 32'hffffffff) << 32'h1e) | (((index$q) & 32'hffffffff) << 32'h1b) | ((luma) & 32'hffffffff);
+        map_write = take & ~filled;
+    end
+    
+endmodule // skylux_core$capture$ingest$hdr
+
+
+module skylux_core$capture$ingest$hdr$index(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$ingest$hdr$index
+
+
+module skylux_core$capture$ingest$hdr$mask_high(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [17:0] read_address;
+    input wire  read_clock;
+    output reg  read_data;
+    input wire  [17:0] write_address;
+    input wire  write_clock;
+    input wire  write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg[0:0] mem[262143:0];
+    
+    
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // skylux_core$capture$ingest$hdr$mask_high
+
+
+module skylux_core$capture$ingest$hdr$mask_low(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [19:0] read_address;
+    input wire  read_clock;
+    output reg  read_data;
+    input wire  [19:0] write_address;
+    input wire  write_clock;
+    input wire  write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg[0:0] mem[1048575:0];
+    
+    
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // skylux_core$capture$ingest$hdr$mask_low
+
+
+module skylux_core$capture$ingest$hdr$pos(d,q,clock);
+    
+    // Module arguments
+    input wire  [20:0] d;
+    output reg  [20:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 21'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$ingest$hdr$pos
+
+
+module skylux_core$capture$ingest$hdr$set_first(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$ingest$hdr$set_first
+
+
+module skylux_core$capture$ingest$hdr_frame(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$ingest$hdr_frame
 
 
 module skylux_core$capture$ingest$high_water(d,q,clock);
@@ -5816,6 +6246,25 @@ module skylux_core$capture$ingest$last_pixels(d,q,clock);
 endmodule // skylux_core$capture$ingest$last_pixels
 
 
+module skylux_core$capture$ingest$new_set_pending(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$ingest$new_set_pending
+
+
 module skylux_core$capture$ingest$pending_exposure(d,q,clock);
     
     // Module arguments
@@ -5871,6 +6320,25 @@ module skylux_core$capture$ingest$pending_timestamp(d,q,clock);
     end
           
 endmodule // skylux_core$capture$ingest$pending_timestamp
+
+
+module skylux_core$capture$ingest$set_ordinal(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$ingest$set_ordinal
 
 
 module skylux_core$capture$ingest$since_heartbeat(d,q,clock);
@@ -7022,7 +7490,7 @@ module skylux_core$capture$sun$s2_yl_low(d,q,clock);
 endmodule // skylux_core$capture$sun$s2_yl_low
 
 
-module skylux_core$capture$writer(clock,restart,window_base,window_size,slot_stride,slots,bus_timeout,beat_push,beat_data,frame_open,frame_ended,desc_frame_number,desc_timestamp,desc_info,desc_geometry,desc_words,desc_checksum,writer_idle,frame_closed,beat_room,dma_status_busy,dma_status_slot,dma_status_frame_done_set,dma_status_out_of_window_set,dma_status_bus_timeout_set,dma_frames_written_count,avm_address,avm_burstcount,avm_write,avm_writedata,avm_byteenable,avm_waitrequest);
+module skylux_core$capture$writer(clock,restart,window_base,window_size,slot_stride,slots,bus_timeout,beat_push,beat_data,beat_byteenable,frame_open,frame_ended,desc_frame_number,desc_timestamp,desc_info,desc_geometry,desc_words,desc_checksum,writer_idle,frame_closed,beat_room,dma_status_busy,dma_status_slot,dma_status_frame_done_set,dma_status_out_of_window_set,dma_status_bus_timeout_set,dma_frames_written_count,avm_address,avm_burstcount,avm_write,avm_writedata,avm_byteenable,avm_waitrequest);
     
     // Module arguments
     input wire  clock;
@@ -7034,6 +7502,7 @@ module skylux_core$capture$writer(clock,restart,window_base,window_size,slot_str
     input wire  [23:0] bus_timeout;
     input wire  beat_push;
     input wire  [63:0] beat_data;
+    input wire  [7:0] beat_byteenable;
     input wire  frame_open;
     input wire  frame_ended;
     input wire  [31:0] desc_frame_number;
@@ -7085,6 +7554,17 @@ module skylux_core$capture$writer(clock,restart,window_base,window_size,slot_str
     wire  beats$full;
     wire  beats$almost_full;
     wire  beats$overflow;
+    reg  enables$clock;
+    reg  enables$read;
+    wire  [7:0] enables$data_out;
+    wire  enables$empty;
+    wire  enables$almost_empty;
+    wire  enables$underflow;
+    reg  enables$write;
+    reg  [7:0] enables$data_in;
+    wire  enables$full;
+    wire  enables$almost_full;
+    wire  enables$overflow;
     reg  [8:0] queued$d;
     wire  [8:0] queued$q;
     reg  queued$clock;
@@ -7164,6 +7644,19 @@ module skylux_core$capture$writer(clock,restart,window_base,window_size,slot_str
         .full(beats$full),
         .almost_full(beats$almost_full),
         .overflow(beats$overflow)
+    );
+    skylux_core$capture$writer$enables enables(
+        .clock(enables$clock),
+        .read(enables$read),
+        .data_out(enables$data_out),
+        .empty(enables$empty),
+        .almost_empty(enables$almost_empty),
+        .underflow(enables$underflow),
+        .write(enables$write),
+        .data_in(enables$data_in),
+        .full(enables$full),
+        .almost_full(enables$almost_full),
+        .overflow(enables$overflow)
     );
     skylux_core$capture$writer$queued queued(
         .d(queued$d),
@@ -7281,8 +7774,11 @@ module skylux_core$capture$writer(clock,restart,window_base,window_size,slot_str
         timed_out$d = timed_out$q;
         frames_written$d = frames_written$q;
         beats$clock = clock;
+        enables$clock = clock;
         beats$write = beat_push;
         beats$data_in = beat_data;
+        enables$write = beat_push;
+        enables$data_in = beat_byteenable;
         pop = 1'b0;
         beat_room = queued$q < 32'hfe;
         base_wide = 32'h0;
@@ -7381,6 +7877,7 @@ module skylux_core$capture$writer(clock,restart,window_base,window_size,slot_str
                 begin
                     avm_write = 1'b1;
                     avm_writedata = beats$data_out;
+                    avm_byteenable = enables$data_out;
                     if (avm_waitrequest) begin
                         stalled = 1'b1;
                     end
@@ -7475,6 +7972,7 @@ module skylux_core$capture$writer(clock,restart,window_base,window_size,slot_str
             timed_out$d = 1'b0;
         end
         beats$read = pop;
+        enables$read = pop;
         if (beat_push & ~pop) begin
             queued$d = queued$q + 32'h1;
         end
@@ -7972,6 +8470,415 @@ module skylux_core$capture$writer$desc_beat(d,q,clock);
     end
           
 endmodule // skylux_core$capture$writer$desc_beat
+
+
+module skylux_core$capture$writer$enables(clock,read,data_out,empty,almost_empty,underflow,write,data_in,full,almost_full,overflow);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  read;
+    output reg  [7:0] data_out;
+    output reg  empty;
+    output reg  almost_empty;
+    output reg  underflow;
+    input wire  write;
+    input wire  [7:0] data_in;
+    output reg  full;
+    output reg  almost_full;
+    output reg  overflow;
+    
+    // Stub signals
+    reg  [7:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [7:0] ram$read_data;
+    reg  [7:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [7:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  read_logic$clock;
+    reg  read_logic$read;
+    wire  [7:0] read_logic$data_out;
+    wire  read_logic$empty;
+    wire  read_logic$almost_empty;
+    wire  read_logic$underflow;
+    reg  [8:0] read_logic$write_address_delayed;
+    wire  [7:0] read_logic$ram_read_address;
+    reg  [7:0] read_logic$ram_read_data;
+    wire  read_logic$ram_read_clock;
+    wire  [8:0] read_logic$read_address_out;
+    wire  [8:0] read_logic$fill_level;
+    reg  write_logic$write;
+    reg  [7:0] write_logic$data_in;
+    wire  write_logic$full;
+    wire  write_logic$almost_full;
+    wire  write_logic$overflow;
+    reg  write_logic$clock;
+    wire  [7:0] write_logic$ram_write_address;
+    wire  write_logic$ram_write_clock;
+    wire  [7:0] write_logic$ram_write_data;
+    wire  write_logic$ram_write_enable;
+    reg  [8:0] write_logic$read_address;
+    wire  [8:0] write_logic$write_address_delayed;
+    wire  [8:0] write_logic$fill_level;
+    
+    // Sub module instances
+    skylux_core$capture$writer$enables$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    skylux_core$capture$writer$enables$read_logic read_logic(
+        .clock(read_logic$clock),
+        .read(read_logic$read),
+        .data_out(read_logic$data_out),
+        .empty(read_logic$empty),
+        .almost_empty(read_logic$almost_empty),
+        .underflow(read_logic$underflow),
+        .write_address_delayed(read_logic$write_address_delayed),
+        .ram_read_address(read_logic$ram_read_address),
+        .ram_read_data(read_logic$ram_read_data),
+        .ram_read_clock(read_logic$ram_read_clock),
+        .read_address_out(read_logic$read_address_out),
+        .fill_level(read_logic$fill_level)
+    );
+    skylux_core$capture$writer$enables$write_logic write_logic(
+        .write(write_logic$write),
+        .data_in(write_logic$data_in),
+        .full(write_logic$full),
+        .almost_full(write_logic$almost_full),
+        .overflow(write_logic$overflow),
+        .clock(write_logic$clock),
+        .ram_write_address(write_logic$ram_write_address),
+        .ram_write_clock(write_logic$ram_write_clock),
+        .ram_write_data(write_logic$ram_write_data),
+        .ram_write_enable(write_logic$ram_write_enable),
+        .read_address(write_logic$read_address),
+        .write_address_delayed(write_logic$write_address_delayed),
+        .fill_level(write_logic$fill_level)
+    );
+    
+    // Update code
+    always @(*) begin
+        read_logic$clock = clock;
+        write_logic$clock = clock;
+        read_logic$read = read;
+        empty = read_logic$empty;
+        almost_empty = read_logic$almost_empty;
+        data_out = read_logic$data_out;
+        underflow = read_logic$underflow;
+        overflow = write_logic$overflow;
+        almost_full = write_logic$almost_full;
+        full = write_logic$full;
+        write_logic$write = write;
+        write_logic$data_in = data_in;
+        ram$write_clock = clock;
+        ram$write_enable = write_logic$ram_write_enable;
+        ram$write_address = write_logic$ram_write_address;
+        ram$write_data = write_logic$ram_write_data;
+        ram$read_clock = clock;
+        ram$read_address = read_logic$ram_read_address;
+        read_logic$ram_read_data = ram$read_data;
+        read_logic$write_address_delayed = write_logic$write_address_delayed;
+        write_logic$read_address = read_logic$read_address_out;
+    end
+    
+endmodule // skylux_core$capture$writer$enables
+
+
+module skylux_core$capture$writer$enables$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [7:0] read_address;
+    input wire  read_clock;
+    output reg  [7:0] read_data;
+    input wire  [7:0] write_address;
+    input wire  write_clock;
+    input wire  [7:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg[7:0] mem[255:0];
+    
+    
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+                
+endmodule // skylux_core$capture$writer$enables$ram
+
+
+module skylux_core$capture$writer$enables$read_logic(clock,read,data_out,empty,almost_empty,underflow,write_address_delayed,ram_read_address,ram_read_data,ram_read_clock,read_address_out,fill_level);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  read;
+    output reg  [7:0] data_out;
+    output reg  empty;
+    output reg  almost_empty;
+    output reg  underflow;
+    input wire  [8:0] write_address_delayed;
+    output reg  [7:0] ram_read_address;
+    input wire  [7:0] ram_read_data;
+    output reg  ram_read_clock;
+    output reg  [8:0] read_address_out;
+    output reg  [8:0] fill_level;
+    
+    // Constant declarations
+    localparam  fifo_address_mask = 9'b11111111;
+    localparam  fifo_size = 9'b100000000;
+    localparam  block_size = 9'b1;
+    
+    // Stub signals
+    reg  [8:0] read_address$d;
+    wire  [8:0] read_address$q;
+    reg  read_address$clock;
+    reg  dff_underflow$d;
+    wire  dff_underflow$q;
+    reg  dff_underflow$clock;
+    
+    // Local signals
+    reg  is_empty;
+    reg  is_full;
+    
+    // Sub module instances
+    skylux_core$capture$writer$enables$read_logic$read_address read_address(
+        .d(read_address$d),
+        .q(read_address$q),
+        .clock(read_address$clock)
+    );
+    skylux_core$capture$writer$enables$read_logic$dff_underflow dff_underflow(
+        .d(dff_underflow$d),
+        .q(dff_underflow$q),
+        .clock(dff_underflow$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        read_address$clock = clock;
+        dff_underflow$clock = clock;
+        read_address$d = read_address$q;
+        dff_underflow$d = dff_underflow$q;
+        ram_read_clock = clock;
+        is_empty = (read_address$q == write_address_delayed);
+        is_full = ~is_empty & ((read_address$q & fifo_address_mask) == (write_address_delayed & fifo_address_mask));
+        fill_level = ((write_address_delayed & fifo_address_mask) + fifo_size - (read_address$q & fifo_address_mask)) & fifo_address_mask;
+        if (is_full) begin
+            fill_level = fifo_size;
+        end
+        almost_empty = (fill_level < block_size);
+        empty = is_empty;
+        ram_read_address = ((read_address$q & fifo_address_mask) & 8'hff);
+        data_out = ram_read_data;
+        if (read & ~is_empty) begin
+            read_address$d = read_address$q + 32'h1;
+            ram_read_address = (((read_address$q + 32'h1) & fifo_address_mask) & 8'hff);
+        end
+        else begin
+            read_address$d = read_address$q;
+        end
+        dff_underflow$d = dff_underflow$q | (is_empty & read);
+        underflow = dff_underflow$q;
+        read_address_out = read_address$q;
+    end
+    
+endmodule // skylux_core$capture$writer$enables$read_logic
+
+
+module skylux_core$capture$writer$enables$read_logic$dff_underflow(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$writer$enables$read_logic$dff_underflow
+
+
+module skylux_core$capture$writer$enables$read_logic$read_address(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$writer$enables$read_logic$read_address
+
+
+module skylux_core$capture$writer$enables$write_logic(write,data_in,full,almost_full,overflow,clock,ram_write_address,ram_write_clock,ram_write_data,ram_write_enable,read_address,write_address_delayed,fill_level);
+    
+    // Module arguments
+    input wire  write;
+    input wire  [7:0] data_in;
+    output reg  full;
+    output reg  almost_full;
+    output reg  overflow;
+    input wire  clock;
+    output reg  [7:0] ram_write_address;
+    output reg  ram_write_clock;
+    output reg  [7:0] ram_write_data;
+    output reg  ram_write_enable;
+    input wire  [8:0] read_address;
+    output reg  [8:0] write_address_delayed;
+    output reg  [8:0] fill_level;
+    
+    // Constant declarations
+    localparam  fifo_address_mask = 9'b11111111;
+    localparam  fifo_size = 9'b100000000;
+    localparam  almost_full_level = 9'b11111111;
+    
+    // Stub signals
+    reg  [8:0] write_address$d;
+    wire  [8:0] write_address$q;
+    reg  write_address$clock;
+    reg  [8:0] dff_write_address_delay$d;
+    wire  [8:0] dff_write_address_delay$q;
+    reg  dff_write_address_delay$clock;
+    reg  dff_overflow$d;
+    wire  dff_overflow$q;
+    reg  dff_overflow$clock;
+    
+    // Local signals
+    reg  is_empty;
+    reg  is_full;
+    
+    // Sub module instances
+    skylux_core$capture$writer$enables$write_logic$write_address write_address(
+        .d(write_address$d),
+        .q(write_address$q),
+        .clock(write_address$clock)
+    );
+    skylux_core$capture$writer$enables$write_logic$dff_write_address_delay dff_write_address_delay(
+        .d(dff_write_address_delay$d),
+        .q(dff_write_address_delay$q),
+        .clock(dff_write_address_delay$clock)
+    );
+    skylux_core$capture$writer$enables$write_logic$dff_overflow dff_overflow(
+        .d(dff_overflow$d),
+        .q(dff_overflow$q),
+        .clock(dff_overflow$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff_overflow$clock = clock;
+        write_address$clock = clock;
+        dff_write_address_delay$clock = clock;
+        dff_overflow$d = dff_overflow$q;
+        write_address$d = write_address$q;
+        dff_write_address_delay$d = dff_write_address_delay$q;
+        ram_write_clock = clock;
+        dff_write_address_delay$d = write_address$q;
+        write_address_delayed = dff_write_address_delay$q;
+        ram_write_enable = 1'b0;
+        is_empty = (read_address == dff_write_address_delay$q);
+        is_full = ~is_empty & ((read_address & fifo_address_mask) == (write_address$q & fifo_address_mask));
+        fill_level = ((dff_write_address_delay$q & fifo_address_mask) + fifo_size - (read_address & fifo_address_mask)) & fifo_address_mask;
+        if (is_full) begin
+            fill_level = fifo_size;
+        end
+        almost_full = (fill_level >= almost_full_level);
+        full = is_full;
+        ram_write_address = ((write_address$q & fifo_address_mask) & 8'hff);
+        ram_write_data = data_in;
+        if (write & ~is_full) begin
+            write_address$d = write_address$q + 32'h1;
+            ram_write_enable = 1'b1;
+        end
+        else begin
+            write_address$d = write_address$q;
+            ram_write_enable = 1'b0;
+        end
+        dff_overflow$d = dff_overflow$q | (is_full & write);
+        overflow = dff_overflow$q;
+    end
+    
+endmodule // skylux_core$capture$writer$enables$write_logic
+
+
+module skylux_core$capture$writer$enables$write_logic$dff_overflow(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$writer$enables$write_logic$dff_overflow
+
+
+module skylux_core$capture$writer$enables$write_logic$dff_write_address_delay(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$writer$enables$write_logic$dff_write_address_delay
+
+
+module skylux_core$capture$writer$enables$write_logic$write_address(d,q,clock);
+    
+    // Module arguments
+    input wire  [8:0] d;
+    output reg  [8:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 9'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$writer$enables$write_logic$write_address
 
 
 module skylux_core$capture$writer$flags(d,q,clock);
@@ -12522,7 +13429,7 @@ module skylux_core$raybox$written(d,q,clock);
 endmodule // skylux_core$raybox$written
 
 
-module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_byteenable,avs_readdata,irq,sys_scratch_value,sys_bus_status_unmapped_read,sys_bus_status_unmapped_write,sys_time_lo_cycles,sys_time_hi_cycles,sys_irq_status_frame_done,sys_irq_status_frame_done_set,sys_irq_status_sequence_done,sys_irq_status_sequence_done_set,sys_irq_status_dma_error,sys_irq_status_dma_error_set,sys_irq_status_capture_error,sys_irq_status_capture_error_set,sys_irq_status_i2c_done,sys_irq_status_i2c_done_set,sys_irq_status_raybox_done,sys_irq_status_raybox_done_set,sys_irq_enable_frame_done,sys_irq_enable_sequence_done,sys_irq_enable_dma_error,sys_irq_enable_capture_error,sys_irq_enable_i2c_done,sys_irq_enable_raybox_done,i2c_ctrl_start,i2c_ctrl_read,i2c_target_addr7,i2c_reg_addr_addr,i2c_write_data_data,i2c_read_data_data,i2c_status_busy,i2c_status_done,i2c_status_done_set,i2c_status_nack,i2c_status_nack_set,i2c_status_timeout,i2c_status_timeout_set,i2c_status_bus_stuck,i2c_status_bus_stuck_set,i2c_status_refused,i2c_status_refused_set,i2c_clock_div_half_period,i2c_timeout_cycles,i2c_sensor_pins_reset_n,i2c_sensor_pins_strobe,seq_ctrl_start,seq_ctrl_abort,seq_ctrl_ext_trigger,seq_count_exposures,seq_status_busy,seq_status_index,seq_status_shield_open,seq_status_done,seq_status_done_set,seq_status_shield_limit_hit,seq_status_shield_limit_hit_set,seq_status_i2c_error,seq_status_i2c_error_set,seq_status_refused,seq_status_refused_set,seq_status_aborted,seq_status_aborted_set,seq_shield_limit_cycles,seq_shield_steps_steps,seq_shield_step_period_cycles,seq_frame_number_value,seq_trigger_pulse_cycles,seq_exp_shutter_width_rows$0,seq_exp_shutter_width_rows$1,seq_exp_shutter_width_rows$2,seq_exp_shutter_width_rows$3,seq_exp_shutter_width_rows$4,seq_exp_shutter_width_rows$5,seq_exp_shutter_width_rows$6,seq_exp_shutter_width_rows$7,seq_exp_shutter_delay_value$0,seq_exp_shutter_delay_value$1,seq_exp_shutter_delay_value$2,seq_exp_shutter_delay_value$3,seq_exp_shutter_delay_value$4,seq_exp_shutter_delay_value$5,seq_exp_shutter_delay_value$6,seq_exp_shutter_delay_value$7,seq_exp_gain_code$0,seq_exp_gain_code$1,seq_exp_gain_code$2,seq_exp_gain_code$3,seq_exp_gain_code$4,seq_exp_gain_code$5,seq_exp_gain_code$6,seq_exp_gain_code$7,capture_ctrl_enable,capture_ctrl_raw,capture_window_width,capture_window_height,capture_status_frame_valid,capture_status_line_short,capture_status_line_short_set,capture_status_line_long,capture_status_line_long_set,capture_status_frame_short,capture_status_frame_short_set,capture_status_frame_long,capture_status_frame_long_set,capture_status_fifo_overflow,capture_status_fifo_overflow_set,capture_status_pixclk_stopped,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,bayer_mode_phase,bayer_black_level,bayer_valid_min,bayer_valid_max,bayer_weight_r_q2_14,bayer_weight_g_q2_14,bayer_weight_b_q2_14,dma_ctrl_enable,dma_ctrl_reset,dma_window_base_addr,dma_window_size_bytes,dma_slot_stride_bytes,dma_slots_count,dma_status_busy,dma_status_slot,dma_status_frame_done,dma_status_frame_done_set,dma_status_out_of_window,dma_status_out_of_window_set,dma_status_overflow,dma_status_overflow_set,dma_status_bus_timeout,dma_status_bus_timeout_set,dma_frames_written_count,dma_bus_timeout_cycles,raybox_ctrl_start,raybox_ctrl_abort,raybox_work_base_addr,raybox_work_count_items,raybox_result_base_addr,raybox_window_base_addr,raybox_window_size_bytes,raybox_status_busy,raybox_status_done,raybox_status_done_set,raybox_status_bad_descriptor,raybox_status_bad_descriptor_set,raybox_status_out_of_window,raybox_status_out_of_window_set,raybox_status_bus_timeout,raybox_status_bus_timeout_set,raybox_tests_done_count,raybox_info_lanes,raybox_bus_timeout_cycles,sun_ctrl_enable,sun_ctrl_exposure_index,sun_threshold_q14,sun_window_x_min,sun_window_x_max,sun_window_y_min,sun_window_y_max,sun_count_groups,sun_over_count_groups,sun_sum_l_lo_value,sun_sum_l_hi_value,sun_sum_xl_lo_value,sun_sum_xl_hi_value,sun_sum_yl_lo_value,sun_sum_yl_hi_value,sun_max_l_q14,sun_box_x_min,sun_box_x_max,sun_box_y_min,sun_box_y_max,sun_frames_count);
+module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_byteenable,avs_readdata,irq,sys_scratch_value,sys_bus_status_unmapped_read,sys_bus_status_unmapped_write,sys_time_lo_cycles,sys_time_hi_cycles,sys_irq_status_frame_done,sys_irq_status_frame_done_set,sys_irq_status_sequence_done,sys_irq_status_sequence_done_set,sys_irq_status_dma_error,sys_irq_status_dma_error_set,sys_irq_status_capture_error,sys_irq_status_capture_error_set,sys_irq_status_i2c_done,sys_irq_status_i2c_done_set,sys_irq_status_raybox_done,sys_irq_status_raybox_done_set,sys_irq_enable_frame_done,sys_irq_enable_sequence_done,sys_irq_enable_dma_error,sys_irq_enable_capture_error,sys_irq_enable_i2c_done,sys_irq_enable_raybox_done,i2c_ctrl_start,i2c_ctrl_read,i2c_target_addr7,i2c_reg_addr_addr,i2c_write_data_data,i2c_read_data_data,i2c_status_busy,i2c_status_done,i2c_status_done_set,i2c_status_nack,i2c_status_nack_set,i2c_status_timeout,i2c_status_timeout_set,i2c_status_bus_stuck,i2c_status_bus_stuck_set,i2c_status_refused,i2c_status_refused_set,i2c_clock_div_half_period,i2c_timeout_cycles,i2c_sensor_pins_reset_n,i2c_sensor_pins_strobe,seq_ctrl_start,seq_ctrl_abort,seq_ctrl_ext_trigger,seq_count_exposures,seq_status_busy,seq_status_index,seq_status_shield_open,seq_status_done,seq_status_done_set,seq_status_shield_limit_hit,seq_status_shield_limit_hit_set,seq_status_i2c_error,seq_status_i2c_error_set,seq_status_refused,seq_status_refused_set,seq_status_aborted,seq_status_aborted_set,seq_shield_limit_cycles,seq_shield_steps_steps,seq_shield_step_period_cycles,seq_frame_number_value,seq_trigger_pulse_cycles,seq_exp_shutter_width_rows$0,seq_exp_shutter_width_rows$1,seq_exp_shutter_width_rows$2,seq_exp_shutter_width_rows$3,seq_exp_shutter_width_rows$4,seq_exp_shutter_width_rows$5,seq_exp_shutter_width_rows$6,seq_exp_shutter_width_rows$7,seq_exp_shutter_delay_value$0,seq_exp_shutter_delay_value$1,seq_exp_shutter_delay_value$2,seq_exp_shutter_delay_value$3,seq_exp_shutter_delay_value$4,seq_exp_shutter_delay_value$5,seq_exp_shutter_delay_value$6,seq_exp_shutter_delay_value$7,seq_exp_gain_code$0,seq_exp_gain_code$1,seq_exp_gain_code$2,seq_exp_gain_code$3,seq_exp_gain_code$4,seq_exp_gain_code$5,seq_exp_gain_code$6,seq_exp_gain_code$7,capture_ctrl_enable,capture_ctrl_raw,capture_window_width,capture_window_height,capture_status_frame_valid,capture_status_line_short,capture_status_line_short_set,capture_status_line_long,capture_status_line_long_set,capture_status_frame_short,capture_status_frame_short_set,capture_status_frame_long,capture_status_frame_long_set,capture_status_fifo_overflow,capture_status_fifo_overflow_set,capture_status_pixclk_stopped,capture_status_pixclk_stopped_set,capture_last_frame_pixels,capture_last_frame_lines,capture_fifo_high_water_words,capture_frames_count,bayer_mode_phase,bayer_black_level,bayer_valid_min,bayer_valid_max,bayer_weight_r_q2_14,bayer_weight_g_q2_14,bayer_weight_b_q2_14,dma_ctrl_enable,dma_ctrl_reset,dma_window_base_addr,dma_window_size_bytes,dma_slot_stride_bytes,dma_slots_count,dma_status_busy,dma_status_slot,dma_status_frame_done,dma_status_frame_done_set,dma_status_out_of_window,dma_status_out_of_window_set,dma_status_overflow,dma_status_overflow_set,dma_status_bus_timeout,dma_status_bus_timeout_set,dma_frames_written_count,dma_bus_timeout_cycles,raybox_ctrl_start,raybox_ctrl_abort,raybox_work_base_addr,raybox_work_count_items,raybox_result_base_addr,raybox_window_base_addr,raybox_window_size_bytes,raybox_status_busy,raybox_status_done,raybox_status_done_set,raybox_status_bad_descriptor,raybox_status_bad_descriptor_set,raybox_status_out_of_window,raybox_status_out_of_window_set,raybox_status_bus_timeout,raybox_status_bus_timeout_set,raybox_tests_done_count,raybox_info_lanes,raybox_bus_timeout_cycles,sun_ctrl_enable,sun_ctrl_exposure_index,sun_threshold_q14,sun_window_x_min,sun_window_x_max,sun_window_y_min,sun_window_y_max,sun_count_groups,sun_over_count_groups,sun_sum_l_lo_value,sun_sum_l_hi_value,sun_sum_xl_lo_value,sun_sum_xl_hi_value,sun_sum_yl_lo_value,sun_sum_yl_hi_value,sun_max_l_q14,sun_box_x_min,sun_box_x_max,sun_box_y_min,sun_box_y_max,sun_frames_count,hdr_ctrl_enable,hdr_ctrl_new_set,hdr_min_q11,hdr_max_q11);
     
     // Module arguments
     input wire  clock;
@@ -12709,6 +13616,10 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
     input wire  [10:0] sun_box_y_min;
     input wire  [10:0] sun_box_y_max;
     input wire  [15:0] sun_frames_count;
+    output reg  hdr_ctrl_enable;
+    output reg  hdr_ctrl_new_set;
+    output reg  [26:0] hdr_min_q11;
+    output reg  [26:0] hdr_max_q11;
     
     // Stub signals
     reg  [31:0] rdata$d;
@@ -12939,6 +13850,18 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
     reg  [31:0] r_sun_window_y$d;
     wire  [31:0] r_sun_window_y$q;
     reg  r_sun_window_y$clock;
+    reg  [31:0] r_hdr_ctrl$d;
+    wire  [31:0] r_hdr_ctrl$q;
+    reg  r_hdr_ctrl$clock;
+    reg  [31:0] p_hdr_ctrl$d;
+    wire  [31:0] p_hdr_ctrl$q;
+    reg  p_hdr_ctrl$clock;
+    reg  [31:0] r_hdr_min$d;
+    wire  [31:0] r_hdr_min$q;
+    reg  r_hdr_min$clock;
+    reg  [31:0] r_hdr_max$d;
+    wire  [31:0] r_hdr_max$q;
+    reg  r_hdr_max$clock;
     
     // Local signals
     reg  [31:0] byte_mask;
@@ -13014,6 +13937,9 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
     reg  [31:0] nx_sun_threshold;
     reg  [31:0] nx_sun_window_x;
     reg  [31:0] nx_sun_window_y;
+    reg  [31:0] nx_hdr_ctrl;
+    reg  [31:0] nx_hdr_min;
+    reg  [31:0] nx_hdr_max;
     
     // Sub module instances
     skylux_core$regs$rdata rdata(
@@ -13396,6 +14322,26 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         .q(r_sun_window_y$q),
         .clock(r_sun_window_y$clock)
     );
+    skylux_core$regs$r_hdr_ctrl r_hdr_ctrl(
+        .d(r_hdr_ctrl$d),
+        .q(r_hdr_ctrl$q),
+        .clock(r_hdr_ctrl$clock)
+    );
+    skylux_core$regs$p_hdr_ctrl p_hdr_ctrl(
+        .d(p_hdr_ctrl$d),
+        .q(p_hdr_ctrl$q),
+        .clock(p_hdr_ctrl$clock)
+    );
+    skylux_core$regs$r_hdr_min r_hdr_min(
+        .d(r_hdr_min$d),
+        .q(r_hdr_min$q),
+        .clock(r_hdr_min$clock)
+    );
+    skylux_core$regs$r_hdr_max r_hdr_max(
+        .d(r_hdr_max$d),
+        .q(r_hdr_max$q),
+        .clock(r_hdr_max$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -13475,6 +14421,10 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         r_sun_threshold$clock = clock;
         r_sun_window_x$clock = clock;
         r_sun_window_y$clock = clock;
+        r_hdr_ctrl$clock = clock;
+        p_hdr_ctrl$clock = clock;
+        r_hdr_min$clock = clock;
+        r_hdr_max$clock = clock;
         rdata$d = rdata$q;
         error_word$d = error_word$q;
         r_sys_scratch$d = r_sys_scratch$q;
@@ -13551,6 +14501,10 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         r_sun_threshold$d = r_sun_threshold$q;
         r_sun_window_x$d = r_sun_window_x$q;
         r_sun_window_y$d = r_sun_window_y$q;
+        r_hdr_ctrl$d = r_hdr_ctrl$q;
+        p_hdr_ctrl$d = p_hdr_ctrl$q;
+        r_hdr_min$d = r_hdr_min$q;
+        r_hdr_max$d = r_hdr_max$q;
         byte_mask = 32'h0;
         if (avs_byteenable[0]) begin
             byte_mask = byte_mask | (((64'hff) & 32'hffffffff) << (32'h8 * 0));
@@ -13640,6 +14594,10 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         nx_sun_threshold = r_sun_threshold$q;
         nx_sun_window_x = r_sun_window_x$q;
         nx_sun_window_y = r_sun_window_y$q;
+        nx_hdr_ctrl = r_hdr_ctrl$q;
+        p_hdr_ctrl$d = 32'h0;
+        nx_hdr_min = r_hdr_min$q;
+        nx_hdr_max = r_hdr_max$q;
         if (avs_write) begin
             case (avs_address)
                 0:
@@ -14007,6 +14965,19 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
                 7183:
                     begin
                     end
+                8192:
+                    begin
+                        nx_hdr_ctrl = ((r_hdr_ctrl$q & (~(byte_mask & 64'h1))) | (avs_writedata & (byte_mask & 64'h1))) & (~(avs_writedata & (byte_mask & 64'h0)));
+                        p_hdr_ctrl$d = avs_writedata & (byte_mask & 64'h2);
+                    end
+                8193:
+                    begin
+                        nx_hdr_min = ((r_hdr_min$q & (~(byte_mask & 64'h7ffffff))) | (avs_writedata & (byte_mask & 64'h7ffffff))) & (~(avs_writedata & (byte_mask & 64'h0)));
+                    end
+                8194:
+                    begin
+                        nx_hdr_max = ((r_hdr_max$q & (~(byte_mask & 64'h7ffffff))) | (avs_writedata & (byte_mask & 64'h7ffffff))) & (~(avs_writedata & (byte_mask & 64'h0)));
+                    end
                 default:
                     begin
                         unmapped_write = 1'b1;
@@ -14022,7 +14993,7 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
                     end
                 1:
                     begin
-                        rdata$d = ((64'h3) & 32'hffffffff);
+                        rdata$d = ((64'h4) & 32'hffffffff);
                     end
                 2:
                     begin
@@ -14404,6 +15375,18 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
                     begin
                         rdata$d = (((sun_frames_count) & 32'hffffffff));
                     end
+                8192:
+                    begin
+                        rdata$d = (r_hdr_ctrl$q & 64'h1);
+                    end
+                8193:
+                    begin
+                        rdata$d = (r_hdr_min$q & 64'h7ffffff);
+                    end
+                8194:
+                    begin
+                        rdata$d = (r_hdr_max$q & 64'h7ffffff);
+                    end
                 default:
                     begin
                         rdata$d = ((64'hdeadbeef) & 32'hffffffff);
@@ -14594,6 +15577,13 @@ module skylux_core$regs(clock,avs_address,avs_read,avs_write,avs_writedata,avs_b
         r_sun_window_y$d = nx_sun_window_y;
         sun_window_y_min = r_sun_window_y$q[(32'h0)+:(11)];
         sun_window_y_max = r_sun_window_y$q[(32'h10)+:(11)];
+        r_hdr_ctrl$d = nx_hdr_ctrl;
+        hdr_ctrl_enable = r_hdr_ctrl$q[32'h0];
+        hdr_ctrl_new_set = p_hdr_ctrl$q[32'h1];
+        r_hdr_min$d = nx_hdr_min;
+        hdr_min_q11 = r_hdr_min$q[(32'h0)+:(27)];
+        r_hdr_max$d = nx_hdr_max;
+        hdr_max_q11 = r_hdr_max$q[(32'h0)+:(27)];
         avs_readdata = rdata$q;
         irq = |(r_sys_irq_status$q & r_sys_irq_enable$q);
     end
@@ -14637,6 +15627,25 @@ module skylux_core$regs$p_dma_ctrl(d,q,clock);
     end
           
 endmodule // skylux_core$regs$p_dma_ctrl
+
+
+module skylux_core$regs$p_hdr_ctrl(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$regs$p_hdr_ctrl
 
 
 module skylux_core$regs$p_i2c_ctrl(d,q,clock);
@@ -15510,6 +16519,159 @@ module skylux_core$regs$r_dma_window_size$dff(d,q,clock);
     end
           
 endmodule // skylux_core$regs$r_dma_window_size$dff
+
+
+module skylux_core$regs$r_hdr_ctrl(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Constant declarations
+    localparam  init = 32'h0;
+    
+    // Stub signals
+    reg  [31:0] dff$d;
+    wire  [31:0] dff$q;
+    reg  dff$clock;
+    
+    // Sub module instances
+    skylux_core$regs$r_hdr_ctrl$dff dff(
+        .d(dff$d),
+        .q(dff$q),
+        .clock(dff$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff$clock = clock;
+        q = dff$q ^ init;
+        dff$d = d ^ init;
+    end
+    
+endmodule // skylux_core$regs$r_hdr_ctrl
+
+
+module skylux_core$regs$r_hdr_ctrl$dff(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$regs$r_hdr_ctrl$dff
+
+
+module skylux_core$regs$r_hdr_max(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Constant declarations
+    localparam  init = 32'h7ffffff;
+    
+    // Stub signals
+    reg  [31:0] dff$d;
+    wire  [31:0] dff$q;
+    reg  dff$clock;
+    
+    // Sub module instances
+    skylux_core$regs$r_hdr_max$dff dff(
+        .d(dff$d),
+        .q(dff$q),
+        .clock(dff$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff$clock = clock;
+        q = dff$q ^ init;
+        dff$d = d ^ init;
+    end
+    
+endmodule // skylux_core$regs$r_hdr_max
+
+
+module skylux_core$regs$r_hdr_max$dff(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$regs$r_hdr_max$dff
+
+
+module skylux_core$regs$r_hdr_min(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Constant declarations
+    localparam  init = 32'h0;
+    
+    // Stub signals
+    reg  [31:0] dff$d;
+    wire  [31:0] dff$q;
+    reg  dff$clock;
+    
+    // Sub module instances
+    skylux_core$regs$r_hdr_min$dff dff(
+        .d(dff$d),
+        .q(dff$q),
+        .clock(dff$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        dff$clock = clock;
+        q = dff$q ^ init;
+        dff$d = d ^ init;
+    end
+    
+endmodule // skylux_core$regs$r_hdr_min
+
+
+module skylux_core$regs$r_hdr_min$dff(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$regs$r_hdr_min$dff
 
 
 module skylux_core$regs$r_i2c_clock_div(d,q,clock);

@@ -84,6 +84,17 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
     ];
     let a9_one_core_s: f64 = stages.iter().map(|(s, _)| s.seconds(1)).sum();
     let a9_processing_s: f64 = stages.iter().map(|(s, _)| s.seconds(a9::CORES)).sum();
+    // Map mode (`[fabric] hdr = "fabric"`): the fabric's map replaces the five frames' read
+    // and the merge; modelled only (no x86 measurement of it here).
+    let w = &processing.hdr_work;
+    let map_stages = [
+        a9::hps_read_map(w.groups),
+        a9::hdr_fabric_map(w.groups, w.valid_groups),
+    ];
+    let raw_s = |cores: u32| stages[0].0.seconds(cores) + stages[1].0.seconds(cores);
+    let map_s = |cores: u32| map_stages.iter().map(|s| s.seconds(cores)).sum::<f64>();
+    let a9_map_processing_s = a9_processing_s - raw_s(a9::CORES) + map_s(a9::CORES);
+    let a9_map_one_core_s = a9_one_core_s - raw_s(1) + map_s(1);
     let capture_s = capture.capture_ms / 1e3;
     let a9_cycle_s = capture_s + a9_processing_s;
     let stage_json: Vec<serde_json::Value> = stages
@@ -131,6 +142,20 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
         "a9_cycle_one_core_s": capture_s + a9_one_core_s,
         "target_cycle_s": TARGET_CYCLE_S,
         "a9_stages": stage_json,
+        "fabric_map_mode": {
+            "a9_stages": map_stages.iter().map(|s| serde_json::json!({
+                "stage": s.name,
+                "a9_memory_ms": s.memory_s() * 1e3,
+                "a9_compute_one_core_ms": s.compute_s() * 1e3,
+                "a9_one_core_ms": s.seconds(1) * 1e3,
+            })).collect::<Vec<_>>(),
+            "replaces": ["hps_read", "hdr_merge"],
+            "a9_processing_s": a9_map_processing_s,
+            "a9_processing_one_core_s": a9_map_one_core_s,
+            "a9_cycle_s": capture_s + a9_map_processing_s,
+            "provenance": "modelled: skylux_hps::timing::a9 (hps_read_map, hdr_fabric_map; the \
+                           latter's per-group costs estimated from the source), not measured",
+        },
         "a9_work": {
             "hps_read": {"frames": 5, "words_per_frame": read.words_per_frame},
             "hdr_merge": {
@@ -284,6 +309,7 @@ impl CaptureModel {
             reset_settle: std::time::Duration::from_millis(2),
             poll_pause: std::time::Duration::from_millis(1),
             active_origin: (16, 54),
+            map: None,
         };
         let exposure_ms: Vec<f64> = exposures_us
             .iter()
@@ -336,6 +362,7 @@ fn hps_read(repeat: usize) -> HpsRead {
             timestamp_cycles: 1,
             exposure_index: slot as u8,
             raw: true,
+            hdr_map: false,
             flags: 0,
             last_line_pixels: WIDTH_PX as u16,
             lines: HEIGHT_PX as u16,

@@ -389,6 +389,20 @@ pub struct FabricConfig {
     /// Wait for an opening's frames beyond twice its light time, seconds.
     #[serde(default = "default_frame_timeout_s")]
     pub frame_timeout_s: f64,
+    /// Where the HDR map is made: `hps` (raw frames, the noise-optimal merge; captures can be
+    /// kept) or `fabric` (the fabric writes one map per capture, the HPS reads it instead of
+    /// the frames; nothing raw to keep). Issue 22 item 1, docs/readout.md.
+    #[serde(default)]
+    pub hdr: HdrWhere,
+}
+
+/// `[fabric] hdr`: where the HDR map is made.
+#[derive(Copy, Clone, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum HdrWhere {
+    #[default]
+    Hps,
+    Fabric,
 }
 
 fn default_fabric_row_start() -> u32 {
@@ -424,6 +438,7 @@ impl Default for FabricConfig {
             bin: 1,
             shield_steps: default_shield_steps(),
             frame_timeout_s: default_frame_timeout_s(),
+            hdr: HdrWhere::default(),
         }
     }
 }
@@ -649,6 +664,9 @@ impl Config {
         self.sim.check().map_err(in_section("sim"))?;
         self.fabric.check().map_err(in_section("fabric"))?;
         self.sim.check_fault_source().map_err(in_section("sim"))?;
+        self.sim
+            .check_hdr_source(self.fabric.hdr)
+            .map_err(in_section("sim"))?;
         for (i, f) in self.sim.faults.iter().enumerate() {
             f.check()
                 .map_err(|e| self.table_error(text, "sim.fault", i, e))?;
@@ -862,6 +880,19 @@ impl SimConfig {
             bin,
             ..skylux_hps::campaign::Readout::skipping(0, 0, self.skip)
         }
+    }
+
+    /// The behavioural fabric model has no `hdr.*` page: the fabric's map needs the board or
+    /// the cycle-accurate core.
+    pub fn check_hdr_source(&self, hdr: HdrWhere) -> Result<(), FieldError> {
+        if self.source == SimSourceKind::FabricModel && hdr == HdrWhere::Fabric {
+            return refuse(
+                "source",
+                "[fabric] hdr = \"fabric\" needs the board or source = \"fabric\" (the \
+                 cycle-accurate core): the behavioural fabric model does not make maps",
+            );
+        }
+        Ok(())
     }
 
     /// Injected faults only with the `sim` source.

@@ -23,7 +23,7 @@ use glam::DVec3;
 use serde::{Deserialize, Serialize};
 use skylux_hps::camera::{CameraModel, DeviceConfig};
 use skylux_hps::engine::{self, DaylightCoefficients, Settings, World};
-use skylux_hps::hdr::{merge, GroupGeometry, LuminanceMap};
+use skylux_hps::hdr::{fabric_map, merge, GroupGeometry, LuminanceMap, MapExposure};
 use skylux_hps::model::{
     capture_terms, install_measured_sky, predict, remove_measured_sky, CaptureData, CaptureTerms,
     ModelState, Room,
@@ -462,8 +462,30 @@ impl Pipeline {
             Some((_, g)) => g,
             None => return Err(CycleError::Hdr("no geometry".into())),
         };
-        let map = merge(&set.exposures(), &self.device, set.config.bayer, geometry)
-            .map_err(|e| CycleError::Hdr(e.to_string()))?;
+        let map = match &set.fabric_map {
+            // The fabric's map: each group from one exposure, the merge's calibration.
+            Some(m) => {
+                let exposures: Vec<MapExposure> = set
+                    .config
+                    .exposure
+                    .iter()
+                    .map(|e| MapExposure {
+                        exposure_s: e.exposure_us * 1e-6,
+                        gain: e.gain,
+                    })
+                    .collect();
+                fabric_map(
+                    &m.map,
+                    &exposures,
+                    &m.hdr,
+                    &self.device,
+                    set.config.bayer,
+                    geometry,
+                )
+            }
+            None => merge(&set.exposures(), &self.device, set.config.bayer, geometry),
+        }
+        .map_err(|e| CycleError::Hdr(e.to_string()))?;
         let hdr_ms = ms(t);
 
         // Sun: SPA, as the device model's `load_captures` computes it.
@@ -671,8 +693,8 @@ fn azimuth_deg(d: DVec3) -> f64 {
 }
 
 /// The frames as a cycle needs them: none flagged by the capture path (a FIFO overflow or a
-/// short line means the frame's pixels are not where the geometry says), one per exposure.
-/// Returns the raw frame size.
+/// short line means the frame's pixels are not where the geometry says), one per exposure, or
+/// the fabric's map. Returns the raw frame size.
 fn check_frames(set: &CaptureSet) -> Result<(usize, usize), CycleError> {
     for (k, flags) in set.frame_flags.iter().enumerate() {
         if !flags.is_empty() {
@@ -686,6 +708,9 @@ fn check_frames(set: &CaptureSet) -> Result<(usize, usize), CycleError> {
                 flags: flags.clone(),
             });
         }
+    }
+    if let Some(m) = &set.fabric_map {
+        return Ok((m.raw_width, m.raw_height));
     }
     let (raw_width, raw_height) = match set.frames.first() {
         Some(f) => (f.width, f.height),

@@ -717,7 +717,10 @@ fn run_cycle(
             &products.map,
             &products.view_pictures,
             &pipeline.device,
-            Some((&set.config, &set.frames)),
+            // A fabric map has no raw frames to keep.
+            set.fabric_map
+                .is_none()
+                .then_some((&set.config, set.frames.as_slice())),
             &mut faults,
         )
         .map_err(|e| {
@@ -792,7 +795,8 @@ fn make_source(
             // The fabric's own clock is read back at bring-up; the register map's constant
             // is the design's, used for the settings until then.
             let settings =
-                crate::fabric_source::fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, false);
+                crate::fabric_source::fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, false)
+                    .with_map(config, &device()?);
             Box::new(crate::fabric_source::FabricSource::new(
                 w.registers,
                 w.dma,

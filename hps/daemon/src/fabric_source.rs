@@ -17,13 +17,19 @@
 //! the DMA traffic and the HPS read (5 MB instead of 10 MB per full frame, BENCHMARKS.md) but
 //! cannot be kept in campaign format; the HDR merge takes both (`hdr::ExposureFrame`).
 //!
+//! **Map mode** (`[fabric] hdr = "fabric"`, issue 22 item 1). The capture path runs grouped
+//! with the device's black level, valid range and weights, the exposures run long to short,
+//! and the DMA writes the set as one map into one slot (`hdr.*`): the source returns that map
+//! ([`FabricMapCapture`]) instead of frames, and the cycle reads it into its luminance map
+//! with the merge's calibration. One map read instead of five frames; nothing raw to keep.
+//!
 //! **Reads of the DMA buffer.** The FPGA-to-SDRAM port is not cache-coherent (hardware-facts.md
 //! §3.2): the buffer is mapped uncached (`/dev/mem` with `O_SYNC` on a `no-map` region,
 //! `hardware.rs`), so every read of a slot sees what the fabric wrote, never a stale line.
 //! A slot is released (its format identifier cleared) after it is read, so a frame that did
 //! not arrive can never be mistaken for an earlier one.
 
-use crate::source::{CaptureSet, CaptureSource, SourceError};
+use crate::source::{CaptureSet, CaptureSource, FabricMapCapture, SourceError};
 use crate::wait::{FrameWait, PollWait, WaitError};
 use chrono::{DateTime, FixedOffset};
 use skylux_bus::{DmaMemory, RegisterBus};
@@ -33,9 +39,12 @@ use skylux_hps::fpga::sensor::{reg, I2cTiming, SensorConfig, SensorError};
 use skylux_hps::fpga::sequence::{SequenceError, ShieldConfig};
 use skylux_hps::fpga::shield_plan::{plan_openings_with_gaps, OpeningCost};
 use skylux_hps::fpga::{
-    CaptureConfig as RingConfig, CaptureFaults, ExposureSlot, Fabric, MAX_EXPOSURES,
+    CaptureConfig as RingConfig, CaptureFaults, ExposureSlot, Fabric, GroupingConfig, MAX_EXPOSURES,
 };
+use skylux_hps::hdr::FabricMap;
+use skylux_regmap::hdr_values::HdrConfig;
 use skylux_regmap::words::raw;
+use skylux_regmap::words::WEIGHT_ONE;
 use std::ops::Range;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
@@ -84,6 +93,70 @@ pub struct FabricSettings {
     /// Register value of the first active column and row: the capture's `readout` is in
     /// active pixels (campaign.md), the sensor's `Column_Start`/`Row_Start` in array pixels.
     pub active_origin: (u32, u32),
+    /// Map mode: the fabric makes the HDR map (`[fabric] hdr = "fabric"`).
+    pub map: Option<MapMode>,
+}
+
+/// What map mode programs: the grouping the map's words are made with and the selection's
+/// thresholds.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MapMode {
+    pub grouping: GroupingConfig,
+    pub hdr: HdrConfig,
+}
+
+impl MapMode {
+    /// The grouping of `device`: its black level and valid range (DN, rounded), its weights in
+    /// Q2.14 (rounded; the merge's calibration then uses the device's own, a difference of at
+    /// most 2^-15 per weight), the CFA phase of `bayer`.
+    pub fn of_device(device: &skylux_hps::camera::DeviceConfig, bayer: BayerPattern) -> Self {
+        let dn = |v: f64| v.round().clamp(0.0, 4095.0) as u32;
+        let q2_14 = |w: f64| (w * f64::from(WEIGHT_ONE)).round().clamp(0.0, 65535.0) as u32;
+        let [wr, wg, wb] = device.response.weights;
+        let phase = match bayer {
+            BayerPattern::GRBG => 0,
+            BayerPattern::RGGB => 1,
+            BayerPattern::BGGR => 2,
+            BayerPattern::GBRG => 3,
+        };
+        MapMode {
+            grouping: GroupingConfig {
+                phase,
+                black_level_dn: dn(device.sensor.black_level_dn),
+                valid_min_dn: dn(device.sensor.valid_min_dn),
+                valid_max_dn: dn(device.sensor.valid_max_dn),
+                weight_r_q2_14: q2_14(wr),
+                weight_g_q2_14: q2_14(wg),
+                weight_b_q2_14: q2_14(wb),
+                raw: false,
+            },
+            hdr: HdrConfig::default(),
+        }
+    }
+}
+
+impl FabricSettings {
+    /// Map mode with `device`'s grouping, if `[fabric] hdr = "fabric"`: the exposures then run
+    /// long to short (by integration time times gain), the order the selection needs.
+    pub fn with_map(
+        mut self,
+        config: &crate::config::Config,
+        device: &skylux_hps::camera::DeviceConfig,
+    ) -> Self {
+        if config.fabric.hdr != crate::config::HdrWhere::Fabric {
+            return self;
+        }
+        let mut pairs: Vec<(f64, f64)> = self
+            .exposures_us
+            .iter()
+            .zip(&self.gains)
+            .map(|(&e, &g)| (e, g))
+            .collect();
+        pairs.sort_by(|a, b| (b.0 * b.1).total_cmp(&(a.0 * a.1)));
+        (self.exposures_us, self.gains) = pairs.into_iter().unzip();
+        self.map = Some(MapMode::of_device(device, bayer_of(&self.sensor)));
+        self
+    }
 }
 
 /// The exposure table as the sensor will run it.
@@ -307,13 +380,8 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
         let plan =
             plan_exposures(&settings, fabric.info().sys_clock_hz).map_err(SourceError::Other)?;
         let base = memory.phys_base().next_multiple_of(8);
-        let slots = settings.exposures_us.len() as u8;
-        let mut ring = RingConfig::fitted(plan.width_px, plan.height_px, base, slots);
-        ring.grouping.raw = true;
-        // Raw mode stores every row: refit the stride to it.
-        let stride = ring.slot_bytes_needed().min(u64::from(u32::MAX)) as u32;
-        ring.ring.slot_stride_bytes = stride;
-        ring.window_size_bytes = stride.saturating_mul(u32::from(slots));
+        let ring = ring_for(&settings, &plan, base);
+        let slots = ring.ring.slots;
         let end = base - memory.phys_base() + u64::from(ring.window_size_bytes);
         if end > memory.len_bytes() {
             return Err(SourceError::Other(format!(
@@ -394,13 +462,30 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
 
     fn take(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
         self.configure()?;
+        if let Some(map) = &self.settings.map {
+            let hdr = map.hdr;
+            let f = &mut self.fabric;
+            f.hdr_configure(&hdr, true)
+                .and_then(|_| f.hdr_new_set())
+                .map_err(|e| other("hdr")(e.to_string()))?;
+        }
         self.run_openings()?;
         let faults = self.take_faults()?;
-        let (frames, frame_flags) = self.read_frames(&faults)?;
+        let (frames, frame_flags, fabric_map) = match self.settings.map.clone() {
+            Some(map) => {
+                let (m, flags) = self.read_map(&faults, map.hdr)?;
+                (vec![], vec![flags], Some(m))
+            }
+            None => {
+                let (frames, flags) = self.read_frames(&faults)?;
+                (frames, flags, None)
+            }
+        };
         Ok(CaptureSet {
             time: at,
             config: self.capture_config(at),
             frames,
+            fabric_map,
             frame_flags,
             truth_outdoor_horizontal_lux: None,
             truth_interior_lux: None,
@@ -575,6 +660,65 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
         Ok((frames, frame_flags))
     }
 
+    /// Map mode: the one slot's map, with its flags (descriptor flags, not a map, the wrong
+    /// size).
+    fn read_map(
+        &mut self,
+        faults: &CaptureFaults,
+        hdr: HdrConfig,
+    ) -> Result<(FabricMapCapture, Vec<String>), SourceError> {
+        let captured = self
+            .ring
+            .ring
+            .read_slot(&mut self.memory, 0)
+            .map_err(|e| SourceError::Other(format!("slot 0: {e}")))?
+            .ok_or_else(|| {
+                SourceError::Other("slot 0: no map although the DMA counted it".into())
+            })?;
+        let (w, h) = (self.plan.width_px as usize, self.plan.height_px as usize);
+        let d = &captured.descriptor;
+        let mut flags: Vec<String> = captured
+            .flag_names()
+            .iter()
+            .map(|n| n.to_string())
+            .collect();
+        if !d.hdr_map {
+            flags.push("NOT_MAP".into());
+        }
+        if usize::from(d.lines) != h || usize::from(d.last_line_pixels) != w {
+            flags.push(format!(
+                "SIZE {}x{} (expected {w}x{h})",
+                d.last_line_pixels, d.lines
+            ));
+        }
+        if faults.any() && flags.is_empty() {
+            flags.push(format!("CAPTURE_STATUS {faults:?}"));
+        }
+        let (gw, gh) = (w / 2, h / 2);
+        if flags.is_empty() && captured.words.len() != gw * gh {
+            return Err(SourceError::Other(format!(
+                "slot 0: {} map words for a {w}x{h} window",
+                captured.words.len()
+            )));
+        }
+        let mut words = captured.words;
+        words.resize(gw * gh, 0);
+        let map = FabricMap {
+            width: gw,
+            height: gh,
+            words,
+        };
+        Ok((
+            FabricMapCapture {
+                map,
+                hdr,
+                raw_width: w,
+                raw_height: h,
+            },
+            flags,
+        ))
+    }
+
     /// `capture.toml` of the capture taken at `at`.
     fn capture_config(&self, at: DateTime<FixedOffset>) -> CaptureConfig {
         CaptureConfig {
@@ -664,6 +808,26 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
             flags,
         ))
     }
+}
+
+/// The ring: one raw slot per exposure, or in map mode one grouped slot for the map.
+fn ring_for(settings: &FabricSettings, plan: &ExposurePlan, base: u64) -> RingConfig {
+    let slots = match settings.map {
+        Some(_) => 1,
+        None => settings.exposures_us.len() as u8,
+    };
+    let mut ring = RingConfig::fitted(plan.width_px, plan.height_px, base, slots);
+    match &settings.map {
+        Some(map) => ring.grouping = map.grouping,
+        None => {
+            ring.grouping.raw = true;
+            // Raw mode stores every row: refit the stride to it.
+            let stride = ring.slot_bytes_needed().min(u64::from(u32::MAX)) as u32;
+            ring.ring.slot_stride_bytes = stride;
+            ring.window_size_bytes = stride.saturating_mul(u32::from(slots));
+        }
+    }
+    ring
 }
 
 /// The wait for one opening: its light time twice over, plus the configured margin.
@@ -769,6 +933,7 @@ pub fn fabric_settings(
         },
         // The simulated sensor renders its register window as active coordinates.
         active_origin: if sim { (0, 0) } else { (16, 54) },
+        map: None,
     }
 }
 
@@ -792,16 +957,17 @@ pub fn sim_fabric_plan(
     config: &crate::config::Config,
 ) -> Result<(FabricSettings, ExposurePlan, usize), SourceError> {
     let settings = fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, true);
+    sim_plan_of(settings)
+}
+
+/// [`sim_fabric_plan`] of given settings (map mode's, say).
+fn sim_plan_of(
+    settings: FabricSettings,
+) -> Result<(FabricSettings, ExposurePlan, usize), SourceError> {
     let plan =
         plan_exposures(&settings, skylux_regmap::SYS_CLOCK_HZ).map_err(SourceError::Other)?;
-    let mut ring = RingConfig::fitted(
-        plan.width_px,
-        plan.height_px,
-        0,
-        settings.exposures_us.len() as u8,
-    );
-    ring.grouping.raw = true;
-    let memory_bytes = (ring.slot_bytes_needed() as usize) * settings.exposures_us.len() + 4096;
+    let ring = ring_for(&settings, &plan, 0);
+    let memory_bytes = ring.window_size_bytes as usize + 4096;
     Ok((settings, plan, memory_bytes))
 }
 
@@ -812,7 +978,9 @@ pub fn sim_fabric_source(
     stop: Arc<AtomicBool>,
 ) -> Result<SimFabricSource, SourceError> {
     use skylux_sim::core_rig::{sim_core, CoreRigConfig};
-    let (settings, _plan, memory_bytes) = sim_fabric_plan(config)?;
+    let settings =
+        fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, true).with_map(config, device);
+    let (settings, _plan, memory_bytes) = sim_plan_of(settings)?;
     let world = crate::sim_stage::WorldStage::new(config, device)?;
     let sensor = skylux_sim::mt9p031::Mt9p031::new(world.pixel_source(), settings.pixclk_hz);
     // Back-pressure on the frame port as in tests/tests/core_system.rs.

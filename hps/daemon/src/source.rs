@@ -25,8 +25,11 @@ pub struct CaptureSet {
     /// What `capture.toml` would hold (its `file` names are where the frames go when the
     /// capture is kept).
     pub config: CaptureConfig,
-    /// One frame per `config.exposure` entry, in the same order.
+    /// One frame per `config.exposure` entry, in the same order; none when the fabric made
+    /// the map (`fabric_map`).
     pub frames: Vec<RawFrame>,
+    /// The fabric's HDR map of the exposures (`[fabric] hdr = "fabric"`), instead of frames.
+    pub fabric_map: Option<FabricMapCapture>,
     /// Per frame, the names of the DMA descriptor flags that were set (empty: a good frame).
     pub frame_flags: Vec<Vec<String>>,
     /// In simulation, the world's own outdoor global horizontal illuminance, lux (what the
@@ -35,6 +38,17 @@ pub struct CaptureSet {
     /// In simulation, the world's own illuminance per room sensor, lux
     /// (`interior_truth::InteriorTruth`); `None` from real hardware or when not traced.
     pub truth_interior_lux: Option<Vec<f64>>,
+}
+
+/// A capture the fabric merged: its map words, the thresholds it used, and the raw frame size
+/// the map's groups come from. `config.exposure` lists the set's frames in map order (long to
+/// short).
+#[derive(Clone, Debug)]
+pub struct FabricMapCapture {
+    pub map: skylux_hps::hdr::FabricMap,
+    pub hdr: skylux_regmap::hdr_values::HdrConfig,
+    pub raw_width: usize,
+    pub raw_height: usize,
 }
 
 impl CaptureSet {
@@ -355,6 +369,7 @@ impl CaptureSource for SimSource {
             frame_flags[k].push("FIFO_OVERFLOW".to_string());
         }
         Ok(CaptureSet {
+            fabric_map: None,
             time: at,
             config,
             frames,

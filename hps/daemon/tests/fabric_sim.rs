@@ -6,7 +6,9 @@
 //!   the exposure times it records are the sensor model's own exposure formula;
 //! - `PollWait` ends with a timeout when the sensor is silent (held in reset);
 //! - `skyluxd --sim` with `[sim] source = "fabric"` runs a cycle end to end, and its HDR map
-//!   equals the offline merge (`hdr::map_capture`) of the frames it kept.
+//!   equals the offline merge (`hdr::map_capture`) of the frames it kept;
+//! - with `[fabric] hdr = "fabric"` the fabric writes one map, equal to the golden model's
+//!   selection over the frames the sensor sent, and `skyluxd` runs a cycle on it.
 //!
 //! The rust-hdl simulation runs 10^3 to 10^4 clocks a second here (1.3k measured on the shared
 //! machine), so the window is 16 x 12 output pixels (skip 8) and the exposures a few rows, and
@@ -193,5 +195,172 @@ fn skyluxd_runs_a_cycle_on_the_simulated_fabric_and_its_map_is_the_offline_merge
         compared >= 4,
         "{compared} groups compared, flags {:?}",
         offline.map.flags
+    );
+}
+
+/// The tiny configuration with the fabric making the map, and a camera without the example
+/// device's ND 1.0 filter (`cg` 1 instead of 10) and with `valid_min` at 10 DN instead of 40:
+/// with the example's, the tiny window's sky stays under-range at 1000 µs (2 to 6 DN), so no
+/// group would be usable; with these, the 1000 µs frame's groups (8 to 60 DN) mostly are and
+/// the 300 µs frame's mostly are not.
+fn tiny_map_config(dir: &std::path::Path) -> std::path::PathBuf {
+    let path = tiny_fabric_config(dir, "fabric");
+    // The path as `config_with` writes it.
+    let example = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .join("daemon/device.toml");
+    let device = std::fs::read_to_string(&example).unwrap();
+    assert!(
+        device.contains("cg = 10.0 "),
+        "the example device's cg line"
+    );
+    let bare = dir.join("device.toml");
+    assert!(
+        device.contains("valid_min_dn = 40.0"),
+        "the example device's valid_min line"
+    );
+    let device = device.replacen("cg = 10.0 ", "cg = 1.0 ", 1).replacen(
+        "valid_min_dn = 40.0",
+        "valid_min_dn = 10.0",
+        1,
+    );
+    std::fs::write(&bare, device).unwrap();
+    let text = std::fs::read_to_string(&path).unwrap();
+    let quoted = format!("\"{}\"", example.display());
+    assert!(text.contains(&quoted), "the configuration's device path");
+    let text = text.replacen(&quoted, &format!("\"{}\"", bare.display()), 1);
+    assert!(
+        text.contains("hdr = \"hps\" "),
+        "the example's [fabric] hdr line"
+    );
+    let text = text.replacen("hdr = \"hps\" ", "hdr = \"fabric\" ", 1);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// ~1 min of simulation: `--ignored`.
+#[test]
+#[ignore = "slow cycle-accurate simulation: run with --ignored"]
+fn the_fabric_map_is_the_golden_selection_of_the_sensor_frames() {
+    use skylux_rtl::bayer::golden::{expected_words, BayerConfig, Frame, Phase};
+    use skylux_rtl::hdr::golden::{select, SetFrame};
+    use skyluxd::fabric_source::MapMode;
+    let tmp = tempfile::tempdir().unwrap();
+    let config = Config::load(&tiny_map_config(tmp.path()), &Overrides::default()).unwrap();
+    let (device, _) = skylux_hps::camera::DeviceConfig::read(&config.camera.device).unwrap();
+    let stop = Arc::new(AtomicBool::new(false));
+    let mut source = sim_fabric_source(&config, &device, stop).unwrap();
+    let at = chrono::DateTime::parse_from_rfc3339("2017-05-08T12:00:00+02:00").unwrap();
+    let set = source.capture(at).unwrap();
+    assert!(set.frames.is_empty(), "a map, not frames");
+    assert_eq!(set.frame_flags, vec![Vec::<String>::new()]);
+    let m = set.fabric_map.as_ref().expect("the fabric's map");
+    assert_eq!(
+        (m.map.width, m.map.height, m.raw_width, m.raw_height),
+        (8, 6, 16, 12)
+    );
+    // Long to short: the configuration's [300, 1000] µs run as 1000 then 300.
+    let e: Vec<f64> = set.config.exposure.iter().map(|e| e.exposure_us).collect();
+    assert!(e.len() == 2 && e[0] > e[1], "{e:?}");
+
+    let rig = source.rig.lock().unwrap();
+    assert_eq!(rig.log.frames.len(), 2);
+    let g = MapMode::of_device(&device, skylux_hps::campaign::BayerPattern::GRBG).grouping;
+    let bayer = BayerConfig {
+        phase: Phase::from_register(g.phase),
+        black: g.black_level_dn as u16,
+        valid_min: g.valid_min_dn as u16,
+        valid_max: g.valid_max_dn as u16,
+        weight_r: g.weight_r_q2_14 as u16,
+        weight_g: g.weight_g_q2_14 as u16,
+        weight_b: g.weight_b_q2_14 as u16,
+        raw: false,
+    };
+    let grouped: Vec<Vec<u32>> = rig
+        .log
+        .frames
+        .iter()
+        .map(|f| {
+            let frame = Frame {
+                width: f.width,
+                height: f.height,
+                samples: f.samples_dn.clone(),
+            };
+            expected_words(&frame, &bayer)
+        })
+        .collect();
+    let frames: Vec<SetFrame> = grouped
+        .iter()
+        .enumerate()
+        .map(|(k, words)| SetFrame {
+            exposure_index: k as u8,
+            first_of_set: k == 0,
+            words,
+        })
+        .collect();
+    let summary: Vec<(u8, bool, bool, u32)> = m
+        .map
+        .words
+        .iter()
+        .map(|&w| {
+            use skylux_regmap::words::hdr_map;
+            (
+                hdr_map::exposure_index(w),
+                hdr_map::under(w),
+                hdr_map::over(w),
+                hdr_map::luma_q11(w),
+            )
+        })
+        .collect();
+    eprintln!("map words (exposure, under, over, luma_q11): {summary:?}");
+    assert_eq!(m.map.words, select(&m.hdr, &frames));
+    // The case exercises the selection: groups usable in the longest exposure, and groups
+    // the set's last frame wrote.
+    let from_longest = summary.iter().filter(|w| w.0 == 0).count();
+    assert!(
+        from_longest > 0 && from_longest < summary.len(),
+        "groups from the longest exposure: {from_longest} of {}",
+        summary.len()
+    );
+}
+
+/// ~1 min of simulation plus the daylight coefficients: `--ignored`.
+#[test]
+#[ignore = "slow cycle-accurate simulation: run with --ignored"]
+fn skyluxd_runs_a_cycle_on_the_fabric_map() {
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("out");
+    let log = tmp.path().join("stderr.log");
+    let config = tiny_map_config(tmp.path());
+    let mut child = start(
+        &SimRun::new(&config, &out)
+            .cycles(1)
+            .clock("2017-05-08T12:00:00+02:00", 3600)
+            .args(),
+        &log,
+    );
+    let status = wait(&mut child, Duration::from_secs(900));
+    let text = std::fs::read_to_string(&log).unwrap();
+    assert_eq!(status.code(), Some(0), "{text}");
+    let lines = complete_lines(&out.join("results.jsonl"));
+    assert_eq!(lines.len(), 1, "{text}");
+    let r: serde_json::Value = serde_json::from_str(&lines[0]).unwrap();
+    assert_eq!(r["source"], "fabric-sim");
+    let lux: Vec<f64> = r["illuminance"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["lux"].as_f64().unwrap())
+        .collect();
+    assert_eq!(lux.len(), 5);
+    assert!(lux.iter().all(|l| l.is_finite() && *l >= 0.0), "{lux:?}");
+    // No raw frames to keep; the map the cycle made is written.
+    assert!(r["capture"].is_null(), "{r}");
+    let (map, _, _) = skylux_hps::hdr::read_exr(&out.join(r["map"].as_str().unwrap())).unwrap();
+    assert_eq!(map.luminance_cd_m2.len(), 8 * 6);
+    assert!(
+        map.flags.contains(&skylux_hps::hdr::MapFlag::Valid),
+        "{:?}",
+        map.flags
     );
 }

@@ -12,8 +12,8 @@ use rust_hdl::prelude::*;
 pub type CaptureFifo =
     AsynchronousFIFO<Bits<{ entry::BITS }>, { entry::FIFO_ADDRESS_BITS }, { entry::FILL_BITS }, 1>;
 
-/// Capture, Bayer grouper, clock-domain FIFO and frame DMA, and the sun accumulators on the
-/// words the DMA takes (`sun.*`).
+/// Capture, Bayer grouper, clock-domain FIFO and frame DMA (with the HDR selection in its
+/// ingest, `hdr.*`), and the sun accumulators on the words the DMA takes (`sun.*`).
 ///
 /// Ports are named after the register fields they connect to (`capture_ctrl_enable` is
 /// `capture.ctrl.ENABLE`, `dma_status_frame_done_set` pulses `dma.status.FRAME_DONE`), so the
@@ -58,6 +58,10 @@ pub struct CapturePath {
     pub sun_window_x_max: Signal<In, Bits<11>>,
     pub sun_window_y_min: Signal<In, Bits<11>>,
     pub sun_window_y_max: Signal<In, Bits<11>>,
+    pub hdr_ctrl_enable: Signal<In, Bit>,
+    pub hdr_ctrl_new_set: Signal<In, Bit>,
+    pub hdr_min_q11: Signal<In, Bits<27>>,
+    pub hdr_max_q11: Signal<In, Bits<27>>,
     // Frame tags from the exposure sequencer.
     pub tag_exposure_index: Signal<In, Bits<3>>,
     pub tag_frame_number: Signal<In, Bits<32>>,
@@ -163,6 +167,10 @@ impl Logic for CapturePath {
         self.ingest.writer_idle.next = self.writer.writer_idle.val();
         self.ingest.frame_closed.next = self.writer.frame_closed.val();
         self.ingest.beat_room.next = self.writer.beat_room.val();
+        self.ingest.hdr_enable.next = self.hdr_ctrl_enable.val();
+        self.ingest.hdr_new_set.next = self.hdr_ctrl_new_set.val();
+        self.ingest.hdr_min_q11.next = self.hdr_min_q11.val();
+        self.ingest.hdr_max_q11.next = self.hdr_max_q11.val();
 
         self.writer.restart.next = self.dma_ctrl_reset.val();
         self.writer.window_base.next = self.dma_window_base_addr.val();
@@ -172,6 +180,7 @@ impl Logic for CapturePath {
         self.writer.bus_timeout.next = self.dma_bus_timeout_cycles.val();
         self.writer.beat_push.next = self.ingest.beat_push.val();
         self.writer.beat_data.next = self.ingest.beat_data.val();
+        self.writer.beat_byteenable.next = self.ingest.beat_byteenable.val();
         self.writer.frame_open.next = self.ingest.frame_open.val();
         self.writer.frame_ended.next = self.ingest.frame_ended.val();
         self.writer.desc_frame_number.next = self.ingest.desc_frame_number.val();

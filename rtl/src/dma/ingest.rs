@@ -2,6 +2,7 @@
 //! into 64-bit beats, the payload checksum, the frame tags, and the capture's status.
 
 use crate::capture::fifo_entry as entry;
+use crate::hdr::HdrSelect;
 use rust_hdl::prelude::*;
 use skylux_regmap::descriptor;
 
@@ -32,6 +33,7 @@ const _: () = assert!(descriptor::flag::LSB == 16);
 const _: () = assert!(descriptor::flag::PIXCLK_STOPPED == 1 << 21);
 const _: () = assert!(descriptor::flag::FRAMES_SKIPPED == 1 << 24);
 const _: () = assert!(descriptor::RAW_MODE == 1 << 8 && descriptor::LINES_LSB == 16);
+const _: () = assert!(descriptor::HDR_MAP == 1 << 9);
 
 /// Reads the FIFO (first-word-fall-through) and turns a frame into beats for the writer plus
 /// the descriptor fields. A start marker opens a frame only when the engine is enabled and
@@ -39,7 +41,11 @@ const _: () = assert!(descriptor::RAW_MODE == 1 << 8 && descriptor::LINES_LSB ==
 /// frame closes at its end marker, at a start marker that arrives first (`FRAME_SHORT`), or
 /// when PIXCLK stops (`PIXCLK_STOPPED`); an odd word count is padded with a zero word.
 /// End markers update the capture status in every state, so `capture.*` works with the DMA
-/// disabled.
+/// disabled. In HDR mode (`hdr_enable`, sampled when a frame opens, grouped mode only) each
+/// taken word goes out as its map word through [`HdrSelect`], with byte enables clear for
+/// groups already filled; the checksum stays that of the grouped words. A map frame after
+/// `hdr_new_set` begins a set and is its exposure 0; the others count up from their set's
+/// first, so a set may span sequences whose exposure tags restart.
 #[derive(LogicBlock, Default)]
 pub struct FrameIngest {
     pub clock: Signal<In, Clock>,
@@ -57,6 +63,12 @@ pub struct FrameIngest {
     pub tag_exposure_index: Signal<In, Bits<3>>,
     pub tag_frame_number: Signal<In, Bits<32>>,
     pub tag_timestamp: Signal<In, Bits<64>>,
+    /// `hdr.*`: write the frames of a set as one map (grouped mode only), the pulse that makes
+    /// the next map frame a set's first, and the usable luminance range.
+    pub hdr_enable: Signal<In, Bit>,
+    pub hdr_new_set: Signal<In, Bit>,
+    pub hdr_min_q11: Signal<In, Bits<27>>,
+    pub hdr_max_q11: Signal<In, Bits<27>>,
     /// From the writer.
     pub writer_idle: Signal<In, Bit>,
     pub frame_closed: Signal<In, Bit>,
@@ -64,6 +76,7 @@ pub struct FrameIngest {
     /// To the writer.
     pub beat_push: Signal<Out, Bit>,
     pub beat_data: Signal<Out, Bits<64>>,
+    pub beat_byteenable: Signal<Out, Bits<8>>,
     pub frame_open: Signal<Out, Bit>,
     pub frame_ended: Signal<Out, Bit>,
     pub desc_frame_number: Signal<Out, Bits<32>>,
@@ -93,6 +106,7 @@ pub struct FrameIngest {
     pub taken_first: Signal<Out, Bit>,
     pub taken_exposure_index: Signal<Out, Bits<3>>,
 
+    hdr: HdrSelect,
     state: DFF<IngestState>,
     fv_meta: DFF<Bit>,
     fv_sync: DFF<Bit>,
@@ -112,6 +126,12 @@ pub struct FrameIngest {
     checksum: DFF<Bits<32>>,
     half: DFF<Bits<32>>,
     half_valid: DFF<Bit>,
+    half_enables: DFF<Bits<4>>,
+    hdr_frame: DFF<Bit>,
+    /// `NEW_SET` came: the next map frame begins a set.
+    new_set_pending: DFF<Bit>,
+    /// The current map frame's place in its set (the map words' exposure field).
+    set_ordinal: DFF<Bits<3>>,
     high_water: DFF<Bits<{ entry::FILL_BITS }>>,
     last_high_water: DFF<Bits<{ entry::FILL_BITS }>>,
     last_pixels: DFF<Bits<12>>,
@@ -127,6 +147,11 @@ pub struct FrameIngest {
     pixclk_stopped: Signal<Local, Bit>,
     close_now: Signal<Local, Bit>,
     marker_flags: Signal<Local, Bits<32>>,
+    // The word a taken entry puts in its beat (grouped or raw, or the map word) and its byte
+    // enables.
+    out_word: Signal<Local, Bits<32>>,
+    out_enables: Signal<Local, Bits<4>>,
+    next_ordinal: Signal<Local, Bits<3>>,
 }
 
 impl Logic for FrameIngest {
@@ -154,6 +179,10 @@ impl Logic for FrameIngest {
             checksum,
             half,
             half_valid,
+            half_enables,
+            hdr_frame,
+            new_set_pending,
+            set_ordinal,
             high_water,
             last_high_water,
             last_pixels,
@@ -246,11 +275,44 @@ impl Logic for FrameIngest {
 
         self.info_start.next = bit_cast::<32, 3>(self.pending_exposure.q.val());
         self.info_start.next = self.info_start.val().replace_bit(8, self.raw.val());
+        self.info_start.next = self
+            .info_start
+            .val()
+            .replace_bit(9, self.hdr_enable.val() & !self.raw.val());
+
+        // ---- HDR: the map word and whether to write it, for the word taken ---------------
+        self.hdr.clock.next = self.clock.val();
+        self.hdr.restart.next = false;
+        if self.hdr_new_set.val() {
+            self.new_set_pending.d.next = true;
+        }
+        self.next_ordinal.next = self.set_ordinal.q.val() + 1;
+        if self.set_ordinal.q.val() == 7 {
+            self.next_ordinal.next = 7.into();
+        }
+        if self.new_set_pending.q.val() {
+            self.next_ordinal.next = 0.into();
+        }
+        self.hdr.first_of_set.next = self.new_set_pending.q.val();
+        self.hdr.exposure_index.next = self.next_ordinal.val();
+        self.hdr.take.next = false;
+        self.hdr.word.next = self.payload.val();
+        self.hdr.min_q11.next = self.hdr_min_q11.val();
+        self.hdr.max_q11.next = self.hdr_max_q11.val();
+        self.out_word.next = self.payload.val();
+        self.out_enables.next = 0xF.into();
+        if self.hdr_frame.q.val() {
+            self.out_word.next = self.hdr.map_word.val();
+            if !self.hdr.map_write.val() {
+                self.out_enables.next = 0.into();
+            }
+        }
 
         // ---- beats ----------------------------------------------------------------------
         // The 64-bit beats are assembled only when pushed (wide values are slow to simulate).
         self.beat_push.next = false;
         self.beat_data.next = 0.into();
+        self.beat_byteenable.next = 0xFF.into();
         self.taken_valid.next = false;
         self.taken_word.next = self.payload.val();
         self.taken_first.next = self.words.q.val() == 0;
@@ -273,6 +335,12 @@ impl Logic for FrameIngest {
                         self.words.d.next = 0.into();
                         self.checksum.d.next = 0.into();
                         self.half_valid.d.next = false;
+                        self.hdr.restart.next = true;
+                        self.hdr_frame.d.next = self.hdr_enable.val() & !self.raw.val();
+                        if self.hdr_enable.val() & !self.raw.val() {
+                            self.set_ordinal.d.next = self.next_ordinal.val();
+                            self.new_set_pending.d.next = false;
+                        }
                         self.state.d.next = IngestState::Frame;
                     }
                 } else if !self.fifo_empty.val() {
@@ -284,15 +352,19 @@ impl Logic for FrameIngest {
                     if self.beat_room.val() {
                         self.fifo_read.next = true;
                         self.taken_valid.next = true;
+                        self.hdr.take.next = true;
                         self.words.d.next = self.words.q.val() + 1;
                         self.checksum.d.next = self.checksum.q.val() + self.payload.val();
                         if self.half_valid.q.val() {
                             self.beat_push.next = true;
                             self.beat_data.next = bit_cast::<64, 32>(self.half.q.val())
-                                | (bit_cast::<64, 32>(self.payload.val()) << 32);
+                                | (bit_cast::<64, 32>(self.out_word.val()) << 32);
+                            self.beat_byteenable.next = bit_cast::<8, 4>(self.half_enables.q.val())
+                                | (bit_cast::<8, 4>(self.out_enables.val()) << 4);
                             self.half_valid.d.next = false;
                         } else {
-                            self.half.d.next = self.payload.val();
+                            self.half.d.next = self.out_word.val();
+                            self.half_enables.d.next = self.out_enables.val();
                             self.half_valid.d.next = true;
                         }
                     }
@@ -317,6 +389,8 @@ impl Logic for FrameIngest {
                     if self.half_valid.q.val() {
                         self.beat_push.next = true;
                         self.beat_data.next = bit_cast::<64, 32>(self.half.q.val());
+                        self.beat_byteenable.next =
+                            bit_cast::<8, 4>(self.half_enables.q.val()) | 0xF0;
                         self.half_valid.d.next = false;
                     }
                 }

@@ -64,6 +64,8 @@ pub struct BurstWriter {
     /// From the ingest.
     pub beat_push: Signal<In, Bit>,
     pub beat_data: Signal<In, Bits<64>>,
+    /// The beat's byte enables (all set but in HDR mode, where they mask filled groups).
+    pub beat_byteenable: Signal<In, Bits<8>>,
     pub frame_open: Signal<In, Bit>,
     pub frame_ended: Signal<In, Bit>,
     pub desc_frame_number: Signal<In, Bits<32>>,
@@ -92,6 +94,9 @@ pub struct BurstWriter {
     pub avm_waitrequest: Signal<In, Bit>,
 
     beats: SynchronousFIFO<Bits<64>, BEAT_FIFO_ADDRESS_BITS, { BEAT_FIFO_ADDRESS_BITS + 1 }, 1>,
+    /// The beats' byte enables, pushed and popped with them (a separate FIFO keeps the 64-bit
+    /// one's layout).
+    enables: SynchronousFIFO<Bits<8>, BEAT_FIFO_ADDRESS_BITS, { BEAT_FIFO_ADDRESS_BITS + 1 }, 1>,
     queued: DFF<Bits<{ BEAT_FIFO_ADDRESS_BITS + 1 }>>,
     state: DFF<WriterState>,
     slot: DFF<Bits<8>>,
@@ -143,6 +148,7 @@ impl Default for BurstWriter {
             bus_timeout: Default::default(),
             beat_push: Default::default(),
             beat_data: Default::default(),
+            beat_byteenable: Default::default(),
             frame_open: Default::default(),
             frame_ended: Default::default(),
             desc_frame_number: Default::default(),
@@ -167,6 +173,7 @@ impl Default for BurstWriter {
             avm_byteenable: Default::default(),
             avm_waitrequest: Default::default(),
             beats: Default::default(),
+            enables: Default::default(),
             queued: Default::default(),
             state: Default::default(),
             slot: Default::default(),
@@ -230,11 +237,13 @@ impl Logic for BurstWriter {
             timed_out,
             frames_written
         );
-        clock!(self, clock, beats);
+        clock!(self, clock, beats, enables);
 
         // ---- the beat FIFO and its count ------------------------------------------------
         self.beats.write.next = self.beat_push.val();
         self.beats.data_in.next = self.beat_data.val();
+        self.enables.write.next = self.beat_push.val();
+        self.enables.data_in.next = self.beat_byteenable.val();
         self.pop.next = false;
         self.beat_room.next = self.queued.q.val() < 254;
 
@@ -341,6 +350,7 @@ impl Logic for BurstWriter {
             WriterState::Burst => {
                 self.avm_write.next = true;
                 self.avm_writedata.next = self.beats.data_out.val();
+                self.avm_byteenable.next = self.enables.data_out.val();
                 if self.avm_waitrequest.val() {
                     self.stalled.next = true;
                 } else {
@@ -434,6 +444,7 @@ impl Logic for BurstWriter {
         }
 
         self.beats.read.next = self.pop.val();
+        self.enables.read.next = self.pop.val();
         if self.beat_push.val() & !self.pop.val() {
             self.queued.d.next = self.queued.q.val() + 1;
         }

@@ -156,6 +156,7 @@ impl FabricModel {
             timestamp_cycles: f.tag_time,
             exposure_index: (f.tag_index & descriptor::EXPOSURE_INDEX_MASK) as u8,
             raw: f.raw,
+            hdr_map: false,
             flags,
             last_line_pixels: f.last_pixels as u16,
             lines: f.lines as u16,

@@ -47,9 +47,10 @@ pub struct CapturedFrame {
 
 impl CapturedFrame {
     /// Whether the payload's sum equals the descriptor's checksum. `None` when the payload is
-    /// incomplete in memory (`TRUNCATED`), so no sum can be compared.
+    /// incomplete in memory (`TRUNCATED`), or an HDR map (the checksum is that of the frame's
+    /// grouped words, which the map only partly holds), so no sum can be compared.
     pub fn checksum_ok(&self) -> Option<bool> {
-        if self.descriptor.flags & flag::TRUNCATED != 0 {
+        if self.descriptor.flags & flag::TRUNCATED != 0 || self.descriptor.hdr_map {
             return None;
         }
         // A9 cost (timing::a9::ring::CHECKSUM_PER_WORD): `ldr`, `subs`, `add`, `bne` a word,
@@ -207,6 +208,7 @@ mod tests {
             timestamp_cycles: 1234,
             exposure_index: 2,
             raw: false,
+            hdr_map: false,
             flags,
             last_line_pixels: 8,
             lines: 4,

@@ -4,6 +4,7 @@ mod bringup;
 pub mod capture;
 mod exposure;
 pub mod frames;
+mod hdr;
 pub mod raybox;
 pub mod sensor;
 pub mod sequence;

@@ -237,7 +237,11 @@ pub fn merge<F: ExposureFrame>(
             });
         }
     }
-    let merger = Merger::new(exposures, device, pattern);
+    let merger = Merger::new(
+        exposures.iter().map(|e| (e.exposure_s, e.gain)),
+        device,
+        pattern,
+    );
     let (width, height) = (geometry.width, geometry.height);
     let mut map = LuminanceMap {
         width,
@@ -309,8 +313,9 @@ impl RowScratch {
     }
 }
 
-/// Everything per-set that the per-group merge needs, precomputed.
-struct Merger {
+/// Everything per-set that the per-group merge needs, precomputed. The fabric's map
+/// (`super::fabric_map`) uses the same calibration for its one exposure per group.
+pub(super) struct Merger {
     /// t g per exposure, and its inverse.
     tg: Vec<f64>,
     inv_tg: Vec<f64>,
@@ -327,11 +332,13 @@ struct Merger {
 }
 
 impl Merger {
-    fn new<F: ExposureFrame>(
-        exposures: &[Exposure<F>],
+    /// The calibration of a set whose exposures have these (integration time s, gain).
+    pub(super) fn new(
+        exposures: impl Iterator<Item = (f64, f64)>,
         device: &DeviceConfig,
         pattern: BayerPattern,
     ) -> Self {
+        let exposures: Vec<(f64, f64)> = exposures.collect();
         let [wr, wg, wb] = device.response.weights;
         let [r, g1, g2, b] = pattern.offsets();
         let mut weight_at = [[0.0; 2]; 2];
@@ -340,7 +347,7 @@ impl Merger {
         }
         let q: f64 = weight_at.iter().flatten().map(|w| w * w).sum();
         let weight_sum = wr + wg + wb;
-        let tg: Vec<f64> = exposures.iter().map(|e| e.exposure_s * e.gain).collect();
+        let tg: Vec<f64> = exposures.iter().map(|(t, gain)| t * gain).collect();
         let shortest = (0..tg.len())
             .min_by(|&a, &b| tg[a].total_cmp(&tg[b]))
             .unwrap_or(0);
@@ -349,7 +356,7 @@ impl Merger {
             shot_var_per_rate: exposures
                 .iter()
                 .zip(&tg)
-                .map(|(e, t)| q * device.noise.conversion_dn_per_e * e.gain * t / weight_sum)
+                .map(|((_, gain), t)| q * device.noise.conversion_dn_per_e * gain * t / weight_sum)
                 .collect(),
             tg,
             shortest,
@@ -362,6 +369,23 @@ impl Merger {
             floor_var: q * (device.noise.read_noise_dn.powi(2) + 1.0 / 12.0),
             cg: device.response.cg,
         }
+    }
+
+    /// One group's luminance (cd/m²) and relative standard deviation from exposure `k` alone,
+    /// with signal `signal_dn` (the weighted, black-subtracted sum): the merge's formula with
+    /// one valid exposure (its pilot is the exposure's own rate). `None` for an exposure the
+    /// set does not have.
+    pub(super) fn single(
+        &self,
+        k: usize,
+        signal_dn: f64,
+        inverse_vignetting: f32,
+    ) -> Option<(f32, f32)> {
+        let (tg, shot) = (*self.tg.get(k)?, self.shot_var_per_rate[k]);
+        let rate = signal_dn / tg;
+        let inv = tg * tg / (rate.max(0.0) * shot + self.floor_var);
+        let luminance = (self.cg * rate * inverse_vignetting as f64) as f32;
+        Some((luminance, ((1.0 / inv).sqrt() / rate.abs()) as f32))
     }
 
     /// Merges group row `gy`: a first pass per exposure over the row's groups (the frame's

@@ -3,6 +3,7 @@
 
 mod capture;
 mod exr_file;
+mod fabric_map;
 mod geometry;
 mod merge;
 mod radiance_sky;
@@ -11,6 +12,7 @@ pub use capture::{map_capture, CaptureMap, CaptureMapError};
 pub use exr_file::{
     parse_exr, read_exr, write_exr, MapFileError, DEVICE_ATTRIBUTE, READOUT_ATTRIBUTE,
 };
+pub use fabric_map::{fabric_map, FabricMap, MapExposure};
 pub use geometry::{GeometryCache, GroupGeometry};
 pub use merge::{
     merge, Exposure, ExposureFrame, GroupParams, GroupedFrame, HdrError, LuminanceMap, MapFlag,

@@ -331,6 +331,96 @@ pub fn hps_read(frames: f64, words_per_frame: f64) -> Stage {
     }
 }
 
+/// Map mode's ring read (`[fabric] hdr = "fabric"`, issue 22 item 1): the one map of `words`
+/// words, copied out of the uncached ring into words; no checksum (a map carries none) and no
+/// unpacking (the words go to `hdr::fabric_map` as they are).
+pub fn hps_read_map(words: f64) -> Stage {
+    let bytes = 4.0 * words;
+    Stage {
+        name: "hps_read_map",
+        passes: vec![
+            Pass {
+                name: "zero the payload buffer (vec![0u8; 4n]: calloc)",
+                bytes: Bytes {
+                    dram_fill: bytes,
+                    ..Bytes::default()
+                },
+                cycles: 0.0,
+                parallel: false,
+            },
+            Pass {
+                name: "copy out of the uncached ring (memcpy)",
+                bytes: Bytes {
+                    uncached_read: bytes,
+                    ..Bytes::default()
+                },
+                cycles: 0.0,
+                parallel: false,
+            },
+            Pass {
+                name: "bytes to words (collect, compiled to memcpy)",
+                bytes: Bytes {
+                    dram_stream: 2.0 * bytes,
+                    ..Bytes::default()
+                },
+                cycles: 0.0,
+                parallel: false,
+            },
+        ],
+    }
+}
+
+/// `hdr::fabric_map` (hps/core/src/hdr/fabric_map.rs), per group. **Estimate**: written from
+/// the source, not counted from a listing (the function is newer than the listing above).
+pub mod fabric_map {
+    use super::{Ops, VDIV_F64_CYCLES, VSQRT_F64_CYCLES};
+    /// A valid group: the word's fields and the usable test (about 15 integer instructions),
+    /// `Merger::single`: `vdiv.f64` for the rate, one for the inverse variance, one for the
+    /// sigma's 1/inv, a `vsqrt.f64`, four `vmul.f64`/`vmla.f64`, two conversions and the three
+    /// stores: about 45 instructions, 25 load/store/VFP slots, the VFP pipeline held by the
+    /// three divisions and the square root.
+    pub const VALID_GROUP: Ops = Ops::new(
+        45.0,
+        25.0,
+        3.0 * VDIV_F64_CYCLES + VSQRT_F64_CYCLES + 8.0,
+        0.0,
+    );
+    /// A flagged group: the fields, the usable test and the flag's store.
+    pub const FLAGGED_GROUP: Ops = Ops::new(20.0, 4.0, 0.0, 0.0);
+}
+
+/// `hdr::fabric_map`'s passes over `groups` groups of which `valid_groups` are valid: a
+/// single loop (not spread over cores).
+pub fn hdr_fabric_map(groups: f64, valid_groups: f64) -> Stage {
+    // Map: f32 luminance + u8 flag + f32 sigma per group.
+    let map_bytes = 9.0 * groups;
+    Stage {
+        name: "hdr_fabric_map",
+        passes: vec![
+            Pass {
+                name: "fill the map (NaN, UnderRange)",
+                bytes: Bytes {
+                    dram_fill: map_bytes,
+                    ..Bytes::default()
+                },
+                cycles: 0.0,
+                parallel: false,
+            },
+            Pass {
+                // Per group: the map word, the f32 inverse vignetting, the map's outputs.
+                name: "convert the groups",
+                bytes: Bytes {
+                    dram_stream: groups * 8.0 + map_bytes,
+                    ..Bytes::default()
+                },
+                cycles: valid_groups * fabric_map::VALID_GROUP.cycles()
+                    + (groups - valid_groups) * fabric_map::FLAGGED_GROUP.cycles(),
+                parallel: false,
+            },
+        ],
+    }
+}
+
 /// The loops of `Merger::row` (hps/core/src/hdr/merge.rs), raw frames, per group. Counted from
 /// the monomorphised `merge::<RawFrame>` (inlined into rayon's `bridge_producer_consumer`
 /// helper) in the listing the module documentation names.
