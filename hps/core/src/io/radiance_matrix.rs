@@ -475,7 +475,12 @@ mod tests {
             (b"NCOLS=1\nNCOMP=1\n\n1\n2 x\n", "data line 5"),
             (
                 b"NROWS=4000000000\nNCOLS=4000000000\nNCOMP=3\nFORMAT=float\n\n\0\0\0\0",
-                "data",
+                // A 32-bit usize cannot hold NCOLS × NCOMP: refused at the header there.
+                if cfg!(target_pointer_width = "32") {
+                    "NCOLS"
+                } else {
+                    "data"
+                },
             ),
         ];
         for (bytes, field) in cases {
