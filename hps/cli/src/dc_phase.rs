@@ -57,13 +57,8 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
     bar.finish_and_clear();
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("creating {}", args.out.display()))?;
-    let write = |m: &RadianceMatrix, name: &str, what: String| -> anyhow::Result<()> {
-        let path = args.out.join(name);
-        // RGB (grey), as dctimestep expects of every factor.
-        let rgb = m.with_components(3).context("a grey matrix")?;
-        rgb.write(&path, MatrixFormat::Float, &[what])
-            .with_context(|| format!("writing {}", path.display()))
-    };
+    let write =
+        |m: &RadianceMatrix, name: &str, what: String| write_matrix(&args.out, m, name, what);
     write(
         &v,
         "v.mtx",
@@ -95,41 +90,12 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
         ),
     )?;
     if args.direct {
-        let v_direct = view_matrix(
-            &room,
+        write_direct_matrices(
+            args,
+            (&room, &outside),
             &sensors,
             &window,
-            &Settings {
-                ambient_bounces: 1,
-                ..settings
-            },
-            &|_, _| {},
-        )?;
-        let d_direct = daylight_matrix(
-            &outside,
-            &window,
-            args.mf,
-            &Settings {
-                ambient_bounces: 0,
-                ..d_settings
-            },
-            &|_, _| {},
-        )?;
-        write(
-            &v_direct,
-            "vd.mtx",
-            format!(
-                "skylux dc --three-phase --direct: V_d (-ab 1), {} paths",
-                args.ad
-            ),
-        )?;
-        write(
-            &d_direct,
-            "dd.mtx",
-            format!(
-                "skylux dc --three-phase --direct: D_d (-ab 0), {} rays per patch",
-                args.d_samples
-            ),
+            (settings, d_settings),
         )?;
     }
     println!(
@@ -143,31 +109,101 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
         args.out.display()
     );
     if let Some(sky_path) = &args.sky {
-        let sky = RadianceMatrix::read(sky_path)?;
-        let result = three_phase(&v, &t.matrix, &d, &sky)?;
-        let path = args.out.join("result.mtx");
-        result
-            .write(
-                &path,
-                MatrixFormat::Ascii,
-                &[format!(
-                    "skylux dc --three-phase: V T D {}",
-                    sky_path.display()
-                )],
-            )
-            .with_context(|| format!("writing {}", path.display()))?;
-        let lux = result.brightness();
-        for (s, sensor) in sensors.iter().enumerate() {
-            let row: Vec<String> = (0..lux.cols)
-                .map(|c| format!("{:.1}", 179.0 * lux.get(s, c, 0)))
-                .collect();
-            println!("{},{}", sensor.name, row.join(","));
-        }
-        if !states.is_empty() {
-            print_states(&v, &t.matrix, &states, &d, &sky, &sensors)?;
-        }
+        write_product(args, sky_path, (&v, &t.matrix, &d), &states, &sensors)?;
     }
     Ok(())
+}
+
+/// The five-phase's direct matrices: vd.mtx (V at -ab 1, the sensors' direct view of the
+/// window) and dd.mtx (D at -ab 0, the window's direct view of the sky).
+fn write_direct_matrices(
+    args: &DcArgs,
+    (room, outside): (&World, &World),
+    sensors: &[scene::Sensor],
+    window: &KlemsWindow,
+    (settings, d_settings): (Settings, Settings),
+) -> anyhow::Result<()> {
+    let write =
+        |m: &RadianceMatrix, name: &str, what: String| write_matrix(&args.out, m, name, what);
+    let v_direct = view_matrix(
+        room,
+        sensors,
+        window,
+        &Settings {
+            ambient_bounces: 1,
+            ..settings
+        },
+        &|_, _| {},
+    )?;
+    let d_direct = daylight_matrix(
+        outside,
+        window,
+        args.mf,
+        &Settings {
+            ambient_bounces: 0,
+            ..d_settings
+        },
+        &|_, _| {},
+    )?;
+    write(
+        &v_direct,
+        "vd.mtx",
+        format!(
+            "skylux dc --three-phase --direct: V_d (-ab 1), {} paths",
+            args.ad
+        ),
+    )?;
+    write(
+        &d_direct,
+        "dd.mtx",
+        format!(
+            "skylux dc --three-phase --direct: D_d (-ab 0), {} rays per patch",
+            args.d_samples
+        ),
+    )?;
+    Ok(())
+}
+
+/// V T D s with the --sky vector: result.mtx, lux per sensor, and every window state's lux.
+fn write_product(
+    args: &DcArgs,
+    sky_path: &Path,
+    (v, t, d): (&RadianceMatrix, &RadianceMatrix, &RadianceMatrix),
+    states: &[(String, RadianceMatrix)],
+    sensors: &[scene::Sensor],
+) -> anyhow::Result<()> {
+    let sky = RadianceMatrix::read(sky_path)?;
+    let result = three_phase(v, t, d, &sky)?;
+    let path = args.out.join("result.mtx");
+    result
+        .write(
+            &path,
+            MatrixFormat::Ascii,
+            &[format!(
+                "skylux dc --three-phase: V T D {}",
+                sky_path.display()
+            )],
+        )
+        .with_context(|| format!("writing {}", path.display()))?;
+    let lux = result.brightness();
+    for (s, sensor) in sensors.iter().enumerate() {
+        let row: Vec<String> = (0..lux.cols)
+            .map(|c| format!("{:.1}", 179.0 * lux.get(s, c, 0)))
+            .collect();
+        println!("{},{}", sensor.name, row.join(","));
+    }
+    if !states.is_empty() {
+        print_states(v, t, states, d, &sky, sensors)?;
+    }
+    Ok(())
+}
+
+/// Writes `m` as RGB (grey), float, as dctimestep expects of every factor.
+fn write_matrix(out: &Path, m: &RadianceMatrix, name: &str, what: String) -> anyhow::Result<()> {
+    let path = out.join(name);
+    let rgb = m.with_components(3).context("a grey matrix")?;
+    rgb.write(&path, MatrixFormat::Float, &[what])
+        .with_context(|| format!("writing {}", path.display()))
 }
 
 /// The window's further states (`--state NAME=XML`), each T on the --bsdf's Klems basis.

@@ -29,22 +29,28 @@ fn corner_rectangle(a: f64, b: f64, h: f64) -> f64 {
     0.5 * (x / sx * (y / sx).atan() + y / sy * (x / sy).atan())
 }
 
+/// A room with nothing near the sensors (a far floor keeps the scene non-empty) and a
+/// 2 × 1.2 m window polygon in the plane y = 0, written into `dir`.
+fn room_and_window(dir: &Path) {
+    std::fs::write(
+        dir.join("room.rad"),
+        "void plastic f 0 0 5 .2 .2 .2 0 0\nf polygon far 0 0 12 50 50 -9 51 50 -9 51 51 -9 50 51 -9\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("window.rad"),
+        "void glow g 0 0 4 1 1 1 0\ng polygon w 0 0 12 1 0 0.9 1 0 2.1 3 0 2.1 3 0 0.9\n",
+    )
+    .unwrap();
+}
+
 #[test]
 fn matrices_read_back_and_v_is_the_view_factor() {
     let dir = tempfile::tempdir().unwrap();
     let p = |name: &str| dir.path().join(name);
     // No room around the sensor: only the window's polygon matters to V. A floor far away
     // keeps the scene non-empty.
-    std::fs::write(
-        p("room.rad"),
-        "void plastic f 0 0 5 .2 .2 .2 0 0\nf polygon far 0 0 12 50 50 -9 51 50 -9 51 51 -9 50 51 -9\n",
-    )
-    .unwrap();
-    std::fs::write(
-        p("window.rad"),
-        "void glow g 0 0 4 1 1 1 0\ng polygon w 0 0 12 1 0 0.9 1 0 2.1 3 0 2.1 3 0 0.9\n",
-    )
-    .unwrap();
+    room_and_window(dir.path());
     // Facing the window (-y) 1 m in front of its lower left corner.
     std::fs::write(p("s.pts"), "1 1 0.9 0 -1 0\n").unwrap();
     // A uniform sky of radiance 1 and ground of 0.5, Tregenza (146 rows).
@@ -182,16 +188,7 @@ fn bad_input_is_named() {
 fn window_states_are_one_product_each() {
     let dir = tempfile::tempdir().unwrap();
     let p = |name: &str| dir.path().join(name);
-    std::fs::write(
-        p("room.rad"),
-        "void plastic f 0 0 5 .2 .2 .2 0 0\nf polygon far 0 0 12 50 50 -9 51 50 -9 51 51 -9 50 51 -9\n",
-    )
-    .unwrap();
-    std::fs::write(
-        p("window.rad"),
-        "void glow g 0 0 4 1 1 1 0\ng polygon w 0 0 12 1 0 0.9 1 0 2.1 3 0 2.1 3 0 0.9\n",
-    )
-    .unwrap();
+    room_and_window(dir.path());
     std::fs::write(p("s.pts"), "1 1 0.9 0 -1 0\n2 2 1.5 0 -1 0\n").unwrap();
     let sky: String = std::iter::once("0.5\n".to_string())
         .chain((0..145).map(|k| format!("{}\n", 1.0 + (k % 5) as f64)))

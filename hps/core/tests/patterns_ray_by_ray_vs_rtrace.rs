@@ -333,11 +333,7 @@ fn textured_glass_matches_rtrace() {
         "dx = 0.06 * sin(2.5 * Px);\ndy = 0.05 * cos(1.7 * Py);\ndz = 0;\nflat = 0;\n",
     )
     .unwrap();
-    std::fs::write(
-        dir.path().join("floor.cal"),
-        "fr = 0.5 + 0.4 * sin(3 * Px);\nfg = 0.5 + 0.4 * cos(2.5 * Py);\nfb = 0.5;\n",
-    )
-    .unwrap();
+    write_floor_stripes(dir.path());
     // The pane facing up, then down (its back towards the eye: flipsurface turns pert).
     for pane in [
         "-2 -2 1.5 6 -2 1.5 6 5 1.5 -2 5 1.5",
@@ -365,15 +361,7 @@ fn textured_glass_matches_rtrace() {
         let straight = rtrace_along(dir.path(), &rays, &bin, &lib);
         std::fs::write(dir.path().join("scene.rad"), &textured).unwrap();
         let theirs = rtrace_along(dir.path(), &rays, &bin, &lib);
-        let moved = theirs
-            .iter()
-            .zip(&straight)
-            .filter(|(t, s)| (**t - **s).abs().max_element() > 0.05 * s.max_element())
-            .count();
-        assert!(
-            moved > rays.len() / 4,
-            "the texture moved only {moved} rays"
-        );
+        let moved = moved_by_the_texture(&theirs, &straight);
 
         let world =
             World::new(&scene::load_files(&[dir.path().join("scene.rad")]).unwrap()).unwrap();
@@ -436,11 +424,7 @@ fn textured_mirror_matches_rtrace() {
         "dx = 0.08 * sin(2.5 * Px);\ndy = 0.06 * cos(1.7 * Py);\ndz = 0;\nflat = 0;\n",
     )
     .unwrap();
-    std::fs::write(
-        dir.path().join("floor.cal"),
-        "fr = 0.5 + 0.4 * sin(3 * Px);\nfg = 0.5 + 0.4 * cos(2.5 * Py);\nfb = 0.5;\n",
-    )
-    .unwrap();
+    write_floor_stripes(dir.path());
     let scene = |texture: &str| {
         format!(
             "{texture}\
@@ -472,15 +456,7 @@ fn textured_mirror_matches_rtrace() {
     )
     .unwrap();
     let theirs = rtrace_along(dir.path(), &rays, &bin, &lib);
-    let moved = theirs
-        .iter()
-        .zip(&straight)
-        .filter(|(t, s)| (**t - **s).abs().max_element() > 0.05 * s.max_element())
-        .count();
-    assert!(
-        moved > rays.len() / 4,
-        "the texture moved only {moved} rays"
-    );
+    let moved = moved_by_the_texture(&theirs, &straight);
     let scene = scene::load_files_with(
         &[dir.path().join("scene.rad")],
         &scene::LoadOptions {
@@ -509,6 +485,31 @@ fn textured_mirror_matches_rtrace() {
         "textured mirror: {} rays, worst {worst:.1e}; the ripple moved {moved}",
         rays.len()
     );
+}
+
+/// `floor.cal`: stripes of colour along x and y, so a ray that lands elsewhere reads
+/// otherwise.
+fn write_floor_stripes(dir: &std::path::Path) {
+    std::fs::write(
+        dir.join("floor.cal"),
+        "fr = 0.5 + 0.4 * sin(3 * Px);\nfg = 0.5 + 0.4 * cos(2.5 * Py);\nfb = 0.5;\n",
+    )
+    .unwrap();
+}
+
+/// How many of rtrace's rays a texture changed by over 5 % (`straight`: without it); at
+/// least a quarter, or the comparison would not see the texture.
+fn moved_by_the_texture(textured: &[DVec3], straight: &[DVec3]) -> usize {
+    let moved = textured
+        .iter()
+        .zip(straight)
+        .filter(|(t, s)| (**t - **s).abs().max_element() > 0.05 * s.max_element())
+        .count();
+    assert!(
+        moved > textured.len() / 4,
+        "the texture moved only {moved} rays"
+    );
+    moved
 }
 
 /// Our test font (written for these tests, RADIANCE's `.fnt` format) and a three-line text
