@@ -451,41 +451,7 @@ impl Pipeline {
         // HDR: as hdr::map_capture, with the geometry kept between cycles.
         let t = Instant::now();
         let r = set.config.readout;
-        let key = (r, raw_width, raw_height);
-        if self.geometry.as_ref().map(|(k, _)| *k) != Some(key) {
-            self.geometry = Some((
-                key,
-                GroupGeometry::new(&self.camera, &r, raw_width, raw_height),
-            ));
-        }
-        let geometry = match &self.geometry {
-            Some((_, g)) => g,
-            None => return Err(CycleError::Hdr("no geometry".into())),
-        };
-        let map = match &set.fabric_map {
-            // The fabric's map: each group from one exposure, the merge's calibration.
-            Some(m) => {
-                let exposures: Vec<MapExposure> = set
-                    .config
-                    .exposure
-                    .iter()
-                    .map(|e| MapExposure {
-                        exposure_s: e.exposure_us * 1e-6,
-                        gain: e.gain,
-                    })
-                    .collect();
-                fabric_map(
-                    &m.map,
-                    &exposures,
-                    &m.hdr,
-                    &self.device,
-                    set.config.bayer,
-                    geometry,
-                )
-            }
-            None => merge(&set.exposures(), &self.device, set.config.bayer, geometry),
-        }
-        .map_err(|e| CycleError::Hdr(e.to_string()))?;
+        let map = self.luminance_map(set, raw_width, raw_height)?;
         let hdr_ms = ms(t);
 
         // Sun: SPA, as the device model's `load_captures` computes it.
@@ -538,17 +504,7 @@ impl Pipeline {
             sequence: 0,
             source: source.to_string(),
             sun: sun_record(&spa, &terms),
-            illuminance: self
-                .room
-                .sensors
-                .iter()
-                .zip(&lux)
-                .map(|(s, &lux)| SensorLux {
-                    sensor: s.name.clone(),
-                    lux,
-                    stderr_lux: None,
-                })
-                .collect(),
+            illuminance: sensor_lux(&self.room.sensors, &lux),
             monte_carlo,
             views: outcome.glare,
             outdoor_horizontal_lux: terms.outdoor_horizontal_lux,
@@ -566,18 +522,10 @@ impl Pipeline {
                 total_ms: capture_ms + ms(started),
             },
             truth_outdoor_horizontal_lux: set.truth_outdoor_horizontal_lux,
-            truth_illuminance: set.truth_interior_lux.as_ref().map(|truth| {
-                self.room
-                    .sensors
-                    .iter()
-                    .zip(truth)
-                    .map(|(s, &lux)| SensorLux {
-                        sensor: s.name.clone(),
-                        lux,
-                        stderr_lux: None,
-                    })
-                    .collect()
-            }),
+            truth_illuminance: set
+                .truth_interior_lux
+                .as_ref()
+                .map(|truth| sensor_lux(&self.room.sensors, truth)),
             plausibility: vec![],
         };
         let day_of_year = set.time.ordinal() as u16;
@@ -600,6 +548,52 @@ impl Pipeline {
             map,
             view_pictures: outcome.pictures,
         })
+    }
+
+    /// The capture's luminance map: the fabric's map through the merge's calibration, or the
+    /// HPS merge of the frames; the group geometry is kept between cycles.
+    fn luminance_map(
+        &mut self,
+        set: &CaptureSet,
+        raw_width: usize,
+        raw_height: usize,
+    ) -> Result<LuminanceMap, CycleError> {
+        let r = set.config.readout;
+        let key = (r, raw_width, raw_height);
+        if self.geometry.as_ref().map(|(k, _)| *k) != Some(key) {
+            self.geometry = Some((
+                key,
+                GroupGeometry::new(&self.camera, &r, raw_width, raw_height),
+            ));
+        }
+        let geometry = match &self.geometry {
+            Some((_, g)) => g,
+            None => return Err(CycleError::Hdr("no geometry".into())),
+        };
+        match &set.fabric_map {
+            // The fabric's map: each group from one exposure, the merge's calibration.
+            Some(m) => {
+                let exposures: Vec<MapExposure> = set
+                    .config
+                    .exposure
+                    .iter()
+                    .map(|e| MapExposure {
+                        exposure_s: e.exposure_us * 1e-6,
+                        gain: e.gain,
+                    })
+                    .collect();
+                fabric_map(
+                    &m.map,
+                    &exposures,
+                    &m.hdr,
+                    &self.device,
+                    set.config.bayer,
+                    geometry,
+                )
+            }
+            None => merge(&set.exposures(), &self.device, set.config.bayer, geometry),
+        }
+        .map_err(|e| CycleError::Hdr(e.to_string()))
     }
 
     /// Full Monte-Carlo through the engine: the room under the measured sky (the map's
@@ -743,6 +737,19 @@ fn sun_record(spa: &skylux_hps::sun::SolarPosition, terms: &CaptureTerms) -> Sun
         },
         missing_reason: terms.sun_missing.as_ref().map(|why| why.to_string()),
     }
+}
+
+/// One value per sensor, by name, without a standard error.
+fn sensor_lux(sensors: &[skylux_hps::scene::Sensor], lux: &[f64]) -> Vec<SensorLux> {
+    sensors
+        .iter()
+        .zip(lux)
+        .map(|(s, &lux)| SensorLux {
+            sensor: s.name.clone(),
+            lux,
+            stderr_lux: None,
+        })
+        .collect()
 }
 
 #[cfg(test)]
