@@ -137,41 +137,15 @@ fn poll_wait_times_out_when_the_sensor_is_silent() {
 #[test]
 #[ignore = "slow cycle-accurate simulation: run with --ignored"]
 fn skyluxd_runs_a_cycle_on_the_simulated_fabric_and_its_map_is_the_offline_merge() {
-    let tmp = tempfile::tempdir().unwrap();
-    let out = tmp.path().join("out");
-    let log = tmp.path().join("stderr.log");
-    let config = tiny_fabric_config(tmp.path(), "fabric");
-    let mut child = start(
-        &SimRun::new(&config, &out)
-            .cycles(1)
-            .clock("2017-05-08T12:00:00+02:00", 3600)
-            .args(),
-        &log,
-    );
-    let status = wait(&mut child, Duration::from_secs(900));
-    let text = std::fs::read_to_string(&log).unwrap();
-    assert_eq!(status.code(), Some(0), "{text}");
-    let lines = complete_lines(&out.join("results.jsonl"));
-    assert_eq!(lines.len(), 1, "{text}");
-    let r: serde_json::Value = serde_json::from_str(&lines[0]).unwrap();
-    assert_eq!(r["source"], "fabric-sim");
+    // The bare camera: behind the example's ND filter the tiny window's sky is under-range.
+    let (tmp, out, r) = one_noon_cycle(tiny_bare_camera_config);
     assert_eq!(r["time"], "2017-05-08T12:00:00+02:00");
-    let lux: Vec<f64> = r["illuminance"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|s| s["lux"].as_f64().unwrap())
-        .collect();
-    assert_eq!(lux.len(), 5);
-    assert!(lux.iter().all(|l| l.is_finite() && *l >= 0.0), "{lux:?}");
     assert!(r["durations_ms"]["capture_ms"].as_f64().unwrap() > 0.0);
 
-    // The kept capture, merged offline, is the daemon's map.
+    // The kept capture, merged offline with the same (bare) camera, is the daemon's map.
     let capture_dir = out.join(r["capture"].as_str().unwrap());
-    let (device, _) = skylux_hps::camera::DeviceConfig::read(
-        &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("device.toml"),
-    )
-    .unwrap();
+    let (device, _) =
+        skylux_hps::camera::DeviceConfig::read(&tmp.path().join("device.toml")).unwrap();
     let offline = skylux_hps::hdr::map_capture(&capture_dir, &device).unwrap();
     let (daemon_map, _, _) =
         skylux_hps::hdr::read_exr(&out.join(r["map"].as_str().unwrap())).unwrap();
@@ -198,12 +172,25 @@ fn skyluxd_runs_a_cycle_on_the_simulated_fabric_and_its_map_is_the_offline_merge
     );
 }
 
-/// The tiny configuration with the fabric making the map, and a camera without the example
-/// device's ND 1.0 filter (`cg` 1 instead of 10) and with `valid_min` at 10 DN instead of 40:
-/// with the example's, the tiny window's sky stays under-range at 1000 µs (2 to 6 DN), so no
-/// group would be usable; with these, the 1000 µs frame's groups (8 to 60 DN) mostly are and
-/// the 300 µs frame's mostly are not.
+/// The tiny configuration with the fabric making the map ([`tiny_bare_camera_config`]).
 fn tiny_map_config(dir: &std::path::Path) -> std::path::PathBuf {
+    let path = tiny_bare_camera_config(dir);
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(
+        text.contains("hdr = \"hps\" "),
+        "the example's [fabric] hdr line"
+    );
+    let text = text.replacen("hdr = \"hps\" ", "hdr = \"fabric\" ", 1);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// The tiny fabric configuration with a camera without the example device's ND 1.0 filter
+/// (`cg` 1 instead of 10) and with `valid_min` at 10 DN instead of 40: with the example's,
+/// the tiny window's sky stays under-range at 1000 µs (2 to 6 DN), so no group would be
+/// usable; with these, the 1000 µs frame's groups (8 to 60 DN) mostly are and the 300 µs
+/// frame's mostly are not.
+fn tiny_bare_camera_config(dir: &std::path::Path) -> std::path::PathBuf {
     let path = tiny_fabric_config(dir, "fabric");
     // The path as `config_with` writes it.
     let example = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -229,11 +216,6 @@ fn tiny_map_config(dir: &std::path::Path) -> std::path::PathBuf {
     let quoted = format!("\"{}\"", example.display());
     assert!(text.contains(&quoted), "the configuration's device path");
     let text = text.replacen(&quoted, &format!("\"{}\"", bare.display()), 1);
-    assert!(
-        text.contains("hdr = \"hps\" "),
-        "the example's [fabric] hdr line"
-    );
-    let text = text.replacen("hdr = \"hps\" ", "hdr = \"fabric\" ", 1);
     std::fs::write(&path, text).unwrap();
     path
 }
@@ -328,10 +310,27 @@ fn the_fabric_map_is_the_golden_selection_of_the_sensor_frames() {
 #[test]
 #[ignore = "slow cycle-accurate simulation: run with --ignored"]
 fn skyluxd_runs_a_cycle_on_the_fabric_map() {
+    let (_tmp, out, r) = one_noon_cycle(tiny_map_config);
+    // No raw frames to keep; the map the cycle made is written.
+    assert!(r["capture"].is_null(), "{r}");
+    let (map, _, _) = skylux_hps::hdr::read_exr(&out.join(r["map"].as_str().unwrap())).unwrap();
+    assert_eq!(map.luminance_cd_m2.len(), 8 * 6);
+    assert!(
+        map.flags.contains(&skylux_hps::hdr::MapFlag::Valid),
+        "{:?}",
+        map.flags
+    );
+}
+
+/// One skyluxd cycle at noon on `config(dir)`'s fabric: its scratch folder, output folder
+/// and the cycle's record, whose five sensors read finite, non-negative lux.
+fn one_noon_cycle(
+    config: impl FnOnce(&std::path::Path) -> std::path::PathBuf,
+) -> (tempfile::TempDir, std::path::PathBuf, serde_json::Value) {
     let tmp = tempfile::tempdir().unwrap();
     let out = tmp.path().join("out");
     let log = tmp.path().join("stderr.log");
-    let config = tiny_map_config(tmp.path());
+    let config = config(tmp.path());
     let mut child = start(
         &SimRun::new(&config, &out)
             .cycles(1)
@@ -354,13 +353,5 @@ fn skyluxd_runs_a_cycle_on_the_fabric_map() {
         .collect();
     assert_eq!(lux.len(), 5);
     assert!(lux.iter().all(|l| l.is_finite() && *l >= 0.0), "{lux:?}");
-    // No raw frames to keep; the map the cycle made is written.
-    assert!(r["capture"].is_null(), "{r}");
-    let (map, _, _) = skylux_hps::hdr::read_exr(&out.join(r["map"].as_str().unwrap())).unwrap();
-    assert_eq!(map.luminance_cd_m2.len(), 8 * 6);
-    assert!(
-        map.flags.contains(&skylux_hps::hdr::MapFlag::Valid),
-        "{:?}",
-        map.flags
-    );
+    (tmp, out, r)
 }
