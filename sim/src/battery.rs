@@ -19,6 +19,12 @@ pub enum SkyNeed {
     Any,
     /// The sun on at least one day (not two overcast days).
     Sun,
+    /// As [`SkyNeed::Sun`], and the sun in the camera's field at [`MIN_SUN_IN_VIEW`]
+    /// captures of a day that is not overcast: an effect seen only in the frames' sun (the
+    /// shutter's overhead, the camera's orientation) acts on nothing where the camera never
+    /// sees it (campaign #71 of the seed-18 battery: a 14 µs overhead, façade 169° at 15°N, the
+    /// sun north of the camera's field all day, hold-out 1.4 % with and without it).
+    SunInView,
     /// A clear first day (the colour of a clear sky against the other day's).
     Clear,
     /// Partly cloudy days: the light must change within minutes.
@@ -73,7 +79,7 @@ pub const EFFECT_RANGES: &[EffectRange] = &[
         max: 10.0,
         signed: true,
         unit: "deg",
-        sky: SkyNeed::Sun,
+        sky: SkyNeed::SunInView,
         reason: "a camera mounted by eye or by compass (magnetic declination) is off by degrees",
     },
     EffectRange {
@@ -91,7 +97,7 @@ pub const EFFECT_RANGES: &[EffectRange] = &[
         max: 15.0,
         signed: false,
         unit: "µs",
-        sky: SkyNeed::Sun,
+        sky: SkyNeed::SunInView,
         reason: "the MT9P031's shutter adds a fraction of a row time to every exposure",
     },
     EffectRange {
@@ -364,7 +370,7 @@ fn draw_case(index: usize, seed: u64, bucket: Bucket) -> BatteryCase {
     // captures every few minutes, and a logger clock offset or a passing cloud is only seen
     // at the captures where the sun's state differs between the two clocks.
     let hours = capture_hours(&site, utc_offset_s, &days);
-    BatteryCase {
+    let mut case = BatteryCase {
         index,
         seed,
         class,
@@ -376,8 +382,70 @@ fn draw_case(index: usize, seed: u64, bucket: Bucket) -> BatteryCase {
         hours,
         camera_azimuth_deg: facade_azimuth_deg,
         camera_altitude_deg: d.range(10.0, 25.0),
+    };
+    // Other dates until the camera sees the sun (the draws of a case that needs no redraw are
+    // unchanged, so its campaign is the same as before the rule).
+    if chosen.iter().any(|e| e.sky == SkyNeed::SunInView) {
+        for _ in 0..MAX_REDRAWS {
+            if case.sun_in_view_captures() >= MIN_SUN_IN_VIEW {
+                break;
+            }
+            case.days = draw_days(&mut d, &chosen);
+            case.hours = capture_hours(&case.site, case.utc_offset_s, &case.days);
+        }
+    }
+    case
+}
+
+/// Fewest captures of a day that is not overcast with the sun in the camera's field, for an
+/// effect that needs it ([`SkyNeed::SunInView`]).
+pub const MIN_SUN_IN_VIEW: usize = 3;
+
+/// Redraws of the dates before a case is kept as drawn.
+const MAX_REDRAWS: usize = 64;
+
+impl BatteryCase {
+    /// Captures of a day that is not overcast at which the sun is above 5° and inside the
+    /// declared camera's frame (5 % in from its edges).
+    pub fn sun_in_view_captures(&self) -> usize {
+        let mut device = skylux_hps::camera::DeviceConfig::default();
+        device.orientation.axis_azimuth_deg = self.camera_azimuth_deg;
+        device.orientation.axis_altitude_deg = self.camera_altitude_deg;
+        let camera = skylux_hps::camera::CameraModel::new(device);
+        let (w, h) = (f64::from(RAW_WIDTH_PX), f64::from(RAW_HEIGHT_PX));
+        let sun_site = SunSite {
+            latitude_deg: self.site.latitude_deg,
+            longitude_deg: self.site.longitude_deg,
+            elevation_m: self.site.elevation_m,
+        };
+        let mut count = 0;
+        for (date, sky) in &self.days {
+            if *sky == DaySky::Overcast {
+                continue;
+            }
+            for &hour in &self.hours {
+                let midnight = date.and_hms_opt(0, 0, 0).expect("midnight");
+                let local = midnight + chrono::Duration::seconds((hour * 3600.0).round() as i64);
+                let utc =
+                    (local - chrono::Duration::seconds(i64::from(self.utc_offset_s))).and_utc();
+                let Ok(sun) = solar_position(utc, &sun_site, None) else {
+                    continue;
+                };
+                let inside = camera.project(sun.direction()).is_some_and(|p| {
+                    (0.05 * w..0.95 * w).contains(&p.x_px) && (0.05 * h..0.95 * h).contains(&p.y_px)
+                });
+                if sun.altitude_deg() > 5.0 && inside {
+                    count += 1;
+                }
+            }
+        }
+        count
     }
 }
+
+/// The MT9P031's active array, pixels (hardware-facts: 2592 × 1944).
+const RAW_WIDTH_PX: u32 = 2592;
+const RAW_HEIGHT_PX: u32 = 1944;
 
 /// Two dates of a year and their skies: random, except as the effects need.
 fn draw_days(d: &mut Draw, chosen: &[&EffectRange]) -> Vec<(NaiveDate, DaySky)> {
@@ -399,7 +467,9 @@ fn draw_days(d: &mut Draw, chosen: &[&EffectRange]) -> Vec<(NaiveDate, DaySky)> 
         skies = [DaySky::Partly, DaySky::Partly];
     } else if needs.contains(&SkyNeed::Clear) {
         skies[0] = DaySky::Clear;
-    } else if needs.contains(&SkyNeed::Sun) && skies.iter().all(|s| *s == DaySky::Overcast) {
+    } else if (needs.contains(&SkyNeed::Sun) || needs.contains(&SkyNeed::SunInView))
+        && skies.iter().all(|s| *s == DaySky::Overcast)
+    {
         skies[0] = if d.unit() < 0.5 {
             DaySky::Clear
         } else {
@@ -610,6 +680,35 @@ mod tests {
         assert!((glass_transmissivity(0.65) - 0.708456).abs() < 2e-6);
     }
 
+    /// Every case of an effect seen only in the frames' sun shows the camera the sun.
+    #[test]
+    fn the_seed_18_battery_shows_the_sun_to_the_effects_seen_in_it() {
+        let cases = battery_campaigns(120, 18);
+        let needing: Vec<&BatteryCase> = cases
+            .iter()
+            .filter(|c| {
+                c.effects.iter().any(|(name, _)| {
+                    effect_range(name).is_some_and(|r| r.sky == SkyNeed::SunInView)
+                })
+            })
+            .collect();
+        assert!(needing.len() >= 20, "{} cases", needing.len());
+        for c in needing {
+            assert!(
+                c.sun_in_view_captures() >= MIN_SUN_IN_VIEW,
+                "#{} {}",
+                c.index,
+                c.class
+            );
+        }
+        // Campaign #71 (a shutter overhead) was drawn with the sun out of the camera's field
+        // all day (redrawn, so it is among the cases above); a case that needs no redraw is as
+        // it was (#70).
+        let dates =
+            |i: usize| -> Vec<String> { cases[i].days.iter().map(|d| d.0.to_string()).collect() };
+        assert_eq!(dates(70), ["2022-06-28", "2022-11-13"]);
+    }
+
     /// Deterministic per seed, the buckets as specified, every draw within its range, and
     /// every room a scene and sensors the loader reads, its glazing facing the façade.
     #[test]
@@ -648,6 +747,17 @@ mod tests {
             }
             if c.class.contains("spectral_mismatch") {
                 assert_eq!(kinds[0], DaySky::Clear);
+            }
+            if c.effects
+                .iter()
+                .any(|(name, _)| effect_range(name).is_some_and(|r| r.sky == SkyNeed::SunInView))
+            {
+                assert!(
+                    c.sun_in_view_captures() >= MIN_SUN_IN_VIEW,
+                    "case {} ({}): the camera never sees the sun",
+                    c.index,
+                    c.class
+                );
             }
             assert!((-45.0..=60.0).contains(&c.site.latitude_deg));
             assert!((-180.0..=180.0).contains(&c.site.longitude_deg));

@@ -90,9 +90,11 @@ fn a_clock_offset_with_dirty_glazing_are_both_found() {
     );
 }
 
-/// A 9 µs overhead saturates the sun in the 1 µs frame wherever it is high; where it is low
-/// enough to stay valid, it reads (1 + 9) / 1 = 10 times the pyranometer's beam: the overhead,
-/// with no lux-meter involved.
+/// A 9 µs overhead saturates the sun's core in every frame wherever it is high; the groups
+/// at the sun's edge, valid in the 1 µs and 26.6 µs frames both, read (26.6 + 9) / (1 + 9)
+/// apart instead of 26.6: the overhead, with no lux-meter involved. The hold-out error it
+/// causes, over that of the same world without it (the model's own against RADIANCE, some 2 %
+/// here), is at least halved: the loop need not absorb the model's error to show that.
 #[test]
 #[ignore = "long: the loop on a further campaign; CI runs its short form, scripts/long-tests all"]
 fn a_9_us_shutter_overhead_is_named_as_such_and_not_as_vignetting() {
@@ -103,9 +105,11 @@ fn a_9_us_shutter_overhead_is_named_as_such_and_not_as_vignetting() {
     assert!(!names.contains(&"vignetting"), "{names:?}");
     let t0 = parameter(&r, "shutter_overhead", "overhead_us");
     assert!((t0 - 9.0).abs() <= 1.0, "overhead {t0} µs for 9 µs");
+    let (_plain_dir, plain) = world(&[], false);
+    let floor = run(&plain, false).report.before.all;
     assert!(
-        r.after.all <= 0.5 * r.before.all,
-        "{:?} → {:?}",
+        r.after.all - floor <= 0.5 * (r.before.all - floor),
+        "{:?} → {:?}, without the overhead {floor}",
         r.before,
         r.after
     );

@@ -732,7 +732,9 @@ fn try_single(
     apply(prepared, &mut single, candidate.fitted.clone())?;
     let mut trial = Trial::of(model, &single, sets, &names, &selection.current_holdout);
     if candidate.effect.identified_without_luxmeters() {
-        trial.verdict = trial.verdict.confirming();
+        trial.verdict = trial
+            .verdict
+            .confirming(candidate.effect.measured_without_luxmeters());
     }
     trial.verdict = trial.verdict.bonferroni(tried);
     if trial.verdict.accepted {

@@ -31,14 +31,21 @@ pub trait LoopEffect: Sync {
         Stage::Greedy
     }
 
-    /// Whether the effect is identified, and its parameter measured, without the lux-meters
-    /// (the raw frames, the pyranometer): its false-discovery control is that evidence's own
-    /// threshold, and the hold-out set confirms it by a relevant fall without a significant
+    /// Whether the effect is identified without the lux-meters (the raw frames, the
+    /// pyranometer; its parameter measured there too, or, for the spectral mismatch, fitted on
+    /// the lux-meters): its false-discovery control is that evidence's own threshold, and the hold-out set confirms it by a relevant fall without a significant
     /// rise ([`crate::validation::scoring::Verdict::confirming`]) instead of testing it as a
     /// discovery. An overhead that shows at one capture in the hold-out set is then
     /// confirmed there, where no paired test over one unit could be.
     fn identified_without_luxmeters(&self) -> bool {
         false
+    }
+
+    /// Whether, identified without the lux-meters, its parameter is measured without them
+    /// too (the lux-meters then only have to not contradict it,
+    /// [`crate::validation::scoring::Verdict::confirming`]).
+    fn measured_without_luxmeters(&self) -> bool {
+        self.identified_without_luxmeters()
     }
 
     /// The effect's part in the joint linear fit, if it is one of the linear effects.

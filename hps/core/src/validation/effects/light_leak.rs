@@ -12,6 +12,13 @@ use std::collections::BTreeMap;
 
 const PARAMETER: &str = "lux_per_outdoor_lux";
 
+/// Least share of a lux-meter's reading the leak must make up (the median over the fit
+/// captures, at the sensor where it is largest) to be named: within 3 % it is inside the total
+/// error a class-L lux-meter is allowed (DIN 5032-7, hardware-facts S42) and cannot be told
+/// from the model's own. Seen on the seed-18 battery's campaign #10: a leak of 0.0003 lux/lux
+/// named after the two true effects, absorbing model noise at a 1.5 % hold-out error.
+const MIN_SHARE: f64 = 0.03;
+
 pub struct LightLeak;
 
 impl LoopEffect for LightLeak {
@@ -42,7 +49,7 @@ impl LoopEffect for LightLeak {
             return Ok(None);
         };
         let k = next.get(LIGHT_LEAK);
-        if k <= 0.0 {
+        if k <= 0.0 || largest_share(k, ctx) < MIN_SHARE {
             return Ok(None);
         }
         let mut parameters = BTreeMap::new();
@@ -63,4 +70,23 @@ impl LoopEffect for LightLeak {
     fn refresh(&self, state: &LoopState, parameters: &mut BTreeMap<String, f64>) {
         parameters.insert(PARAMETER.into(), state.get(LIGHT_LEAK));
     }
+}
+
+/// The leak `k`'s share of the measured illuminance, median over the fit captures, at the
+/// sensor where that median is largest.
+fn largest_share(k: f64, ctx: &FitContext<'_>) -> f64 {
+    let mut by_sensor: BTreeMap<usize, Vec<f64>> = BTreeMap::new();
+    for (t, sensor, m) in readings(ctx.state, ctx.terms, ctx.fit) {
+        by_sensor
+            .entry(sensor)
+            .or_default()
+            .push(k * t.outdoor_horizontal_lux / m);
+    }
+    by_sensor
+        .into_values()
+        .map(|mut v| {
+            v.sort_by(f64::total_cmp);
+            v[v.len() / 2]
+        })
+        .fold(0.0, f64::max)
 }
