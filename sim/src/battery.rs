@@ -23,7 +23,11 @@ pub enum SkyNeed {
     /// captures of a day that is not overcast: an effect seen only in the frames' sun (the
     /// shutter's overhead, the camera's orientation) acts on nothing where the camera never
     /// sees it (campaign #71 of the seed-18 battery: a 14 µs overhead, façade 169° at 15°N, the
-    /// sun north of the camera's field all day, hold-out 1.4 % with and without it).
+    /// sun north of the camera's field all day, hold-out 1.4 % with and without it). Extra
+    /// vignetting too: under overcast skies alone it dims the sky seen through the window
+    /// by a near-uniform few %, which a glazing factor matches (campaign #11: 0.39 beside a
+    /// glazing of 0.74 on two overcast days, fitted as a glazing of 0.78 and a vignetting of
+    /// 0.06); the sun crossing the field at different off-axis angles tells them apart.
     SunInView,
     /// A clear first day (the colour of a clear sky against the other day's).
     Clear,
@@ -124,7 +128,7 @@ pub const EFFECT_RANGES: &[EffectRange] = &[
         max: 0.5,
         signed: false,
         unit: "",
-        sky: SkyNeed::Any,
+        sky: SkyNeed::SunInView,
         reason: "a fisheye's relative illumination miscalibrated or changed by a dome",
     },
     EffectRange {

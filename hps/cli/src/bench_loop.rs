@@ -522,7 +522,10 @@ fn shortfalls(r: &CaseResult) -> Vec<String> {
     );
     if !r.truth.is_empty() && !r.halved() {
         let floor = r.floor.map_or(String::new(), |f| {
-            format!(" (its part over the {:.1} % without the effects)", 100.0 * f)
+            format!(
+                " (its part over the {:.1} % without the effects)",
+                100.0 * f
+            )
         });
         out.push(format!(
             "{id}: hold-out {:.1} % -> {:.1} %, not halved{floor}",
@@ -1014,7 +1017,11 @@ mod tests {
         (floored.before, floored.after) = (0.04, 0.025);
         assert!(shortfalls(&floored).join("; ").contains("not halved"));
         floored.floor = Some(0.02);
-        assert!(shortfalls(&floored).is_empty(), "{:?}", shortfalls(&floored));
+        assert!(
+            shortfalls(&floored).is_empty(),
+            "{:?}",
+            shortfalls(&floored)
+        );
         floored.floor = Some(0.005);
         assert!(shortfalls(&floored)[0].contains("over the 0.5 % without"));
     }

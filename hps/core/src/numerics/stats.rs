@@ -45,6 +45,20 @@ pub fn pearson(xy: &[(f64, f64)]) -> Option<Pearson> {
     })
 }
 
+/// Median and the standard error of the median (1.2533 σ/√n, σ from the MAD × 1.4826: the
+/// normal-consistent constants); sorts `v`. NaN for an empty `v`.
+pub fn median_and_standard_error(v: &mut [f64]) -> (f64, f64) {
+    if v.is_empty() {
+        return (f64::NAN, f64::NAN);
+    }
+    v.sort_by(f64::total_cmp);
+    let med = v[v.len() / 2];
+    let mut dev: Vec<f64> = v.iter().map(|x| (x - med).abs()).collect();
+    dev.sort_by(f64::total_cmp);
+    let sigma = 1.4826 * dev[dev.len() / 2];
+    (med, 1.2533 * sigma / (v.len() as f64).sqrt())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

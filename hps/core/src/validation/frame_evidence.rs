@@ -92,17 +92,6 @@ fn ratios(short: &RawFrame, long: &RawFrame, gains: (f64, f64), device: &DeviceC
     all.into_iter().step_by(stride).collect()
 }
 
-/// Median and the standard error of the median (1.2533 σ/√n, σ from the MAD × 1.4826: the
-/// normal-consistent constants).
-fn median_and_error(v: &mut [f64]) -> (f64, f64) {
-    v.sort_by(f64::total_cmp);
-    let med = v[v.len() / 2];
-    let mut dev: Vec<f64> = v.iter().map(|x| (x - med).abs()).collect();
-    dev.sort_by(f64::total_cmp);
-    let sigma = 1.4826 * dev[dev.len() / 2];
-    (med, 1.2533 * sigma / (v.len() as f64).sqrt())
-}
-
 /// Estimates the shutter overhead from the frames of the captures `which` (indices into the
 /// campaign's captures) with the declared camera. `None` where no pair of exposures shares
 /// enough valid pixels.
@@ -148,7 +137,7 @@ pub fn shutter_overhead(
         if v.len() < MIN_PIXELS {
             continue;
         }
-        let (r, r_noise) = median_and_error(&mut v);
+        let (r, r_noise) = crate::numerics::stats::median_and_standard_error(&mut v);
         let r_err = r_noise.hypot(RATIO_SYSTEMATIC * r);
         if r.is_nan() || r <= 1.0 || r_err <= 0.0 {
             continue;

@@ -14,7 +14,7 @@
 
 use super::diagnostics::{residual_rows, Diagnostic, DiagnosticInputs, IlluminanceRow};
 use super::effects::fit::fit_error;
-use super::effects::{registry, FitContext, Fitted, LoopEffect, Stage};
+use super::effects::{registry, FitContext, Fitted, Found, LoopEffect, Stage};
 use super::glazing::{AngularGlazing, Glazing, GlazingError};
 use super::perez_baseline::perez_predictions;
 use super::prediction::{predict, LoopState, CLOCK_OFFSET_S};
@@ -503,8 +503,9 @@ fn ranked_candidates(
     }
     candidates.sort_by(|a, b| {
         b.fitted
-            .identified_apart
-            .cmp(&a.fitted.identified_apart)
+            .found
+            .apart()
+            .cmp(&a.fitted.found.apart())
             .then(a.fitted.fit_error.total_cmp(&b.fitted.fit_error))
     });
     if std::env::var_os("SKYLUX_DEBUG_LOOP").is_some() {
@@ -515,7 +516,7 @@ fn ranked_candidates(
                     "{} {:.4}{} {:?}",
                     c.effect.name(),
                     c.fitted.fit_error,
-                    if c.fitted.identified_apart {
+                    if c.fitted.found.apart() {
                         " (apart)"
                     } else {
                         ""
@@ -661,7 +662,7 @@ fn select_effects(
         };
         let best_fit = best.fitted.fit_error;
         // An effect the frames identified needs no fit-set gain (the lux-meters only confirm).
-        let needs_fit_gain = !best.effect.identified_without_luxmeters();
+        let needs_fit_gain = !best.fitted.found.without_luxmeters();
         if best_fit.is_nan() || (needs_fit_gain && best_fit >= base_fit - MIN_FIT_GAIN) {
             selection.notes.push(format!(
                 "no remaining effect lowers the fit-set error by more than 0.2 % (best: {} from \
@@ -694,7 +695,7 @@ fn select_effects(
         }
         let mut added = false;
         for (k, candidate) in candidates.iter().enumerate().take(PAIR_CANDIDATES).skip(1) {
-            if !candidate.effect.identified_without_luxmeters()
+            if !candidate.fitted.found.without_luxmeters()
                 && candidate.fitted.fit_error >= base_fit - MIN_FIT_GAIN
             {
                 continue;
@@ -731,10 +732,10 @@ fn try_single(
     let mut single = model.clone();
     apply(prepared, &mut single, candidate.fitted.clone())?;
     let mut trial = Trial::of(model, &single, sets, &names, &selection.current_holdout);
-    if candidate.effect.identified_without_luxmeters() {
+    if candidate.fitted.found.without_luxmeters() {
         trial.verdict = trial
             .verdict
-            .confirming(candidate.effect.measured_without_luxmeters());
+            .confirming(candidate.fitted.found == Found::FramesMeasured);
     }
     trial.verdict = trial.verdict.bonferroni(tried);
     if trial.verdict.accepted {
@@ -810,7 +811,7 @@ fn try_pair(
         // A first member identified apart (a nuisance such as the clock offset, which changes
         // which readings are compared) is paired with every other effect, refitted given it:
         // fitted without it, the other effect absorbs the nuisance's error and ranks low.
-        let seconds = if first.fitted.identified_apart {
+        let seconds = if first.fitted.found.apart() {
             candidates
         } else {
             top

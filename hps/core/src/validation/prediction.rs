@@ -38,6 +38,13 @@ pub const SPECTRAL_SLOPE: Param = Param {
     default: 0.0,
 };
 
+/// 1 where the frames measured the unseen ground's reflectance (`ground_reflectance`): the
+/// joint linear fit then holds it rather than refit it on the lux-meters.
+pub const GROUND_FROM_FRAMES: Param = Param {
+    key: "ground_reflectance.from_frames",
+    default: 0.0,
+};
+
 /// The colour index of the calibration source: the simulator's frames, and a device balanced
 /// under its calibration source, give 1 for it.
 pub const REFERENCE_INDEX: f64 = 1.0;

@@ -41,7 +41,9 @@ impl LoopEffect for ClockOffset {
         let mut parameters = BTreeMap::new();
         parameters.insert(PARAMETER.into(), found.state.get(CLOCK_OFFSET_S));
         let mut fitted = scored(ctx, found.state, parameters, found.evidence, None);
-        fitted.identified_apart = found.clear;
+        if found.clear {
+            fitted.found = super::Found::Series;
+        }
         Ok(Some(fitted))
     }
 

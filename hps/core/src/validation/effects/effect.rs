@@ -31,23 +31,6 @@ pub trait LoopEffect: Sync {
         Stage::Greedy
     }
 
-    /// Whether the effect is identified without the lux-meters (the raw frames, the
-    /// pyranometer; its parameter measured there too, or, for the spectral mismatch, fitted on
-    /// the lux-meters): its false-discovery control is that evidence's own threshold, and the hold-out set confirms it by a relevant fall without a significant
-    /// rise ([`crate::validation::scoring::Verdict::confirming`]) instead of testing it as a
-    /// discovery. An overhead that shows at one capture in the hold-out set is then
-    /// confirmed there, where no paired test over one unit could be.
-    fn identified_without_luxmeters(&self) -> bool {
-        false
-    }
-
-    /// Whether, identified without the lux-meters, its parameter is measured without them
-    /// too (the lux-meters then only have to not contradict it,
-    /// [`crate::validation::scoring::Verdict::confirming`]).
-    fn measured_without_luxmeters(&self) -> bool {
-        self.identified_without_luxmeters()
-    }
-
     /// The effect's part in the joint linear fit, if it is one of the linear effects.
     fn linear(&self) -> Option<Linear> {
         None
@@ -128,9 +111,40 @@ pub struct Fitted {
     pub captures: Option<Vec<CaptureData>>,
     /// A new camera, for an effect on its geometry.
     pub device: Option<DeviceConfig>,
-    /// The effect was identified by evidence that does not rank against the other effects'
-    /// fit-set error: the raw frames alone (the shutter's overhead), or the logger's own
-    /// series under a free common factor (the clock offset, a nuisance that changes which
-    /// readings are compared). The loop tries it first; the hold-out set confirms it.
-    pub identified_apart: bool,
+    /// What identified it, which decides where it ranks and how the hold-out set judges it.
+    pub found: Found,
+}
+
+/// What identified a fitted candidate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Found {
+    /// The lux-meters' residual on the fit set: ranked by fit-set error and tested on the
+    /// hold-out set as a discovery.
+    Residual,
+    /// The logger's own series under a free common factor (the clock offset, a nuisance that
+    /// changes which readings are compared): tried first, tested as a discovery.
+    Series,
+    /// The raw frames, without the lux-meters, its parameter then fitted on them (the
+    /// spectral mismatch: the frames show the skies' colours, the lux-meters the slope):
+    /// tried first, confirmed by a relevant fall
+    /// ([`crate::validation::scoring::Verdict::confirming`]).
+    FramesIdentified,
+    /// The raw frames (and the pyranometer), parameter included (the shutter's overhead, the
+    /// baffle's field, the seen ground's reflectance): tried first, confirmed unless the
+    /// hold-out set contradicts it. Its false-discovery control is that evidence's own
+    /// threshold; it needs no fit-set gain to be tried.
+    FramesMeasured,
+}
+
+impl Found {
+    /// Tried before the candidates ranked by fit-set error.
+    pub fn apart(self) -> bool {
+        self != Found::Residual
+    }
+
+    /// Identified without the lux-meters, so the hold-out set confirms it rather than tests
+    /// it.
+    pub fn without_luxmeters(self) -> bool {
+        matches!(self, Found::FramesIdentified | Found::FramesMeasured)
+    }
 }

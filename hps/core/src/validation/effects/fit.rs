@@ -1,9 +1,10 @@
 //! What the effects' fits share: the fit set's readings and errors under a model, the
 //! residual signature's points, the joint fit of the linear effects, and 1-D searches.
 
-use super::{FitContext, Fitted, Linear, LoopEffect};
+use super::{FitContext, Fitted, Found, Linear, LoopEffect};
 use crate::validation::prediction::{
-    parts, predict, LoopState, CLOCK_OFFSET_S, GLAZING_TRANSMITTANCE, LIGHT_LEAK,
+    parts, predict, LoopState, CLOCK_OFFSET_S, GLAZING_TRANSMITTANCE, GROUND_FROM_FRAMES,
+    LIGHT_LEAK,
 };
 use crate::validation::sample::Sample;
 use crate::validation::split::FitSet;
@@ -28,7 +29,7 @@ pub fn scored(
         terms,
         captures: None,
         device: None,
-        identified_apart: false,
+        found: Found::Residual,
     }
 }
 
@@ -93,7 +94,8 @@ impl FreeLinear {
 
 /// Jointly fits the free linear parameters (glazing τ, unseen-ground ρ through u = τ and
 /// v = τρ, leak k) on the fit set, minimising Σ (prediction / measurement − 1)²; the others
-/// keep their values in `state`. Returns the new state, or `None` if the fit set cannot
+/// keep their values in `state`, as does a ground reflectance the frames measured
+/// ([`GROUND_FROM_FRAMES`]). Returns the new state, or `None` if the fit set cannot
 /// determine them.
 pub fn fit_linear(
     state: &LoopState,
@@ -101,6 +103,13 @@ pub fn fit_linear(
     terms: &[Terms],
     fit: &FitSet<Sample>,
 ) -> Option<LoopState> {
+    let free = FreeLinear {
+        ground: free.ground && state.get(GROUND_FROM_FRAMES) == 0.0,
+        ..free
+    };
+    if !free.any() {
+        return Some(state.clone());
+    }
     let offset = state.get(CLOCK_OFFSET_S);
     let (tau, rho, leak) = (
         state.get(GLAZING_TRANSMITTANCE),

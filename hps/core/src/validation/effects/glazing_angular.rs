@@ -19,7 +19,7 @@
 //! room); with several, the loop does not try the effect.
 
 use super::fit::{finite_or_worst, fit_error, fit_linear, FreeLinear};
-use super::{FitContext, Fitted, LoopEffect};
+use super::{FitContext, Fitted, Found, LoopEffect};
 use crate::model::ModelError;
 use crate::validation::diagnostics::Variable;
 use crate::validation::glazing::{AngularGlazing, GLAZING_ANGULAR_B0};
@@ -186,6 +186,6 @@ fn fit_glazing_angular(
         terms: Some(terms),
         captures: None,
         device: None,
-        identified_apart: false,
+        found: Found::Residual,
     })
 }

@@ -13,7 +13,7 @@
 pub mod effect;
 pub mod fit;
 
-pub use effect::{FitContext, Fitted, Linear, LoopEffect, Stage};
+pub use effect::{FitContext, Fitted, Found, Linear, LoopEffect, Stage};
 
 /// Declares each effect's module (`NAME.rs` beside this file) and lists its effect in
 /// [`registry::EFFECTS`], in order: one line per effect.

@@ -4,7 +4,7 @@
 //! Model: the orientation refitted to the sightings, and every capture's terms recomputed.
 
 use super::fit::fit_error;
-use super::{FitContext, Fitted, LoopEffect, Stage};
+use super::{FitContext, Fitted, Found, LoopEffect, Stage};
 use crate::camera::{CameraModel, DeviceConfig, ImagePoint};
 use crate::model::{capture_terms, CaptureData, ModelError};
 use crate::validation::diagnostics::Variable;
@@ -51,7 +51,7 @@ impl LoopEffect for OrientationError {
             terms: Some(terms),
             captures: None,
             device: Some(device),
-            identified_apart: false,
+            found: Found::Residual,
         }))
     }
 }

@@ -8,7 +8,7 @@
 //! µs against a 1 µs shortest exposure), the map cannot give the sun: it is taken from the
 //! pyranometer's direct-normal illuminance as a concentrated source.
 
-use super::{FitContext, Fitted, LoopEffect};
+use super::{FitContext, Fitted, Found, LoopEffect};
 use crate::camera::{CameraModel, DeviceConfig};
 use crate::hdr::{map_capture, CaptureMap, GroupGeometry, MapFlag};
 use crate::model::{capture_terms, load_captures_with, CaptureData, ModelError};
@@ -29,10 +29,6 @@ impl LoopEffect for ShutterOverhead {
 
     fn aliases(&self) -> &'static [&'static str] {
         &["shutter_overhead_us"]
-    }
-
-    fn identified_without_luxmeters(&self) -> bool {
-        true
     }
 
     fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
@@ -71,7 +67,7 @@ impl LoopEffect for ShutterOverhead {
             terms: Some(terms),
             captures: Some(captures),
             device: None,
-            identified_apart: true,
+            found: Found::FramesMeasured,
         }))
     }
 }

@@ -20,7 +20,7 @@
 use super::fit::{
     finite_or_worst, fit_error, minimise_1d, pearson_r, residual_points, residuals_where, scored,
 };
-use super::{FitContext, Fitted, LoopEffect};
+use super::{FitContext, Fitted, Found, LoopEffect};
 use crate::model::ModelError;
 use crate::validation::diagnostics::Variable;
 use crate::validation::sky_geometry::{correct_terms, MIN_CLIPPED_DEG, UNSEEN_SKY_FACTOR};
@@ -40,9 +40,6 @@ impl LoopEffect for SkyOutsideFov {
 
     /// The maps show the clipped field ([`crate::validation::sky_geometry::SkyGeometry::median_shown_fov_deg`]):
     /// no lux-meter is needed to see a baffle.
-    fn identified_without_luxmeters(&self) -> bool {
-        true
-    }
 
     fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
         Some((
@@ -121,6 +118,6 @@ fn fit_unseen_sky(ctx: &FitContext<'_>) -> Option<Fitted> {
     );
     let terms = correct_terms(raw, dc, geometry, &next);
     let mut fitted = scored(ctx, next, parameters, evidence, Some(terms));
-    fitted.identified_apart = true;
+    fitted.found = Found::FramesMeasured;
     Some(fitted)
 }

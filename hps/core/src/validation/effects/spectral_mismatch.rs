@@ -30,7 +30,7 @@
 //! ([`crate::validation::prediction::corrected_room`]).
 
 use super::fit::{finite_or_worst, fit_error, fit_linear, pearson_r, residual_points, FreeLinear};
-use super::{FitContext, Fitted, LoopEffect};
+use super::{FitContext, Fitted, Found, LoopEffect};
 use crate::model::ModelError;
 use crate::validation::diagnostics::Variable;
 use crate::validation::prediction::{LoopState, REFERENCE_INDEX, SPECTRAL_SLOPE};
@@ -58,14 +58,6 @@ impl LoopEffect for SpectralMismatch {
         &["spectral_clear_sky_cct_k"]
     }
 
-    fn identified_without_luxmeters(&self) -> bool {
-        true
-    }
-
-    fn measured_without_luxmeters(&self) -> bool {
-        false
-    }
-
     fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
         Some(("sky colour index (blue / red from the raw frames)", |d| {
             d.sky_colour_index
@@ -79,7 +71,7 @@ impl LoopEffect for SpectralMismatch {
             return Ok(None);
         };
         let mut fitted = super::fit::scored(ctx, next, parameters, evidence, None);
-        fitted.identified_apart = true;
+        fitted.found = Found::FramesIdentified;
         Ok(Some(fitted))
     }
 
