@@ -73,7 +73,11 @@ fn ground_reflectance() {
     let e = effect(&r, "ground_reflectance");
     let rho = e.parameters["reflectance"];
     // Measured where the frames see the ground (π L / E), within the battery's tolerance.
-    assert!(e.evidence.contains("frames see the ground"), "{}", e.evidence);
+    assert!(
+        e.evidence.contains("frames see the ground"),
+        "{}",
+        e.evidence
+    );
     assert!((rho - 0.6).abs() < 0.1, "{rho}");
     assert_improved(&r);
 }

@@ -113,7 +113,7 @@ fn seen_ground(ctx: &FitContext<'_>) -> Option<SeenGround> {
             .copied()
             .flatten()
             .unwrap_or(t.model.outdoor_horizontal_lux);
-        if seen.is_empty() || !(outdoor_lux > 0.0) {
+        if seen.is_empty() || outdoor_lux.is_nan() || outdoor_lux <= 0.0 {
             continue;
         }
         let mean_cd_m2 = seen.iter().sum::<f64>() / seen.len() as f64;

@@ -38,9 +38,6 @@ impl LoopEffect for SkyOutsideFov {
         &["fov_limit_deg"]
     }
 
-    /// The maps show the clipped field ([`crate::validation::sky_geometry::SkyGeometry::median_shown_fov_deg`]):
-    /// no lux-meter is needed to see a baffle.
-
     fn revealing_variable(&self) -> Option<(&'static str, Variable)> {
         Some((
             "unseen sky fraction of the daylight-coefficient weight",
@@ -118,6 +115,8 @@ fn fit_unseen_sky(ctx: &FitContext<'_>) -> Option<Fitted> {
     );
     let terms = correct_terms(raw, dc, geometry, &next);
     let mut fitted = scored(ctx, next, parameters, evidence, Some(terms));
+    // The maps show the clipped field (`SkyGeometry::median_shown_fov_deg`): no lux-meter is
+    // needed to see a baffle.
     fitted.found = Found::FramesMeasured;
     Some(fitted)
 }
