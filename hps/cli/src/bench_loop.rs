@@ -23,6 +23,7 @@ use skylux_hps::campaign::Campaign;
 use skylux_hps::validation::effects::registry;
 use skylux_hps::validation::illuminance_loop::LoopOptions;
 use skylux_hps::validation::report::Report;
+use skylux_hps::validation::scoring::MIN_RELATIVE_GAIN;
 use skylux_sim::battery::{battery_campaigns, BatteryCase, EFFECT_RANGES};
 use skylux_sim::campaign::{simulate_campaign, TruthSource};
 use skylux_sim::sky_colour::MismatchLine;
@@ -539,12 +540,15 @@ fn shortfalls(r: &CaseResult) -> Vec<String> {
 impl CaseResult {
     /// Issue 18's "hold-out error after ≤ half of before where an effect acts": halved
     /// outright, or the effects' part of it, over the [`CaseResult::floor`] of the twin
-    /// without them (false when a figure is NaN).
+    /// without them; or the effects do not act on the hold-out set, raising its error over
+    /// the floor by less than the loop's own relevance, [`MIN_RELATIVE_GAIN`] of it (a baffle
+    /// whose clipped sky the model's fill restores: 1.59 % without it, 1.66 % with it, in
+    /// campaign #110). False when a figure is NaN.
     fn halved(&self) -> bool {
         self.after <= 0.5 * self.before
-            || self
-                .floor
-                .is_some_and(|f| self.after - f <= 0.5 * (self.before - f))
+            || self.floor.is_some_and(|f| {
+                self.after - f <= 0.5 * (self.before - f) || self.before - f < MIN_RELATIVE_GAIN * f
+            })
     }
 }
 
@@ -617,7 +621,12 @@ fn simulated_campaign(
     data_dir: Option<PathBuf>,
 ) -> anyhow::Result<Campaign> {
     let kept = dir.join(name);
-    if args.reuse && kept.join("campaign.toml").is_file() {
+    // A campaign is kept whole once its simulation returned (the marker), or once the loop
+    // ran on it (kept before the marker existed); one cut short by a stopped run is simulated
+    // again.
+    let whole = kept.join(SIMULATED_MARKER).is_file()
+        || (name == "campaign" && dir.join("loop/report.json").is_file());
+    if args.reuse && whole && kept.join("campaign.toml").is_file() {
         return Ok(Campaign::open(&kept)?);
     }
     let room = dir.join(if name == "campaign" {
@@ -629,9 +638,17 @@ fn simulated_campaign(
     let mut spec = case.spec(room)?;
     spec.truth = args.truth;
     spec.spectral_data_dir = data_dir;
+    if kept.exists() {
+        // What a stopped run left: captures of another draw must not mix with this one's.
+        std::fs::remove_dir_all(&kept)?;
+    }
     simulate_campaign(&kept, &spec, &|_, _| {})?;
+    std::fs::write(kept.join(SIMULATED_MARKER), "")?;
     Ok(Campaign::open(&kept)?)
 }
+
+/// The file a kept campaign's folder holds once its simulation is complete.
+const SIMULATED_MARKER: &str = ".simulated";
 
 /// The hold-out error of the declared model (no effect fitted) on the case's twin: the same
 /// draw without its effects, simulated into `dir/twin`.
@@ -1024,6 +1041,13 @@ mod tests {
         );
         floored.floor = Some(0.005);
         assert!(shortfalls(&floored)[0].contains("over the 0.5 % without"));
+        // Effects that do not act on the hold-out set: nothing to halve.
+        (floored.before, floored.after, floored.floor) = (0.0166, 0.0167, Some(0.0159));
+        assert!(
+            shortfalls(&floored).is_empty(),
+            "{:?}",
+            shortfalls(&floored)
+        );
     }
 
     #[test]
