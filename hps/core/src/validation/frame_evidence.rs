@@ -27,9 +27,10 @@ use crate::model::ModelError;
 /// Fewest pixels valid in both exposures for a pair to count. The short pairs overlap only
 /// at the sun's edge, where a group covered by part of the disc reads between the two
 /// frames' ranges: a handful of pixels per capture in sun (20 over campaign #70 of the
-/// seed-18 battery, 40 over #72), each of which moves the ratio by tens of % per µs, so a
-/// few are evidence; the median's standard error (from the MAD) says how much.
-const MIN_PIXELS: usize = 8;
+/// seed-18 battery, 40 over #72, 4 over #74's two captures in sun), each of which moves the
+/// ratio by tens of % per µs, so a few are evidence; the median's standard error (from the
+/// MAD) says how much.
+const MIN_PIXELS: usize = 4;
 
 /// Pixels must read at least this many DN above black in the shorter exposure: well above
 /// the read noise (2 DN in the simulated sensor), so the ratio's noise stays a few %.
