@@ -63,10 +63,11 @@ impl Verdict {
     /// significant rise, and
     /// - where its parameter was measured apart too (`measured_apart`: the shutter's overhead
     ///   from the frames' ratios, the baffle's field from the maps), the hold-out error does
-    ///   not rise by [`NEUTRAL_CHANGE`] of itself or more: the lux-meters only have to not
-    ///   contradict it (a 55° baffle moved one hold-out capture of campaign #110 of the seed-18
-    ///   battery and the error by −0.6 % of itself: nothing the lux-meters can tell, while the
-    ///   maps measured the field within 0.3°);
+    ///   not rise by [`NEUTRAL_CHANGE`] of itself or more, or no hold-out capture moves by
+    ///   [`ACTING_CHANGE`] (nor the error by as many points): the lux-meters only have to not contradict it (a 55° baffle moved
+    ///   one hold-out capture of campaign #110 of the seed-18 battery and the error by −0.6 %
+    ///   of itself, a 54° one in #118 none by 0.5 % and a 1.3 % error by −7 % of itself:
+    ///   nothing the lux-meters can tell, while the maps measured the fields within 0.3°);
     /// - where the lux-meters gave its parameter (the spectral mismatch's slope), the error
     ///   falls relevantly (by [`MIN_RELATIVE_GAIN`] of itself), unless the effect moves no
     ///   hold-out reading at all (no acting unit).
@@ -75,7 +76,7 @@ impl Verdict {
     pub fn confirming(self, measured_apart: bool) -> Self {
         let invisible_to_luxmeters = self.units == 0 && self.gain.abs() < 1e-4;
         let confirmed = if measured_apart {
-            self.relative_gain > -NEUTRAL_CHANGE
+            (self.units == 0 && self.gain > -ACTING_CHANGE) || self.relative_gain > -NEUTRAL_CHANGE
         } else {
             invisible_to_luxmeters || (self.gain > 0.0 && self.relative_gain >= MIN_RELATIVE_GAIN)
         };
@@ -460,6 +461,10 @@ mod tests {
         assert!(unchanged.confirming(true).accepted, "{unchanged:?}");
         let worse = judge(&[-0.01], 0.0166, 0.018);
         assert!(!worse.confirming(true).accepted);
+        // No capture moved by 0.5 %: the lux-meters cannot tell, whatever the figure did.
+        let unmoved = judge(&[], 0.0130, 0.0138);
+        assert!(unmoved.confirming(true).accepted, "{unmoved:?}");
+        assert!(!unmoved.confirming(false).accepted);
     }
 
     /// Captures of `readings` readings: residual r, candidate change δ (so e = r − δ).
