@@ -84,9 +84,6 @@ fn largest_share(k: f64, ctx: &FitContext<'_>) -> f64 {
     }
     by_sensor
         .into_values()
-        .map(|mut v| {
-            v.sort_by(f64::total_cmp);
-            v[v.len() / 2]
-        })
+        .map(|mut v| crate::numerics::stats::median_and_standard_error(&mut v).0)
         .fold(0.0, f64::max)
 }

@@ -250,3 +250,26 @@ fn from_sun_track(ctx: &FitContext<'_>, track: SunTrack) -> Fitted {
     fitted.found = Found::FramesMeasured;
     fitted
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Campaign #30's partly cloudy sightings: three on the line at 1.00 and one sun the
+    /// pyranometer saw otherwise (0.91), which alone made a vignetting of 0.45: set aside. A
+    /// clean track (#11's, a 0.39 vignetting) is kept whole.
+    #[test]
+    fn a_sighting_off_the_track_is_set_aside_and_a_clean_track_kept() {
+        let cloudy = vec![(0.05, 1.000), (0.10, 1.002), (0.20, 0.909), (0.15, 1.002)];
+        let kept = inliers(cloudy);
+        assert_eq!(kept.len(), 3, "{kept:?}");
+        assert!(kept.iter().all(|p| p.1 > 0.99));
+        let clean = vec![
+            (0.0808, 0.9681),
+            (0.0754, 0.9690),
+            (0.1157, 0.9496),
+            (0.2016, 0.9198),
+        ];
+        assert_eq!(inliers(clean.clone()), clean);
+    }
+}
