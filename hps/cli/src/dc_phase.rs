@@ -7,7 +7,7 @@ use anyhow::Context;
 use glam::DVec3;
 use skylux_hps::bsdf::{Band, KlemsTransmission};
 use skylux_hps::engine::phase::{
-    daylight_matrix, three_phase, view_matrix, KlemsWindow, WindowStates,
+    daylight_matrix, three_phase, view_matrices, KlemsWindow, WindowStates,
 };
 use skylux_hps::engine::{Settings, World};
 use skylux_hps::io::radiance_matrix::{MatrixFormat, RadianceMatrix};
@@ -47,7 +47,9 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
         bar.set_length(n);
         bar.set_position(d);
     };
-    let v = view_matrix(&room, &sensors, &window, &settings, &progress)?;
+    // V_d from V's own paths: the five-phase's difference V T D s_sun − V_d T D_d s_sun then
+    // keeps no noise of the direct part.
+    let (v, v_direct) = view_matrices(&room, &sensors, &window, &settings, &progress)?;
     let d_settings = Settings {
         ambient_bounces: args.d_ab,
         samples_per_sensor: args.d_samples,
@@ -90,13 +92,7 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
         ),
     )?;
     if args.direct {
-        write_direct_matrices(
-            args,
-            (&room, &outside),
-            &sensors,
-            &window,
-            (settings, d_settings),
-        )?;
+        write_direct_matrices(args, &outside, &window, &v_direct, d_settings)?;
     }
     println!(
         "V {}x{}, T {}x{}, D {}x{} -> {}",
@@ -114,27 +110,18 @@ pub fn run(args: &DcArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// The five-phase's direct matrices: vd.mtx (V at -ab 1, the sensors' direct view of the
-/// window) and dd.mtx (D at -ab 0, the window's direct view of the sky).
+/// The five-phase's direct matrices: vd.mtx (the sensors' direct view of the window, from
+/// V's paths' first segments: `-ab 1`'s) and dd.mtx (D at -ab 0, the window's direct view
+/// of the sky).
 fn write_direct_matrices(
     args: &DcArgs,
-    (room, outside): (&World, &World),
-    sensors: &[scene::Sensor],
+    outside: &World,
     window: &KlemsWindow,
-    (settings, d_settings): (Settings, Settings),
+    v_direct: &RadianceMatrix,
+    d_settings: Settings,
 ) -> anyhow::Result<()> {
     let write =
         |m: &RadianceMatrix, name: &str, what: String| write_matrix(&args.out, m, name, what);
-    let v_direct = view_matrix(
-        room,
-        sensors,
-        window,
-        &Settings {
-            ambient_bounces: 1,
-            ..settings
-        },
-        &|_, _| {},
-    )?;
     let d_direct = daylight_matrix(
         outside,
         window,
@@ -146,10 +133,10 @@ fn write_direct_matrices(
         &|_, _| {},
     )?;
     write(
-        &v_direct,
+        v_direct,
         "vd.mtx",
         format!(
-            "skylux dc --three-phase --direct: V_d (-ab 1), {} paths",
+            "skylux dc --three-phase --direct: V_d (-ab 1, V's first segments), {} paths",
             args.ad
         ),
     )?;

@@ -131,6 +131,14 @@ impl Bsdf {
         })
     }
 
+    /// Whether any part is a tensor tree (data finer than a Klems basis).
+    pub fn has_tensor_tree(&self) -> bool {
+        self.parts
+            .iter()
+            .flatten()
+            .any(|p| matches!(p, Part::Tree(_)))
+    }
+
     pub fn part_present(&self, side: Side) -> bool {
         self.parts[side_index(side)].is_some()
     }

@@ -228,6 +228,12 @@ impl Scene {
         &self.surfaces
     }
 
+    /// Keeps the surfaces for which `keep` holds (the matrix methods take a window's glazing
+    /// out of the room: the window is their receiver).
+    pub fn retain_surfaces(&mut self, keep: impl FnMut(&Surface) -> bool) {
+        self.surfaces.retain(keep);
+    }
+
     /// The modifier an id refers to (`None` only for an id from another scene).
     pub fn modifier(&self, id: ModifierId) -> Option<&Modifier> {
         self.modifiers.get(id.index())

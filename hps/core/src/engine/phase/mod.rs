@@ -11,12 +11,17 @@
 //! - [`three_phase`]: V T D s, and a window state switch (one product per state).
 //! - [`five_phase`]: the sun's direct part replaced by the sun at its actual direction
 //!   through the window at full resolution.
+//! - [`shading_states`]: a window declared with several states (each a BSDF), every state
+//!   under every sky from the room's matrices traced once.
+//! - [`scene_sky`]: a scene's sky (gensky, gendaylit) as a sky vector and its suns.
 //!
 //! Matrices are [`RadianceMatrix`] values, written in RADIANCE's matrix format so that
 //! `dctimestep` and `rmtxop` read them, and read from theirs.
 
 pub mod daylight;
 pub mod five_phase;
+pub mod scene_sky;
+pub mod shading_states;
 pub mod three_phase;
 pub mod view;
 pub mod window;
@@ -24,8 +29,10 @@ pub mod window;
 pub use crate::io::radiance_matrix::RadianceMatrix;
 pub use daylight::daylight_matrix;
 pub use five_phase::{five_phase, sky_vector_from_luminance, sun_sky_vector, PhaseMatrices};
+pub use scene_sky::{sky_vector_of_world, SunBeam};
+pub use shading_states::{remove_glazing, ShadedWindow, ShadingState, StateMatrices, SunView};
 pub use three_phase::{three_phase, WindowStates};
-pub use view::view_matrix;
+pub use view::{view_matrices, view_matrix};
 pub use window::{KlemsWindow, WindowError};
 
 /// Paths per random stream (as in `illuminance`, so results do not depend on thread count).

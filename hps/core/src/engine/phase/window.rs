@@ -140,6 +140,43 @@ impl KlemsWindow {
         l.x * self.x + l.y * self.y + l.z * self.normal
     }
 
+    /// A world direction in the window's frame (x, y, z = the front normal, into the room):
+    /// the frame of the window's BSDF too (RADIANCE `SDcompXform` with the same up vector).
+    pub fn to_local(&self, v: DVec3) -> DVec3 {
+        DVec3::new(v.dot(self.x), v.dot(self.y), v.dot(self.normal))
+    }
+
+    /// `n` × `n` points over the window, one per cell of a grid of `u` (stratified in area):
+    /// each stands for area / n² of the window.
+    pub fn grid_points(&self, n: usize) -> Vec<DVec3> {
+        let cell = |k: usize| (k as f64 + 0.5) / n as f64;
+        (0..n)
+            .flat_map(|i| (0..n).map(move |j| [cell(i), cell(j)]))
+            .map(|u| self.sample_point(u))
+            .collect()
+    }
+
+    /// Whether `polygon` is part of the window's glazing: in the window's plane (within
+    /// `PLANE_TOLERANCE_M`) with its centroid inside one of the window's polygons.
+    pub fn holds(&self, polygon: &Polygon) -> bool {
+        let Some(first) = self.polygons.first() else {
+            return false;
+        };
+        let origin = first.vertices_m[0];
+        let in_plane = polygon
+            .vertices_m
+            .iter()
+            .all(|v| (*v - origin).dot(self.normal).abs() <= PLANE_TOLERANCE_M);
+        if !in_plane || polygon.vertices_m.is_empty() {
+            return false;
+        }
+        let centroid =
+            polygon.vertices_m.iter().copied().sum::<DVec3>() / polygon.vertices_m.len() as f64;
+        // A ray from just inside the room back through the centroid crosses the window there.
+        let probe = Ray::new(centroid + self.normal * 0.01, -self.normal);
+        self.crosses(&probe)
+    }
+
     /// A point uniform over the window's area for `u` in [0,1)².
     pub fn sample_point(&self, u: [f64; 2]) -> DVec3 {
         let target = u[0] * self.area_m2();
@@ -169,6 +206,10 @@ impl KlemsWindow {
         self.polygons.iter().any(|p| crosses_polygon(p, ray))
     }
 }
+
+/// How far from the window's plane a glazing polygon may lie, m (a pane's thickness is
+/// modelled apart; 1 mm absorbs rounding in exported models).
+const PLANE_TOLERANCE_M: f64 = 1e-3;
 
 /// Ray against a planar polygon: the plane's crossing, then an even-odd test in the plane.
 fn crosses_polygon(p: &Polygon, ray: &Ray) -> bool {
