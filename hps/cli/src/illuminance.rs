@@ -11,7 +11,12 @@ use std::path::PathBuf;
 Output (CSV on stdout): a header line `sensor,lux,stderr_lux`, then one line per sensor in the \
 order of the sensors file (S1, S2, ...): the illuminance in lux (RADIANCE's 179 lm/W times \
 0.265 R + 0.670 G + 0.065 B of the irradiance) and its Monte-Carlo standard error. The sky is \
-given as scene files too, e.g. gensky output with its sky and ground glow sources appended.")]
+given as scene files too, e.g. gensky output with its sky and ground glow sources appended.
+
+With --window and --state (a window with several shading states, each a BSDF XML): CSV \
+`state,sensor,lux`, every state under the scene's sky from the room's matrices (V, V_d, D, \
+D_d, traced once; kept in --matrices DIR for the next sky), the sun through each state at \
+its exact direction.")]
 pub struct IlluminanceArgs {
     /// RADIANCE scene file; repeat for several (room, then sky), read in order as oconv would.
     #[arg(long = "scene", required = true)]
@@ -33,9 +38,20 @@ pub struct IlluminanceArgs {
     /// Seed of the random streams; a seed gives the same result on any number of threads.
     #[arg(long, default_value_t = 1)]
     seed: u64,
+    #[command(flatten)]
+    states: crate::illuminance_states::StatesArgs,
 }
 
 pub fn run(args: &IlluminanceArgs) -> anyhow::Result<()> {
+    if args.states.window.is_some() {
+        return crate::illuminance_states::run(
+            &args.scenes,
+            args.allow_commands,
+            &args.sensors,
+            args.seed,
+            &args.states,
+        );
+    }
     let scene = scene::load_files_with(
         &args.scenes,
         &scene::LoadOptions {

@@ -15,6 +15,7 @@ mod demo;
 mod glare;
 mod hdr;
 mod illuminance;
+mod illuminance_states;
 mod loop_cmd;
 mod regs;
 mod render;

@@ -1,7 +1,8 @@
 //! The numerical tools every fit shares, each written once: small dense linear algebra,
-//! one-dimensional minimisation and correlation. Physics modules call these; nothing here
+//! one-dimensional minimisation and correlation, a stable hash. Physics modules call these; nothing here
 //! knows about light.
 
+pub mod fnv;
 pub mod linalg;
 pub mod search;
 pub mod stats;

@@ -13,6 +13,7 @@
 //!   through the window at full resolution.
 //! - [`shading_states`]: a window declared with several states (each a BSDF), every state
 //!   under every sky from the room's matrices traced once.
+//! - [`shaded_room`]: such a room from its files, its matrices cached between runs.
 //! - [`scene_sky`]: a scene's sky (gensky, gendaylit) as a sky vector and its suns.
 //!
 //! Matrices are [`RadianceMatrix`] values, written in RADIANCE's matrix format so that
@@ -21,6 +22,7 @@
 pub mod daylight;
 pub mod five_phase;
 pub mod scene_sky;
+pub mod shaded_room;
 pub mod shading_states;
 pub mod three_phase;
 pub mod view;
@@ -30,6 +32,7 @@ pub use crate::io::radiance_matrix::RadianceMatrix;
 pub use daylight::daylight_matrix;
 pub use five_phase::{five_phase, sky_vector_from_luminance, sun_sky_vector, PhaseMatrices};
 pub use scene_sky::{sky_vector_of_world, SunBeam};
+pub use shaded_room::{ShadedRoom, ShadedRoomError, ShadedRoomFiles, ShadedRoomSettings};
 pub use shading_states::{remove_glazing, ShadedWindow, ShadingState, StateMatrices, SunView};
 pub use three_phase::{three_phase, WindowStates};
 pub use view::{view_matrices, view_matrix};
