@@ -11,7 +11,9 @@ use std::net::SocketAddr;
 use std::path::{Path, PathBuf};
 
 mod views;
+mod window;
 pub use views::{GlareConfig, ViewConfig};
+pub use window::{StateConfig, WindowConfig};
 
 /// The API address when the config names none: loopback only (the specification: "bound to
 /// 127.0.0.1 by default"); port 8740 is a project choice.
@@ -168,6 +170,9 @@ pub struct RoomConfig {
     /// Where the daylight-coefficient matrix is cached (default: `<output.dir>/cache`).
     #[serde(default)]
     pub cache_dir: Option<PathBuf>,
+    /// A window whose shading states are declared: every cycle reports every state.
+    #[serde(default)]
+    pub window: Option<WindowConfig>,
 }
 
 fn default_mf() -> usize {
@@ -617,6 +622,9 @@ impl Config {
         if let Some(c) = config.room.cache_dir.as_mut() {
             resolve(c);
         }
+        if let Some(w) = config.room.window.as_mut() {
+            w.resolve(&resolve);
+        }
         config.validate(text)?;
         Ok(config)
     }
@@ -656,6 +664,9 @@ impl Config {
         self.site.check().map_err(in_section("site"))?;
         self.camera.check().map_err(in_section("camera"))?;
         self.room.check().map_err(in_section("room"))?;
+        if let Some(w) = &self.room.window {
+            w.check().map_err(in_section("room.window"))?;
+        }
         self.capture.check().map_err(in_section("capture"))?;
         self.output.check().map_err(in_section("output"))?;
         self.api.check().map_err(in_section("api"))?;
@@ -1192,6 +1203,37 @@ dir = "out"
         let text = text.replace("period_s = 60", "period_s = 0");
         let e = parse(&text).unwrap_err().to_string();
         assert!(e.contains("skyluxd.toml:14"), "{e}");
+    }
+
+    /// `[room.window]`: paths resolved beside the configuration, and bad declarations
+    /// refused by their field.
+    #[test]
+    fn window_states_resolve_and_refuse() {
+        let window = "[room.window]\npolygons = \"w.rad\"\n\
+                      [[room.window.states]]\nname = \"open\"\nbsdf = \"open.xml\"\n";
+        let c = parse(&format!("{MINIMAL}{window}")).unwrap();
+        let w = c.room.window.unwrap();
+        assert_eq!(w.polygons, Path::new("/etc/skylux/w.rad"));
+        assert_eq!(w.states[0].bsdf, Path::new("/etc/skylux/open.xml"));
+        assert_eq!((w.up, w.view_paths), ([0.0, 0.0, 1.0], 262_144));
+        for (bad, words) in [
+            (
+                "[room.window]\npolygons = \"w.rad\"\nstates = []\n",
+                "declare at least one state",
+            ),
+            (
+                &format!("{window}[[room.window.states]]\nname = \"open\"\nbsdf = \"b.xml\"\n"),
+                "declared twice",
+            ),
+            (&window.replace("\"open\"", "\"a b\""), "letters, digits"),
+            (
+                &window.replace("w.rad\"", "w.rad\"\nup = [0, 0, 0]"),
+                "other than zero",
+            ),
+        ] {
+            let e = parse(&format!("{MINIMAL}{bad}")).unwrap_err().to_string();
+            assert!(e.contains("room.window") && e.contains(words), "{bad}: {e}");
+        }
     }
 
     #[test]

@@ -18,6 +18,7 @@
 use crate::config::Config;
 use crate::source::CaptureSet;
 use crate::views::{evaluate_views, RenderRates, ViewGlare, ViewRequest, ViewsOutcome};
+use crate::window_states::{WindowStateRecord, WindowStates};
 use chrono::{Datelike, Utc};
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
@@ -169,6 +170,9 @@ pub struct StageDurations {
     /// The occupant views: eye sensors, renders and their glare (`views.rs`).
     #[serde(default)]
     pub views_ms: f64,
+    /// Every shading state of the window (`window_states.rs`).
+    #[serde(default)]
+    pub window_states_ms: f64,
     /// Capture to record, before the output (whose time is a metric: `/v1/metrics`).
     pub total_ms: f64,
 }
@@ -190,6 +194,10 @@ pub struct CycleRecord {
     /// Glare per declared occupant view (`[[views]]`), in their order.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub views: Vec<ViewGlare>,
+    /// Every declared shading state of the window (`[room.window]`): its illuminance per
+    /// sensor and each view's Ev and DGPs, as if the window were in that state.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub window_states: Vec<WindowStateRecord>,
     /// Outdoor horizontal illuminance the map implies, lux.
     pub outdoor_horizontal_lux: f64,
     /// Fraction of valid groups over-range.
@@ -239,6 +247,7 @@ impl CycleRecord {
             }],
             monte_carlo: None,
             views: vec![],
+            window_states: vec![],
             outdoor_horizontal_lux: 1e5,
             saturated_fraction: 0.0,
             map: None,
@@ -272,6 +281,8 @@ pub struct Pipeline {
     render_rates: RenderRates,
     /// The cache file the daylight coefficients were read from.
     pub dc_path: PathBuf,
+    /// The window's declared shading states, if any.
+    window_states: Option<WindowStates>,
 }
 
 type GeometryKey = (skylux_hps::campaign::Readout, usize, usize);
@@ -397,6 +408,7 @@ impl Pipeline {
                 })?
             }
         };
+        let window_states = WindowStates::load(config, &sensors, progress)?;
         let monte_carlo = config.room.monte_carlo.then_some(Settings {
             samples_per_sensor: config.room.monte_carlo_samples,
             ..settings
@@ -420,6 +432,7 @@ impl Pipeline {
             geometry: None,
             render_rates: RenderRates::default(),
             dc_path,
+            window_states,
         })
     }
 
@@ -491,6 +504,13 @@ impl Pipeline {
         };
         let views_ms = ms(t);
 
+        let t = Instant::now();
+        let window_states = self
+            .window_states
+            .as_ref()
+            .map(|w| w.evaluate(&terms, self.state.ground_reflectance));
+        let window_states_ms = ms(t);
+
         let mut record = CycleRecord {
             time: set.time.to_rfc3339(),
             sequence: 0,
@@ -499,6 +519,10 @@ impl Pipeline {
             illuminance: sensor_lux(&self.room.sensors, &lux),
             monte_carlo,
             views: outcome.glare,
+            window_states: match &window_states {
+                Some(Ok(states)) => states.clone(),
+                _ => vec![],
+            },
             outdoor_horizontal_lux: terms.outdoor_horizontal_lux,
             saturated_fraction: terms.saturated_fraction,
             map: None,
@@ -511,6 +535,7 @@ impl Pipeline {
                 illuminance_ms,
                 monte_carlo_ms,
                 views_ms,
+                window_states_ms,
                 total_ms: capture_ms + ms(started),
             },
             truth_outdoor_horizontal_lux: set.truth_outdoor_horizontal_lux,
@@ -535,6 +560,9 @@ impl Pipeline {
         .into_iter()
         .map(str::to_string)
         .collect();
+        if let Some(Err(why)) = window_states {
+            record.plausibility.push(format!("window_states:{why}"));
+        }
         Ok(CycleProducts {
             record,
             map,

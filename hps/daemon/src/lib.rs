@@ -41,3 +41,4 @@ pub mod source;
 pub mod spawn;
 pub mod views;
 pub mod wait;
+pub mod window_states;
