@@ -505,10 +505,21 @@ impl Pipeline {
         let views_ms = ms(t);
 
         let t = Instant::now();
-        let window_states = self
+        let mut window_states = self
             .window_states
             .as_ref()
             .map(|w| w.evaluate(&terms, self.state.ground_reflectance));
+        if let Some(Ok(states)) = window_states.as_mut() {
+            if !views.views.is_empty() {
+                let deadline_ms = views.budget_ms - capture_ms;
+                let rendered = self.state_views(&map, &terms, views, started, deadline_ms)?;
+                for (state, glare) in states.iter_mut().zip(rendered) {
+                    for (view, g) in state.views.iter_mut().zip(glare) {
+                        view.rendered = Some(g);
+                    }
+                }
+            }
+        }
         let window_states_ms = ms(t);
 
         let mut record = CycleRecord {
@@ -660,6 +671,41 @@ impl Pipeline {
             )
         })?;
         result.map_err(|e| CycleError::Model(format!("views: {e}")))
+    }
+
+    /// The views under each shading state of the window: the room glazed with each state's
+    /// BSDF under the measured sky, rendered while the cycle's budget lasts (after it, DGPs
+    /// from the eye's sensor, with the reason), as `views` does for the room as built.
+    fn state_views(
+        &mut self,
+        map: &LuminanceMap,
+        terms: &CaptureTerms,
+        request: &ViewRequest,
+        started: Instant,
+        deadline_ms: f64,
+    ) -> Result<Vec<Vec<ViewGlare>>, CycleError> {
+        let (Some(states), Some((_, geometry))) = (self.window_states.as_mut(), &self.geometry)
+        else {
+            return Ok(vec![]);
+        };
+        let mut out = Vec::with_capacity(states.worlds.len());
+        for world in states.worlds.iter_mut() {
+            install_measured_sky(world, map, terms, geometry, self.room.dc.mf, &self.state);
+            let outcome = evaluate_views(
+                world,
+                request.views,
+                request.glare,
+                self.room.settings,
+                &mut self.render_rates,
+                started,
+                deadline_ms,
+            );
+            remove_measured_sky(world);
+            let outcome = outcome
+                .map_err(|e| CycleError::Model(format!("views under a window state: {e}")))?;
+            out.push(outcome.glare);
+        }
+        Ok(out)
     }
 
     /// Runs `f` on the room with this capture's measured sky installed (its patches, the

@@ -7,16 +7,19 @@
 //! costs products, not a simulation: the cycle reports what each state would give, which is
 //! what a blind controller chooses by.
 
-use crate::config::{Config, ViewConfig};
+use crate::config::{Config, StateConfig, ViewConfig};
 use crate::cycle::{SensorLux, SetupError};
+use crate::views::ViewGlare;
 use serde::{Deserialize, Serialize};
+use skylux_hps::bsdf::AngleBasis;
 use skylux_hps::engine::phase::{
-    sky_vector_from_luminance, ShadedRoom, ShadedRoomFiles, ShadedRoomSettings, SunBeam,
+    remove_glazing, sky_vector_from_luminance, KlemsWindow, ShadedRoom, ShadedRoomFiles,
+    ShadedRoomSettings, SunBeam,
 };
-use skylux_hps::engine::{Settings, WHITE_EFFICACY_LM_PER_W};
-use skylux_hps::glare::metrics::dgps;
+use skylux_hps::engine::{Settings, World, WHITE_EFFICACY_LM_PER_W};
+use skylux_hps::glare::metrics::{dgps, LOW_LIGHT_LIMIT_LUX};
 use skylux_hps::model::CaptureTerms;
-use skylux_hps::scene::{Sensor, SourceLocation};
+use skylux_hps::scene::{self, Sensor, Shape, SourceLocation};
 use skylux_hps::sky::SkyPatches;
 use std::path::Path;
 use std::sync::Arc;
@@ -42,14 +45,19 @@ pub struct StateViewGlare {
     pub dgps: f64,
     /// `ev_lux` is below DGP's low-light limit (1000 lx): `dgps` is the formula's floor.
     pub low_light: bool,
+    /// The view's fisheye under this state and the measured sky, as `views` has it for the
+    /// room as built: the DGP of the picture, or DGPs from the eye's sensor and why when the
+    /// cycle had no time left to render.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rendered: Option<ViewGlare>,
 }
-
-/// DGP's low-light limit, lux (Wienold 2009; evalglare applies its correction below it).
-const LOW_LIGHT_LUX: f64 = 1000.0;
 
 /// The room's window with its states, its sensors followed by one eye sensor per view.
 pub struct WindowStates {
     room: ShadedRoom,
+    /// Per state, the room with the state's BSDF as its glazing, for the views' renders
+    /// (only when views are declared).
+    pub worlds: Vec<World>,
     sensor_names: Vec<String>,
     view_names: Vec<String>,
     mf: usize,
@@ -112,8 +120,17 @@ impl WindowStates {
                 "window states ready"
             );
         }
+        let worlds = if config.views.is_empty() {
+            vec![]
+        } else {
+            w.states
+                .iter()
+                .map(|s| state_world(config, s))
+                .collect::<Result<_, _>>()?
+        };
         Ok(Some(WindowStates {
             room,
+            worlds,
             sensor_names: sensors.iter().map(|s| s.name.clone()).collect(),
             view_names: config.views.iter().map(|v| v.name.clone()).collect(),
             mf: config.room.mf,
@@ -174,12 +191,68 @@ impl WindowStates {
                         view: view.clone(),
                         ev_lux,
                         dgps: dgps(ev_lux),
-                        low_light: ev_lux < LOW_LIGHT_LUX,
+                        low_light: ev_lux < LOW_LIGHT_LIMIT_LUX,
+                        rendered: None,
                     })
                     .collect(),
             })
             .collect())
     }
+}
+
+/// The room with `state`'s BSDF in place of its glazing: the room's scene less what lies in
+/// the window's polygons, and those polygons with a `BSDF` of the state's XML (thin, the
+/// window's up vector), as RADIANCE would read the room so glazed.
+fn state_world(config: &Config, state: &StateConfig) -> Result<World, SetupError> {
+    let Some(w) = &config.room.window else {
+        return Err(SetupError::Cache {
+            path: config.path.clone(),
+            message: "no [room.window]".into(),
+        });
+    };
+    let refuse = |message: String| SetupError::Cache {
+        path: state.bsdf.clone(),
+        message,
+    };
+    let basis = AngleBasis::builtin("LBNL/Klems Full").ok_or_else(|| refuse("no basis".into()))?;
+    let window = KlemsWindow::load(&w.polygons, glam::DVec3::from_array(w.up), basis)
+        .map_err(|e| refuse(format!("window: {e}")))?;
+    let mut scene = scene::load_files(&config.room.scene)?;
+    remove_glazing(&mut scene, &window);
+    let xml = state.bsdf.display().to_string();
+    if xml.chars().any(char::is_whitespace) {
+        return Err(refuse(
+            "a BSDF path with white space cannot be written into a RADIANCE scene".into(),
+        ));
+    }
+    let [ux, uy, uz] = w.up;
+    let mut text = format!(
+        "void BSDF skylux_state
+6 0 {xml} {ux} {uy} {uz} .
+0
+0
+"
+    );
+    for (k, s) in scene::load(&w.polygons)?.surfaces().iter().enumerate() {
+        if let Shape::Polygon(p) = &s.shape {
+            text.push_str(&format!(
+                "skylux_state polygon skylux_state_pane{k}
+0
+0
+{}",
+                3 * p.vertices_m.len()
+            ));
+            for v in &p.vertices_m {
+                text.push_str(&format!(" {} {} {}", v.x, v.y, v.z));
+            }
+            text.push('\n');
+        }
+    }
+    scene.add_bytes(
+        format!("[[room.window.states]] {}", state.name),
+        text.as_bytes(),
+    )?;
+    Ok(World::new(&scene)?)
 }
 
 /// One sensor per view, at the eye facing the view direction: a 180° view's Ev.
