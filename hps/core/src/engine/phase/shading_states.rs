@@ -93,6 +93,16 @@ impl ShadingState {
         })
     }
 
+    /// A state of Klems data given as its T (f times the incident patch's projected solid
+    /// angle, rows outgoing into the room, columns incident), without a file.
+    pub fn from_transmission(name: &str, transmission: RadianceMatrix) -> Self {
+        ShadingState {
+            name: name.to_string(),
+            transmission,
+            data: None,
+        }
+    }
+
     /// T_k (rows outgoing into the room, columns incident from outside).
     pub fn transmission(&self) -> &RadianceMatrix {
         &self.transmission
