@@ -214,6 +214,12 @@ fn every_state_every_cycle_and_the_shade_against_the_world() {
                 .collect::<Vec<_>>()
                 .join(" ")
         );
+        println!(
+            "  durations: window_states_ms {:.0} (views_ms {:.0}, total_ms {:.0})",
+            r["durations_ms"]["window_states_ms"].as_f64().unwrap(),
+            r["durations_ms"]["views_ms"].as_f64().unwrap(),
+            r["durations_ms"]["total_ms"].as_f64().unwrap()
+        );
         // The open blinds pass more light than the 5 % shade at every sensor.
         assert!(blinds.iter().zip(&shade).all(|(b, s)| b > s), "{r}");
         if ratios.is_empty() {
