@@ -266,6 +266,9 @@ pub struct CycleProducts {
     pub map: LuminanceMap,
     /// The rendered view pictures: index into `record.views`, and the picture.
     pub view_pictures: Vec<(usize, Picture)>,
+    /// The views rendered under the window's states: index into `record.window_states`,
+    /// into its views, and the picture.
+    pub state_view_pictures: Vec<(usize, usize, Picture)>,
 }
 
 /// Everything computed once at start.
@@ -509,14 +512,17 @@ impl Pipeline {
             .window_states
             .as_ref()
             .map(|w| w.evaluate(&terms, self.state.ground_reflectance));
+        let mut state_view_pictures = Vec::new();
         if let Some(Ok(states)) = window_states.as_mut() {
             if !views.views.is_empty() {
                 let deadline_ms = views.budget_ms - capture_ms;
                 let rendered = self.state_views(&map, &terms, views, started, deadline_ms)?;
-                for (state, glare) in states.iter_mut().zip(rendered) {
-                    for (view, g) in state.views.iter_mut().zip(glare) {
+                for (k, (state, outcome)) in states.iter_mut().zip(rendered).enumerate() {
+                    for (view, g) in state.views.iter_mut().zip(outcome.glare) {
                         view.rendered = Some(g);
                     }
+                    state_view_pictures
+                        .extend(outcome.pictures.into_iter().map(|(v, p)| (k, v, p)));
                 }
             }
         }
@@ -578,6 +584,7 @@ impl Pipeline {
             record,
             map,
             view_pictures: outcome.pictures,
+            state_view_pictures,
         })
     }
 
@@ -683,7 +690,7 @@ impl Pipeline {
         request: &ViewRequest,
         started: Instant,
         deadline_ms: f64,
-    ) -> Result<Vec<Vec<ViewGlare>>, CycleError> {
+    ) -> Result<Vec<ViewsOutcome>, CycleError> {
         let (Some(states), Some((_, geometry))) = (self.window_states.as_mut(), &self.geometry)
         else {
             return Ok(vec![]);
@@ -703,7 +710,7 @@ impl Pipeline {
             remove_measured_sky(world);
             let outcome = outcome
                 .map_err(|e| CycleError::Model(format!("views under a window state: {e}")))?;
-            out.push(outcome.glare);
+            out.push(outcome);
         }
         Ok(out)
     }

@@ -716,6 +716,7 @@ fn run_cycle(
             &mut record,
             &products.map,
             &products.view_pictures,
+            &products.state_view_pictures,
             &pipeline.device,
             // A fabric map has no raw frames to keep.
             set.fabric_map

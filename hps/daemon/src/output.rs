@@ -264,6 +264,7 @@ impl FaultHook for NoFaults {
 struct Pictures<'a> {
     map: &'a LuminanceMap,
     views: &'a [(usize, Picture)],
+    states: &'a [(usize, usize, Picture)],
 }
 
 /// The daemon's output directory.
@@ -363,12 +364,16 @@ impl Output {
     /// Writes one cycle: the map, the capture (if kept), the log lines, `latest.json`.
     /// On any error nothing of this cycle stays in the logs, and earlier results are
     /// untouched. Fills `record.map`, `record.capture` and each rendered view's `image`
-    /// (`view_pictures`: index into `record.views`, picture), kept as the maps are.
+    /// (`view_pictures`: index into `record.views`, picture; `state_pictures`: the views
+    /// under the window's states, index into `record.window_states`, into its views, picture),
+    /// kept as the maps are.
+    #[allow(clippy::too_many_arguments)]
     pub fn write_cycle(
         &mut self,
         record: &mut CycleRecord,
         map: &LuminanceMap,
         view_pictures: &[(usize, Picture)],
+        state_pictures: &[(usize, usize, Picture)],
         device: &DeviceConfig,
         capture: Option<(&skylux_hps::campaign::CaptureConfig, &[RawFrame])>,
         faults: &mut dyn FaultHook,
@@ -385,6 +390,7 @@ impl Output {
         let pictures = Pictures {
             map,
             views: view_pictures,
+            states: state_pictures,
         };
         let result =
             self.write_cycle_files(&stamp, record, &pictures, device, capture, &mut created);
@@ -401,7 +407,7 @@ impl Output {
         }
         // Retention only after the cycle is safely on disk: a failed cycle deletes nothing.
         write_pause::at(WritePoint::Retention, &record.time);
-        self.retain(view_pictures.len());
+        self.retain(view_pictures.len() + state_pictures.len());
         let _ = std::fs::remove_file(&pending);
         self.last_time = Some(record.time.clone());
         Ok(())
@@ -451,6 +457,23 @@ impl Output {
                     skylux_hps::picture::exr::write_exr(tmp, picture).map_err(|e| e.to_string())
                 })?;
                 view.image = Some(rel);
+            }
+            for (s, v, picture) in pictures.states {
+                let Some(state) = record.window_states.get_mut(*s) else {
+                    continue;
+                };
+                let Some(glare) = state
+                    .views
+                    .get_mut(*v)
+                    .and_then(|view| view.rendered.as_mut())
+                else {
+                    continue;
+                };
+                let rel = format!("{VIEWS_DIR}/{stamp}-{}-{}.exr", glare.view, state.state);
+                self.write_whole(&rel, "view picture", &time, created, &|tmp| {
+                    skylux_hps::picture::exr::write_exr(tmp, picture).map_err(|e| e.to_string())
+                })?;
+                glare.image = Some(rel);
             }
         }
         if let (Some((config, frames)), true) = (capture, self.max_captures > 0) {
@@ -733,7 +756,7 @@ mod tests {
         };
         let device = DeviceConfig::default();
         let mut r1 = record("2017-05-08T10:00:00+02:00");
-        out.write_cycle(&mut r1, &map, &[], &device, None, &mut NoFaults)
+        out.write_cycle(&mut r1, &map, &[], &[], &device, None, &mut NoFaults)
             .unwrap();
         let maps = |d: &Path| {
             let mut v: Vec<String> = std::fs::read_dir(d.join(MAPS_DIR))
@@ -751,7 +774,7 @@ mod tests {
         let good = std::mem::replace(&mut out.results.file, full);
         let mut r2 = record("2017-05-08T11:00:00+02:00");
         let e = out
-            .write_cycle(&mut r2, &map, &[], &device, None, &mut NoFaults)
+            .write_cycle(&mut r2, &map, &[], &[], &device, None, &mut NoFaults)
             .unwrap_err();
         assert!(e.is_disk_full());
         out.results.file = good;
@@ -760,7 +783,7 @@ mod tests {
         let text = std::fs::read_to_string(dir.path().join(RESULTS_FILE)).unwrap();
         assert_eq!(text.lines().count(), 1);
         let mut r3 = record("2017-05-08T12:00:00+02:00");
-        out.write_cycle(&mut r3, &map, &[], &device, None, &mut NoFaults)
+        out.write_cycle(&mut r3, &map, &[], &[], &device, None, &mut NoFaults)
             .unwrap();
         assert_eq!(maps(dir.path()), vec!["20170508T100000Z.exr"]);
         let csv = std::fs::read_to_string(dir.path().join(CSV_FILE)).unwrap();

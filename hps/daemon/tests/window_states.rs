@@ -12,7 +12,8 @@
 //!   light, and the shade reflects some 60 % of it back);
 //! - the states differ as their data do (the blinds let more light in than the shade);
 //! - the view's fisheye rendered under each state (the room glazed with its BSDF, under the
-//!   measured sky): its DGP, and its Ev beside the matrices' Ev within 10 % + 4 σ;
+//!   measured sky): its DGP, its picture kept, and its Ev beside the matrices' Ev within
+//!   10 % + 4 σ;
 //! - the matrices are traced at the first start and read at the next.
 
 mod common;
@@ -180,6 +181,11 @@ fn every_state_every_cycle_and_the_shade_against_the_world() {
             // matrices' within 10 % and 4 of its standard errors.
             let rendered = &views[0]["rendered"];
             assert_eq!(rendered["method"], "render", "{s}");
+            // Its picture is kept beside the room's own views, named by view and state.
+            let image = rendered["image"].as_str().unwrap();
+            let state = s["state"].as_str().unwrap();
+            assert!(image.ends_with(&format!("-back-{state}.exr")), "{image}");
+            assert!(out.join(image).is_file(), "{image}");
             let dgp = rendered["dgp"].as_f64().unwrap();
             assert!((0.0..=1.0).contains(&dgp), "{s}");
             let (ev_picture, se) = (
