@@ -201,16 +201,9 @@ fn load_states(
     args.states
         .iter()
         .map(|spec| {
-            let (name, path) = spec
-                .split_once('=')
-                .filter(|(n, p)| !n.is_empty() && !p.is_empty())
-                .with_context(|| format!("--state {spec:?}: expected NAME=XML"))?;
-            anyhow::ensure!(
-                name.chars()
-                    .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_'),
-                "--state {spec:?}: the name may hold letters, digits, - and _ only"
-            );
-            let t = KlemsTransmission::load(Path::new(path), Band::Visible)?;
+            let (name, path) = crate::illuminance_states::parse_state(spec)?;
+            let path = path.display().to_string();
+            let t = KlemsTransmission::load(Path::new(&path), Band::Visible)?;
             anyhow::ensure!(
                 (t.matrix.rows, t.matrix.cols) == (basis.matrix.rows, basis.matrix.cols),
                 "--state {name}: {path} is {}x{}, the --bsdf {}x{}: one window, one basis",

@@ -58,13 +58,7 @@ pub fn run(
     let states = args
         .states
         .iter()
-        .map(|spec| {
-            let (name, path) = spec
-                .split_once('=')
-                .filter(|(n, p)| !n.is_empty() && !p.is_empty())
-                .with_context(|| format!("--state {spec:?}: expected NAME=XML"))?;
-            Ok((name.to_string(), PathBuf::from(path)))
-        })
+        .map(|spec| parse_state(spec))
         .collect::<anyhow::Result<Vec<_>>>()?;
     let load = scene::LoadOptions {
         allow_commands,
@@ -137,4 +131,19 @@ pub fn run(
         }
     }
     Ok(())
+}
+
+/// A `--state NAME=XML`: the name (letters, digits, `-` and `_`: it names output columns and
+/// files) and the XML's path.
+pub fn parse_state(spec: &str) -> anyhow::Result<(String, PathBuf)> {
+    let (name, path) = spec
+        .split_once('=')
+        .filter(|(n, p)| !n.is_empty() && !p.is_empty())
+        .with_context(|| format!("--state {spec:?}: expected NAME=XML"))?;
+    anyhow::ensure!(
+        name.chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_'),
+        "--state {spec:?}: the name may hold letters, digits, - and _ only"
+    );
+    Ok((name.to_string(), PathBuf::from(path)))
 }

@@ -15,6 +15,7 @@
 
 mod common;
 
+use common::box_room::box_room;
 use common::compare::sky;
 use common::corpus::corpus;
 use common::radiance::{check_output, radiance_or_skip, rtrace_lux_runs, tool};
@@ -28,70 +29,6 @@ use skylux_hps::engine::phase::{
 use skylux_hps::engine::{Settings, World, WHITE_EFFICACY_LM_PER_W};
 use skylux_hps::scene;
 use std::path::{Path, PathBuf};
-
-/// The box room with its window of `material` (a `BSDF` modifier named `window_bsdf`).
-fn box_room(window_material: &str) -> String {
-    let mut s = format!(
-        "{window_material}\
-         void plastic wall 0 0 5 0.5 0.5 0.5 0 0\n\
-         void plastic floor 0 0 5 0.2 0.2 0.2 0 0\n\
-         void plastic ceiling 0 0 5 0.7 0.7 0.7 0 0\n\
-         window_bsdf polygon window 0 0 12 1 0 0.9 1 0 2.1 3 0 2.1 3 0 0.9\n"
-    );
-    let quads: [(&str, [[f64; 3]; 4]); 9] = [
-        (
-            "floor",
-            [[0., 0., 0.], [4., 0., 0.], [4., 5., 0.], [0., 5., 0.]],
-        ),
-        (
-            "ceiling",
-            [[0., 0., 3.], [0., 5., 3.], [4., 5., 3.], [4., 0., 3.]],
-        ),
-        (
-            "wall",
-            [[4., 0., 0.], [4., 0., 3.], [4., 5., 3.], [4., 5., 0.]],
-        ),
-        (
-            "wall",
-            [[0., 0., 0.], [0., 5., 0.], [0., 5., 3.], [0., 0., 3.]],
-        ),
-        (
-            "wall",
-            [[0., 5., 0.], [4., 5., 0.], [4., 5., 3.], [0., 5., 3.]],
-        ),
-        (
-            "wall",
-            [[0., 0., 0.], [0., 0., 0.9], [4., 0., 0.9], [4., 0., 0.]],
-        ),
-        (
-            "wall",
-            [[0., 0., 2.1], [0., 0., 3.], [4., 0., 3.], [4., 0., 2.1]],
-        ),
-        (
-            "wall",
-            [[0., 0., 0.9], [0., 0., 2.1], [1., 0., 2.1], [1., 0., 0.9]],
-        ),
-        (
-            "wall",
-            [[3., 0., 0.9], [3., 0., 2.1], [4., 0., 2.1], [4., 0., 0.9]],
-        ),
-    ];
-    for (k, (material, corners)) in quads.into_iter().enumerate() {
-        s.push_str(&format!("{material} polygon q{k} 0 0 12"));
-        for c in corners {
-            s.push_str(&format!(" {} {} {}", c[0], c[1], c[2]));
-        }
-        s.push('\n');
-    }
-    s
-}
-
-fn bsdf_material(xml: &Path) -> String {
-    format!(
-        "void BSDF window_bsdf\n6 0 {} 0 0 1 .\n0\n0\n",
-        xml.display()
-    )
-}
 
 /// The window as the matrices' receiver: front normal +y, into the room.
 const WINDOW: &str = "void glow window_glow 0 0 4 1 1 1 0\n\
@@ -180,11 +117,7 @@ fn case() -> Case {
     // The room as the user has it (its glazing a BSDF of the first state), the glazing taken
     // out by the window file.
     let room_path = dir.path().join("room.rad");
-    std::fs::write(
-        &room_path,
-        box_room(&bsdf_material(&corpus().join(STATES[0].1))),
-    )
-    .unwrap();
+    std::fs::write(&room_path, box_room(&corpus().join(STATES[0].1))).unwrap();
     let mut room_scene = scene::load(&room_path).unwrap();
     let removed = remove_glazing(&mut room_scene, &window);
     assert_eq!(removed, vec!["window".to_string()]);
@@ -235,7 +168,7 @@ fn rtrace_reference(
     label: &str,
 ) -> Vec<(f64, f64)> {
     let room = dir.join(format!("{label}.rad"));
-    std::fs::write(&room, box_room(&bsdf_material(xml))).unwrap();
+    std::fs::write(&room, box_room(xml)).unwrap();
     let sky_path = dir.join(format!("{label}-sky.rad"));
     std::fs::write(&sky_path, sky_text).unwrap();
     let mut oconv = tool(bin, lib, "oconv");

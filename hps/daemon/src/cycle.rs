@@ -695,19 +695,26 @@ impl Pipeline {
         else {
             return Ok(vec![]);
         };
+        let sky = MeasuredSky {
+            map,
+            terms,
+            geometry,
+            mf: self.room.dc.mf,
+            state: &self.state,
+        };
         let mut out = Vec::with_capacity(states.worlds.len());
         for world in states.worlds.iter_mut() {
-            install_measured_sky(world, map, terms, geometry, self.room.dc.mf, &self.state);
-            let outcome = evaluate_views(
-                world,
-                request.views,
-                request.glare,
-                self.room.settings,
-                &mut self.render_rates,
-                started,
-                deadline_ms,
-            );
-            remove_measured_sky(world);
+            let outcome = sky.with(world, |world| {
+                evaluate_views(
+                    world,
+                    request.views,
+                    request.glare,
+                    self.room.settings,
+                    &mut self.render_rates,
+                    started,
+                    deadline_ms,
+                )
+            });
             let outcome = outcome
                 .map_err(|e| CycleError::Model(format!("views under a window state: {e}")))?;
             out.push(outcome);
@@ -727,22 +734,55 @@ impl Pipeline {
             Some((_, g)) => g,
             None => return Err(CycleError::Model("no geometry".into())),
         };
-        install_measured_sky(
-            &mut self.room.world,
+        let sky = MeasuredSky {
             map,
             terms,
             geometry,
-            self.room.dc.mf,
-            &self.state,
-        );
-        let result = f(&self.room, &mut self.render_rates);
-        remove_measured_sky(&mut self.room.world);
+            mf: self.room.dc.mf,
+            state: &self.state,
+        };
+        let room = &mut self.room;
+        let rates = &mut self.render_rates;
+        sky.install(&mut room.world);
+        let result = f(room, rates);
+        remove_measured_sky(&mut room.world);
         Ok(result)
     }
 
     /// Where the daylight coefficients live.
     pub fn dc_path(&self) -> &Path {
         &self.dc_path
+    }
+}
+
+/// A capture's measured sky (its patches, the ground, the extracted sun), to install in a
+/// room's world for the time of a computation: `model::install_measured_sky`.
+struct MeasuredSky<'a> {
+    map: &'a LuminanceMap,
+    terms: &'a CaptureTerms,
+    geometry: &'a GroupGeometry,
+    mf: usize,
+    state: &'a ModelState,
+}
+
+impl MeasuredSky<'_> {
+    fn install(&self, world: &mut World) {
+        install_measured_sky(
+            world,
+            self.map,
+            self.terms,
+            self.geometry,
+            self.mf,
+            self.state,
+        );
+    }
+
+    /// Runs `f` on `world` under this sky, then takes the sky out again.
+    fn with<T>(&self, world: &mut World, f: impl FnOnce(&World) -> T) -> T {
+        self.install(world);
+        let result = f(world);
+        remove_measured_sky(world);
+        result
     }
 }
 

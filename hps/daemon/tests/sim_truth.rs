@@ -38,24 +38,14 @@ fn run(replace: &[(&str, &str)], start: &str, step_s: u64, cycles: u64) -> Vec<s
     let out = tmp.path().join("out");
     let log = tmp.path().join("stderr.log");
     let config = config_with(tmp.path(), replace, "");
-    let mut child = SimRun::new(&config, &out)
-        .cycles(cycles)
-        .clock(start, step_s)
-        .start(&log);
-    let results = out.join("results.jsonl");
-    let lines = until(Duration::from_secs(600), &log, || {
-        let l = complete_lines(&results);
-        (l.len() as u64 >= cycles).then_some(l)
-    });
-    // `--cycles` done: the daemon exits on its own.
-    assert!(
-        child.wait().unwrap().success(),
-        "skyluxd did not exit cleanly"
-    );
-    lines
-        .iter()
-        .map(|l| serde_json::from_str(l).unwrap())
-        .collect()
+    sim_records(
+        &config,
+        &out,
+        &log,
+        (start, step_s),
+        cycles,
+        Duration::from_secs(600),
+    )
 }
 
 /// Outdoor, sun and interior of one day's records against the world.

@@ -117,23 +117,14 @@ fn config(dir: &Path) -> std::path::PathBuf {
 }
 
 fn run(config: &Path, out: &Path, log: &Path, cycles: u64) -> Vec<serde_json::Value> {
-    let mut child = SimRun::new(config, out)
-        .cycles(cycles)
-        .clock("2017-05-08T08:00:00+02:00", 7200)
-        .start(log);
-    let results = out.join("results.jsonl");
-    let lines = until(Duration::from_secs(900), log, || {
-        let l = complete_lines(&results);
-        (l.len() as u64 >= cycles).then_some(l)
-    });
-    assert!(
-        child.wait().unwrap().success(),
-        "skyluxd did not exit cleanly"
-    );
-    lines
-        .iter()
-        .map(|l| serde_json::from_str(l).unwrap())
-        .collect()
+    sim_records(
+        config,
+        out,
+        log,
+        ("2017-05-08T08:00:00+02:00", 7200),
+        cycles,
+        Duration::from_secs(900),
+    )
 }
 
 fn lux(v: &serde_json::Value) -> Vec<f64> {

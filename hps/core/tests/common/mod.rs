@@ -1,3 +1,4 @@
+pub mod box_room;
 pub mod compare;
 pub mod corpus;
 pub mod primitives;

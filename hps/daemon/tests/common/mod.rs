@@ -287,3 +287,34 @@ pub fn tiny_fabric_config(dir: &Path, source: &str) -> PathBuf {
         "",
     )
 }
+
+/// Runs `skyluxd --sim` on `config` for `cycles` captures `step_s` apart from `start` (RFC
+/// 3339), writing into `out` (stderr into `log`), waits for it to exit on its own, and returns
+/// its records.
+pub fn sim_records(
+    config: &Path,
+    out: &Path,
+    log: &Path,
+    (start, step_s): (&str, u64),
+    cycles: u64,
+    limit: Duration,
+) -> Vec<serde_json::Value> {
+    let mut child = SimRun::new(config, out)
+        .cycles(cycles)
+        .clock(start, step_s)
+        .start(log);
+    let results = out.join("results.jsonl");
+    let lines = until(limit, log, || {
+        let l = complete_lines(&results);
+        (l.len() as u64 >= cycles).then_some(l)
+    });
+    // `--cycles` done: the daemon exits on its own.
+    assert!(
+        child.wait().unwrap().success(),
+        "skyluxd did not exit cleanly"
+    );
+    lines
+        .iter()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
