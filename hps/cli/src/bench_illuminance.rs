@@ -71,6 +71,26 @@ pub struct IlluminanceBenchArgs {
     /// Only the faster rtrace layout (two processes) and the engine's main configurations.
     #[arg(long)]
     quick: bool,
+    /// rtrace's specular threshold `-st` for the reference and its runs (default RADIANCE's
+    /// 0.15). Scenes with `BSDF` materials need 0: our material samples every component, as
+    /// rtrace does at `-st 0` (at 0.15 m_bsdf.c folds the weaker ones into its diffuse term).
+    #[arg(long)]
+    rtrace_st: Option<f64>,
+}
+
+impl IlluminanceBenchArgs {
+    /// rtrace's pure path tracing options with `-ad ad` and `-lw lw` (None: [`PURE_ARGS`]'s).
+    fn pure_args(&self, ad: u32, lw: Option<&str>) -> Vec<String> {
+        let mut a: Vec<String> = PURE_ARGS.iter().map(|s| s.to_string()).collect();
+        if let Some(lw) = lw {
+            a[PURE_LW] = lw.to_string();
+        }
+        if let Some(st) = self.rtrace_st {
+            a.extend(["-st".to_string(), st.to_string()]);
+        }
+        a.extend(["-ad".to_string(), ad.to_string()]);
+        a
+    }
 }
 
 /// rtrace's pure path tracing, the specified settings (`-ad` added per run).
@@ -86,14 +106,13 @@ const CACHE_ARGS: &[&str] = &[
 /// Our engine's bounces, as rtrace's pure path tracing.
 const OUR_AB: u32 = 12;
 
-/// FNV-1a, 64 bits: a cache key stable across builds (std's hasher is not).
+/// A cache key of several parts (`numerics::fnv`, each part followed by 0xff).
 pub(crate) fn fnv1a(parts: &[&[u8]]) -> u64 {
-    let mut h = 0xcbf2_9ce4_8422_2325u64;
+    use skylux_hps::numerics::fnv::{fnv1a, FNV1A_OFFSET};
+    let mut h = FNV1A_OFFSET;
     for p in parts {
-        for b in p.iter().chain(&[0xff]) {
-            h ^= u64::from(*b);
-            h = h.wrapping_mul(0x0000_0100_0000_01b3);
-        }
+        fnv1a(&mut h, p);
+        fnv1a(&mut h, &[0xff]);
     }
     h
 }
@@ -473,7 +492,7 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
         sky: format!("{} {}", sky_spec.tool, sky_spec.args.join(" ")),
         target: args.target_rel_err,
         reference: &reference,
-        reference_command: format!("{} -ad {}", PURE_ARGS.join(" "), reference_ad(args)),
+        reference_command: args.pure_args(reference_ad(args), None).join(" "),
         rtrace_configs: &rtrace_configs,
         skylux_configs: &skylux_configs,
     };
@@ -610,9 +629,8 @@ fn converged_reference(
         .reference_budget_s
         .unwrap_or(if args.grid { 1500.0 } else { 900.0 });
     let ref_ad = reference_ad(args);
-    let ref_ad_text = ref_ad.to_string();
-    let mut ref_args: Vec<&str> = PURE_ARGS.to_vec();
-    ref_args.extend(["-ad", &ref_ad_text]);
+    let ref_args_owned = args.pure_args(ref_ad, None);
+    let ref_args: Vec<&str> = ref_args_owned.iter().map(String::as_str).collect();
     let key = fnv1a(&[
         &room.scene_text,
         room.points.as_bytes(),
@@ -717,11 +735,9 @@ fn measure_rtrace_pure(
         for &(lw_label, fixed) in &lws {
             let mut points_measured = Vec::new();
             for &ad in ads {
-                let ad_text = ad.to_string();
                 let lw_text = lw_of(fixed, ad);
-                let mut a: Vec<&str> = PURE_ARGS.to_vec();
-                a[PURE_LW] = &lw_text;
-                a.extend(["-ad", &ad_text]);
+                let owned = args.pure_args(ad, Some(&lw_text));
+                let a: Vec<&str> = owned.iter().map(String::as_str).collect();
                 let runs = if args.grid { 2 } else { args.runs };
                 let (estimates, seconds) = bench.run(&a, runs.max(processes), processes)?;
                 let errors = rel_errors(&estimates, reference);

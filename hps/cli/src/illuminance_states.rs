@@ -23,7 +23,8 @@ pub struct StatesArgs {
     /// The up vector of the window's Klems frame and of its BSDFs.
     #[arg(long, num_args = 3, allow_negative_numbers = true, default_values_t = [0.0, 0.0, 1.0])]
     pub window_up: Vec<f64>,
-    /// A state of the window, NAME=XML (a WINDOW / LBNL BSDF: Klems or tensor tree);
+    /// A state of the window, NAME=XML (a WINDOW / LBNL BSDF with Klems data; a tensor tree
+    /// is refused: RADIANCE's bsdf2klems converts it);
     /// repeat for each, in the order of the output.
     #[arg(long = "state", requires = "window")]
     pub states: Vec<String>,

@@ -37,7 +37,7 @@ pub struct WindowConfig {
 pub struct StateConfig {
     /// Letters, digits, `-` or `_`.
     pub name: String,
-    /// The state's BSDF (WINDOW / LBNL XML, Klems or tensor tree).
+    /// The state's BSDF (WINDOW / LBNL XML with Klems data; bsdf2klems converts a tree).
     pub bsdf: PathBuf,
 }
 
