@@ -28,7 +28,7 @@
 
 mod common;
 
-use common::box_room::{box_room, box_room_with};
+use common::box_room::{box_room, box_room_with, BOX_SENSORS};
 use common::compare::{compare_with_rtrace, sky, Effort};
 use common::corpus::corpus;
 use common::radiance::{check_output, lux_of_line, radiance_or_skip, tool};
@@ -45,17 +45,6 @@ const RTRACE_BSDF: &[&str] = &[
     "-h", "-I", "-u+", "-ab", "8", "-aa", "0", "-ad", "128", "-as", "0", "-lw", "1e-5", "-lr",
     "-16", "-st", "0",
 ];
-
-/// Workplane sensors (0.8 m, facing up) from the window to the back, in and out of the
-/// sun patches of the two sunny skies.
-const BOX_SENSORS: &str = "\
-1.5 0.8 0.8 0 0 1
-2.5 1.5 0.8 0 0 1
-2.0 2.5 0.8 0 0 1
-1.0 3.5 0.8 0 0 1
-3.0 4.2 0.8 0 0 1
-2.0 1.0 0.8 0 0 1
-";
 
 /// The three skies: CIE overcast, and CIE clear with the sun due south at 60° (steep
 /// through the window) and 30° east of south at 15° (shallow).

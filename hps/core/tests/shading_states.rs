@@ -14,7 +14,7 @@
 
 mod common;
 
-use common::box_room::box_room;
+use common::box_room::{box_room, BOX_SENSORS};
 use common::compare::sky;
 use common::corpus::corpus;
 use common::radiance::{check_output, radiance_or_skip, rtrace_lux_runs, tool};
@@ -33,17 +33,10 @@ use std::path::{Path, PathBuf};
 const WINDOW: &str = "void glow window_glow 0 0 4 1 1 1 0\n\
                       window_glow polygon window 0 0 12 1 0 0.9 1 0 2.1 3 0 2.1 3 0 0.9\n";
 
-/// Workplane sensors from the window to the back (in and out of the steep sun's patch), and
-/// an occupant's eye at 1.2 m facing the window (S7).
-const SENSORS: &str = "\
-1.5 0.8 0.8 0 0 1
-2.5 1.5 0.8 0 0 1
-2.0 2.5 0.8 0 0 1
-1.0 3.5 0.8 0 0 1
-3.0 4.2 0.8 0 0 1
-2.0 1.0 0.8 0 0 1
-2.0 3.0 1.2 0 -1 0
-";
+/// The box room's workplane sensors and an occupant's eye at 1.2 m facing the window (S7).
+fn sensors() -> String {
+    format!("{BOX_SENSORS}2.0 3.0 1.2 0 -1 0\n")
+}
 
 const STATES: [(&str, &str); 3] = [
     ("satine", "bsdf/frads/2011-SA1.xml"),
@@ -132,7 +125,7 @@ fn case() -> Case {
     let removed = remove_glazing(&mut room_scene, &window);
     assert_eq!(removed, vec!["window".to_string()]);
     let room = World::new(&room_scene).unwrap();
-    let sensors = scene::parse_sensors("sensors.pts", SENSORS.as_bytes()).unwrap();
+    let sensors = scene::parse_sensors("sensors.pts", sensors().as_bytes()).unwrap();
     let view = Settings {
         ambient_bounces: 8,
         samples_per_sensor: VIEW_PATHS,
@@ -190,7 +183,7 @@ fn rtrace_reference(
         lib,
         dir,
         &octree,
-        SENSORS.as_bytes(),
+        sensors().as_bytes(),
         &[
             "-h", "-I", "-u+", "-ab", "8", "-aa", "0", "-ad", "2048", "-as", "0", "-lw", "1e-5",
             "-lr", "-16", "-st", "0",
@@ -207,8 +200,10 @@ fn rtrace_reference(
 const SENSOR_BAND: f64 = 0.06;
 const K_SIGMA: f64 = 4.0;
 /// Per state and sky, the mean relative difference over the sensors where rtrace has
-/// converged (standard error under 5 %) within 3 % (observed −1.5 % to −0.6 %).
-const SET_BAND: f64 = 0.03;
+/// converged (standard error under 5 %) within 5 %: observed −3.9 % to +0.6 % over seven runs
+/// (the electrochromic glazing under the sun, whose rtrace estimates are heavy-tailed, at the
+/// low end; the others within ±2.1 %).
+const SET_BAND: f64 = 0.05;
 const CONVERGED: f64 = 0.05;
 /// V's paths per sensor. A clear glazing sends the sun's beam into one Klems patch, so the
 /// sun's interreflected light rests on one entry of V per sensor: at 32,768 paths a sensor

@@ -78,3 +78,14 @@ pub fn box_room_with(declaration: &str) -> String {
     }
     s
 }
+
+/// Workplane sensors (0.8 m, facing up) from the window to the back, in and out of the
+/// sun patches of the two sunny skies.
+pub const BOX_SENSORS: &str = "\
+1.5 0.8 0.8 0 0 1
+2.5 1.5 0.8 0 0 1
+2.0 2.5 0.8 0 0 1
+1.0 3.5 0.8 0 0 1
+3.0 4.2 0.8 0 0 1
+2.0 1.0 0.8 0 0 1
+";
