@@ -350,17 +350,13 @@ pub fn bench(json: bool, repeat: usize) -> anyhow::Result<()> {
 /// checksum.
 fn capture_with_sun(ts: &[RadianceMatrix], repeat: usize) -> anyhow::Result<(f64, f64)> {
     use skylux_hps::engine::phase::{ShadedWindow, ShadingState, StateMatrices, SunBeam, SunView};
-    let mut text = String::from(
-        "void plastic wall 0 0 5 0.5 0.5 0.5 0 0\n\
-         wall polygon floor 0 0 12 0 0 0 4 0 0 4 5 0 0 5 0\n\
-         wall polygon back 0 0 12 0 5 0 4 5 0 4 5 3 0 5 3\n",
-    );
-    text.push_str("void glow g 0 0 4 1 1 1 0\n");
-    let window_text = "g polygon window 0 0 12 1 0 0.9 1 0 2.1 3 0 2.1 3 0 0.9\n";
-    let room = World::new(&scene::parse("bench-room.rad", text.as_bytes())?)?;
+    let room_text = "void plastic wall 0 0 5 0.5 0.5 0.5 0 0\n\
+                     wall polygon floor 0 0 12 0 0 0 4 0 0 4 5 0 0 5 0\n\
+                     wall polygon back 0 0 12 0 5 0 4 5 0 4 5 3 0 5 3\n";
+    let room = World::new(&scene::parse("bench-room.rad", room_text.as_bytes())?)?;
     let window_scene = scene::parse(
         "bench-window.rad",
-        format!("void glow g 0 0 4 1 1 1 0\n{window_text}").as_bytes(),
+        b"void glow g 0 0 4 1 1 1 0\ng polygon window 0 0 12 1 0 0.9 1 0 2.1 3 0 2.1 3 0 0.9\n",
     )?;
     let polygons = window_scene
         .surfaces()

@@ -17,6 +17,7 @@
 
 mod common;
 
+use common::box_room::BOX_SENSORS;
 use common::corpus::corpus;
 use common::radiance::{check_output, radiance_or_skip, tool};
 use glam::DVec3;
@@ -59,15 +60,6 @@ void glow window_glow 0 0 4 1 1 1 0
 window_glow polygon window 0 0 12 1 0 0.9 1 0 2.1 3 0 2.1 3 0 0.9
 ";
 
-const SENSORS: &str = "\
-1.5 0.8 0.8 0 0 1
-2.5 1.5 0.8 0 0 1
-2.0 2.5 0.8 0 0 1
-1.0 3.5 0.8 0 0 1
-3.0 4.2 0.8 0 0 1
-2.0 1.0 0.8 0 0 1
-";
-
 fn blinds_xml() -> PathBuf {
     corpus().join("bsdf/sariths-matrix-tutorial/room/blinds/blinds.xml")
 }
@@ -87,7 +79,7 @@ fn case() -> Option<Case> {
         ("room.rad", ROOM),
         ("outside.rad", OUTSIDE),
         ("window.rad", WINDOW),
-        ("sensors.pts", SENSORS),
+        ("sensors.pts", BOX_SENSORS),
     ] {
         std::fs::write(dir.path().join(name), text).unwrap();
     }
