@@ -12,6 +12,7 @@ mod compare;
 mod dc;
 mod dc_phase;
 mod demo;
+mod genbsdf;
 mod glare;
 mod hdr;
 mod illuminance;
@@ -56,6 +57,9 @@ enum Command {
     Bench(bench::BenchArgs),
     /// Computes a room's daylight-coefficient matrix (illuminance per unit sky patch).
     Dc(dc::DcArgs),
+    /// A Klems BSDF (WINDOW / LBNL XML) from a detailed RADIANCE model of a blind, a frit, a
+    /// PV tile, as genBSDF makes it: `skylux genbsdf DEVICE.rad --out device.xml`.
+    Genbsdf(genbsdf::GenBsdfArgs),
     /// Merges a capture folder into a calibrated luminance map (OpenEXR).
     Hdr(hdr::HdrArgs),
     /// Computes workplane illuminance at sensor points by path tracing a RADIANCE scene and sky.
@@ -91,6 +95,7 @@ fn main() -> anyhow::Result<()> {
         Command::Dc(args) => dc::run(&args),
         Command::Compare(args) => compare::run(&args),
         Command::Glare(args) => glare::run(&args),
+        Command::Genbsdf(args) => genbsdf::run(&args),
         Command::Hdr(args) => hdr::run(&args),
         Command::Illuminance(args) => illuminance::run(&args),
         Command::Bench(args) => bench::run(&args),

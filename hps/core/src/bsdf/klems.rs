@@ -168,6 +168,14 @@ impl AngleBasis {
         Some(ring.first_patch + index)
     }
 
+    /// The rings as (lower θ°, upper θ°, patches), from the normal out: what a file's
+    /// `AngleBasisBlock`s declare.
+    pub fn rings(&self) -> impl Iterator<Item = (f64, f64, usize)> + '_ {
+        self.rings
+            .iter()
+            .map(|r| (r.theta_min_deg, r.theta_max_deg, r.n_phis))
+    }
+
     /// Number of patches.
     pub fn len(&self) -> usize {
         self.n_patches
@@ -234,6 +242,21 @@ impl BasisFrame {
             Side::FrontTransmission => (BasisFrame::FrontIncident, BasisFrame::BackOutgoing),
             Side::BackTransmission => (BasisFrame::BackIncident, BasisFrame::FrontOutgoing),
         }
+    }
+}
+
+impl Side {
+    /// An incident direction of this part (unit, pointing away from the surface) in the frame
+    /// its column basis is read in; the map is its own inverse, so it also turns a direction
+    /// of that frame into the incident direction. What a writer of Klems data needs to put
+    /// each value where RADIANCE will read it.
+    pub fn incident_in_basis_frame(self, v: DVec3) -> DVec3 {
+        BasisFrame::of(self).0.map(v)
+    }
+
+    /// An outgoing direction of this part in the frame its row basis is read in (and back).
+    pub fn outgoing_in_basis_frame(self, v: DVec3) -> DVec3 {
+        BasisFrame::of(self).1.map(v)
     }
 }
 

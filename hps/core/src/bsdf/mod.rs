@@ -16,6 +16,7 @@ mod side;
 mod tensor_tree;
 mod through;
 mod xml;
+mod xml_writer;
 
 pub use error::BsdfError;
 pub use klems::AngleBasis;
@@ -24,6 +25,7 @@ pub use sample::{BsdfSample, OutgoingDistribution};
 pub use shirley_chiu::{disk_to_square, square_to_disk};
 pub use side::Side;
 pub use through::Through;
+pub use xml_writer::{klems_xml, KlemsDocument, KlemsPart};
 
 use glam::DVec3;
 use klems::KlemsMatrix;

@@ -27,6 +27,16 @@ impl Side {
         }
     }
 
+    /// WINDOW's name of the part, as a file's `WavelengthDataDirection` gives it.
+    pub fn window_label(self) -> &'static str {
+        match self {
+            Side::FrontReflection => "Reflection Back",
+            Side::BackReflection => "Reflection Front",
+            Side::FrontTransmission => "Transmission Back",
+            Side::BackTransmission => "Transmission Front",
+        }
+    }
+
     /// The part light in from `incident_front` and out to `outgoing_front` goes through.
     pub fn of(incident_front: bool, outgoing_front: bool) -> Side {
         match (incident_front, outgoing_front) {

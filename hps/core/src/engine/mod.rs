@@ -25,6 +25,7 @@ pub mod bvh;
 pub mod daylight_coefficients;
 mod error;
 pub mod function;
+pub mod genbsdf;
 pub mod illuminance;
 pub mod integrator;
 pub mod material;

@@ -59,6 +59,26 @@ pub fn compare_with_rtrace(
     work_dir: &Path,
     effort: &Effort,
 ) {
+    compare_with_rtrace_from(
+        label, room_files, sky_text, sensors, scene_dir, scene_dir, work_dir, effort,
+    );
+}
+
+/// [`compare_with_rtrace`] with the room's files read from `rtrace_dir` by rtrace and from
+/// `our_dir` by the engine: the same scene text naming different data (a BSDF XML made by
+/// genBSDF for rtrace, by `skylux genbsdf` for us).
+#[allow(clippy::too_many_arguments)]
+pub fn compare_with_rtrace_from(
+    label: &str,
+    room_files: &[PathBuf],
+    sky_text: &[u8],
+    sensors: &[u8],
+    rtrace_dir: &Path,
+    our_dir: &Path,
+    work_dir: &Path,
+    effort: &Effort,
+) {
+    let scene_dir = rtrace_dir;
     let Some((bin, lib)) = radiance_or_skip() else {
         return;
     };
@@ -85,12 +105,12 @@ pub fn compare_with_rtrace(
     );
     let rtrace_s = start.elapsed().as_secs_f64();
 
-    let mut files: Vec<PathBuf> = room_files.iter().map(|f| scene_dir.join(f)).collect();
+    let mut files: Vec<PathBuf> = room_files.iter().map(|f| our_dir.join(f)).collect();
     files.push(sky_path);
     // Loaded as oconv and rtrace run there: files the scene names by a path (BSDF XML) are
-    // found from `scene_dir`.
+    // found from `our_dir`.
     let options = scene::LoadOptions {
-        working_directory: Some(scene_dir.to_path_buf()),
+        working_directory: Some(our_dir.to_path_buf()),
         ..Default::default()
     };
     let scene = scene::load_files_with(&files, &options).unwrap();

@@ -1,0 +1,230 @@
+//! `skylux genbsdf`: a Klems BSDF (WINDOW / LBNL XML that RADIANCE reads) from a detailed
+//! RADIANCE model of a fenestration device, sampled by our own engine as genBSDF samples it
+//! with rfluxmtx (`engine::genbsdf`; docs/bsdf.md "BSDFs from geometry").
+
+use anyhow::Context;
+use clap::{Args, ValueEnum};
+use glam::DVec3;
+use skylux_hps::bsdf::{klems_xml, AngleBasis, KlemsDocument, KlemsPart};
+use skylux_hps::engine::genbsdf::{
+    generate_klems, Asymmetry, GenBsdfSettings, GeneratedBsdf, SamplingBox,
+};
+use skylux_hps::engine::World;
+use skylux_hps::scene;
+use std::path::PathBuf;
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum Basis {
+    /// LBNL/Klems Full, 145 patches.
+    Kf,
+    /// LBNL/Klems Half, 77 patches.
+    Kh,
+    /// LBNL/Klems Quarter, 41 patches.
+    Kq,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum From {
+    /// Light from both sides: all four parts.
+    Both,
+    /// Light from the room (+z) only: room-side reflection, transmission out.
+    Room,
+    /// Light from outside (−z) only: outside reflection, transmission in.
+    Outside,
+}
+
+#[derive(Args)]
+pub struct GenBsdfArgs {
+    /// The device (RADIANCE scene files): behind the z = 0 plane, the room on +z, its up
+    /// direction +y (genBSDF's convention).
+    #[arg(required = true)]
+    pub device: Vec<PathBuf>,
+    /// The XML file to write.
+    #[arg(long, short)]
+    pub out: PathBuf,
+    /// Rays per incident patch and side (genBSDF's -c).
+    #[arg(long, default_value_t = 2000)]
+    pub samples: u32,
+    /// Most diffuse bounces in the device (genBSDF runs rfluxmtx -ab 5).
+    #[arg(long, default_value_t = 5)]
+    pub ab: u32,
+    #[arg(long, value_enum, default_value_t = Basis::Kf)]
+    pub basis: Basis,
+    /// Which sides light comes from.
+    #[arg(long, value_enum, default_value_t = From::Both)]
+    pub from: From,
+    /// The sampling box XMIN XMAX YMIN YMAX ZMIN ZMAX in the geometry's units (genBSDF's
+    /// -dim); the device's bounding box by default.
+    #[arg(long, num_args = 6, allow_negative_numbers = true)]
+    pub dim: Option<Vec<f64>>,
+    /// The geometry's unit, as the XML names it (genBSDF's -geom): meter, millimeter, foot...
+    #[arg(long, default_value = "meter")]
+    pub geom: String,
+    /// The standard error of each element, written as a second XML of the same layout.
+    #[arg(long)]
+    pub errors: Option<PathBuf>,
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Run inline commands Skylux does not implement through /bin/sh, as oconv would (a
+    /// scene file can then run any program with your rights).
+    #[arg(long)]
+    pub allow_commands: bool,
+}
+
+pub fn run(args: &GenBsdfArgs) -> anyhow::Result<()> {
+    let scene = scene::load_files_with(
+        &args.device,
+        &scene::LoadOptions {
+            allow_commands: args.allow_commands,
+            ..Default::default()
+        },
+    )?;
+    let world = World::new(&scene)?;
+    anyhow::ensure!(
+        world.distant_sources().is_empty() && !world.has_escape_radiance(),
+        "the device files hold a sky or a sun: genbsdf needs the device alone"
+    );
+    let sampling = sampling_box(args, &world)?;
+    sampling
+        .check()
+        .map_err(|e| anyhow::anyhow!("--dim: {e}"))?;
+    for w in sampling.warnings() {
+        eprintln!("warning: {w}");
+    }
+    let basis_name = match args.basis {
+        Basis::Kf => "LBNL/Klems Full",
+        Basis::Kh => "LBNL/Klems Half",
+        Basis::Kq => "LBNL/Klems Quarter",
+    };
+    let basis = AngleBasis::builtin(basis_name).context("built-in basis")?;
+    let settings = GenBsdfSettings {
+        samples_per_patch: args.samples,
+        ambient_bounces: args.ab,
+        seed: args.seed,
+        from_room: matches!(args.from, From::Both | From::Room),
+        from_outside: matches!(args.from, From::Both | From::Outside),
+    };
+    let bar = indicatif::ProgressBar::new(1);
+    let generated = generate_klems(&world, &sampling, &basis, &settings, &|d, n| {
+        bar.set_length(n);
+        bar.set_position(d);
+    })?;
+    bar.finish_and_clear();
+    let created_by = command_line();
+    let name = args
+        .device
+        .first()
+        .and_then(|p| p.file_stem())
+        .map_or("device".into(), |s| s.to_string_lossy().into_owned());
+    let doc = generated.document(&name, &created_by, &args.geom, &sampling);
+    anyhow::ensure!(
+        !doc.parts.is_empty(),
+        "no ray left the device: the sampled BSDF is zero everywhere (is the box around it?)"
+    );
+    let text = klems_xml(&doc).map_err(anyhow::Error::msg)?;
+    std::fs::write(&args.out, text).with_context(|| format!("writing {}", args.out.display()))?;
+    if let Some(path) = &args.errors {
+        write_errors(path, &generated, &doc, &created_by)?;
+    }
+    report(&generated, &doc, &sampling, args);
+    Ok(())
+}
+
+fn sampling_box(args: &GenBsdfArgs, world: &World) -> anyhow::Result<SamplingBox> {
+    match &args.dim {
+        Some(d) => Ok(SamplingBox {
+            min: DVec3::new(d[0], d[2], d[4]),
+            max: DVec3::new(d[1], d[3], d[5]),
+        }),
+        None => SamplingBox::of_world(world).context("the device files hold no surface"),
+    }
+}
+
+/// The standard errors in the layout of the BSDF itself, the same parts.
+fn write_errors(
+    path: &std::path::Path,
+    generated: &GeneratedBsdf,
+    doc: &KlemsDocument,
+    created_by: &str,
+) -> anyhow::Result<()> {
+    let name = format!("standard errors of {}", doc.name);
+    let errors = KlemsDocument {
+        name: &name,
+        created_by,
+        parts: doc
+            .parts
+            .iter()
+            .filter_map(|p| generated.part(p.side))
+            .map(|p| KlemsPart {
+                side: p.side,
+                values: &p.standard_error,
+            })
+            .collect(),
+        ..*doc
+    };
+    let text = klems_xml(&errors).map_err(anyhow::Error::msg)?;
+    std::fs::write(path, text).with_context(|| format!("writing {}", path.display()))
+}
+
+fn report(
+    generated: &GeneratedBsdf,
+    doc: &KlemsDocument,
+    sampling: &SamplingBox,
+    args: &GenBsdfArgs,
+) {
+    let n = generated.basis.len();
+    println!(
+        "{}: {} x {} {} (box x {}..{} y {}..{} z {}..{} {}), {} rays per patch",
+        args.out.display(),
+        n,
+        n,
+        generated.basis.name,
+        sampling.min.x,
+        sampling.max.x,
+        sampling.min.y,
+        sampling.max.y,
+        sampling.min.z,
+        sampling.max.z,
+        args.geom,
+        generated.samples_per_patch
+    );
+    println!("part                 at normal   mean over patches   largest standard error");
+    for part in &generated.parts {
+        let side = part.side;
+        let hemi: Vec<f64> = (0..n)
+            .filter_map(|i| generated.hemispherical(side, i))
+            .collect();
+        let se = (0..n)
+            .filter_map(|i| generated.hemispherical_standard_error(side, i))
+            .fold(0.0, f64::max);
+        let written = doc.parts.iter().any(|p| p.side == side);
+        println!(
+            "{:20} {:9.4}   {:17.4}   {:22.4}{}",
+            side.window_label(),
+            hemi[0],
+            hemi.iter().sum::<f64>() / n as f64,
+            se,
+            if written { "" } else { "   (zero: left out)" }
+        );
+    }
+    let r = generated.reciprocity();
+    let show = |label: &str, a: Option<Asymmetry>| {
+        if let Some(a) = a {
+            println!(
+                "reciprocity, {label}: {:.2} % apart, {:.2} standard errors RMS (1 for a reciprocal device)",
+                100.0 * a.relative,
+                a.rms_standard_errors
+            );
+        }
+    };
+    show("transmission", r.transmission);
+    show("room-side reflection", r.room_reflection);
+    show("outside reflection", r.outside_reflection);
+}
+
+fn command_line() -> String {
+    std::iter::once("skylux".to_string())
+        .chain(std::env::args().skip(1))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
