@@ -5,9 +5,10 @@
 use anyhow::Context;
 use clap::{Args, ValueEnum};
 use glam::DVec3;
-use skylux_hps::bsdf::{klems_xml, AngleBasis, KlemsDocument, KlemsPart};
+use skylux_hps::bsdf::{bsdf_xml, AngleBasis, BsdfDocument, DocumentPart, Side};
 use skylux_hps::engine::genbsdf::{
-    generate_klems, Asymmetry, GenBsdfSettings, GeneratedBsdf, SamplingBox,
+    generate_klems, generate_tensor_tree, Asymmetry, GenBsdfSettings, GeneratedBsdf, GeneratedPart,
+    SamplingBox, TreeKind,
 };
 use skylux_hps::engine::World;
 use skylux_hps::scene;
@@ -21,6 +22,14 @@ pub enum Basis {
     Kh,
     /// LBNL/Klems Quarter, 41 patches.
     Kq,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum Tree {
+    /// TensorTree3: isotropic (the azimuthal average), res/2 incident cells.
+    T3,
+    /// TensorTree4: anisotropic, res² incident cells.
+    T4,
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -50,6 +59,13 @@ pub struct GenBsdfArgs {
     pub ab: u32,
     #[arg(long, value_enum, default_value_t = Basis::Kf)]
     pub basis: Basis,
+    /// A tensor tree instead of Klems matrices (genBSDF's -t3 / -t4); --samples rays per
+    /// incident cell.
+    #[arg(long, value_enum)]
+    pub tree: Option<Tree>,
+    /// The tree's resolution: 2^N cells per dimension (genBSDF's -t4 N ... default 4).
+    #[arg(long, default_value_t = 4)]
+    pub tree_log2: u32,
     /// Which sides light comes from.
     #[arg(long, value_enum, default_value_t = From::Both)]
     pub from: From,
@@ -104,29 +120,76 @@ pub fn run(args: &GenBsdfArgs) -> anyhow::Result<()> {
         from_room: matches!(args.from, From::Both | From::Room),
         from_outside: matches!(args.from, From::Both | From::Outside),
     };
-    let bar = indicatif::ProgressBar::new(1);
-    let generated = generate_klems(&world, &sampling, &basis, &settings, &|d, n| {
-        bar.set_length(n);
-        bar.set_position(d);
-    })?;
-    bar.finish_and_clear();
     let created_by = command_line();
     let name = args
         .device
         .first()
         .and_then(|p| p.file_stem())
         .map_or("device".into(), |s| s.to_string_lossy().into_owned());
+    let bar = indicatif::ProgressBar::new(1);
+    let progress = |d, n| {
+        bar.set_length(n);
+        bar.set_position(d);
+    };
+    if let Some(tree) = args.tree {
+        let kind = match tree {
+            Tree::T3 => TreeKind::Isotropic,
+            Tree::T4 => TreeKind::Anisotropic,
+        };
+        let g = generate_tensor_tree(
+            &world,
+            &sampling,
+            kind,
+            args.tree_log2,
+            &settings,
+            &progress,
+        )?;
+        bar.finish_and_clear();
+        let grids = g.grids();
+        let doc = g.document(&grids, &name, &created_by, &args.geom, &sampling);
+        write_documents(args, &doc, &g.parts, &created_by)?;
+        let res = 1usize << g.log2_res;
+        println!(
+            "{}: TensorTree{} of {res} cells per dimension (box x {}..{} y {}..{} z {}..{} {}), {} rays per incident cell",
+            args.out.display(),
+            kind.dims(),
+            sampling.min.x,
+            sampling.max.x,
+            sampling.min.y,
+            sampling.max.y,
+            sampling.min.z,
+            sampling.max.z,
+            args.geom,
+            g.samples_per_cell
+        );
+        let n_in = g.parts[0].n_incident;
+        summary(&g.parts, &doc, n_in, |side, i| g.hemispherical(side, i));
+        return Ok(());
+    }
+    let generated = generate_klems(&world, &sampling, &basis, &settings, &progress)?;
+    bar.finish_and_clear();
     let doc = generated.document(&name, &created_by, &args.geom, &sampling);
+    write_documents(args, &doc, &generated.parts, &created_by)?;
+    report(&generated, &doc, &sampling, args);
+    Ok(())
+}
+
+/// The BSDF and, with --errors, its standard errors in the same layout.
+fn write_documents(
+    args: &GenBsdfArgs,
+    doc: &BsdfDocument,
+    parts: &[GeneratedPart],
+    created_by: &str,
+) -> anyhow::Result<()> {
     anyhow::ensure!(
         !doc.parts.is_empty(),
         "no ray left the device: the sampled BSDF is zero everywhere (is the box around it?)"
     );
-    let text = klems_xml(&doc).map_err(anyhow::Error::msg)?;
+    let text = bsdf_xml(doc).map_err(anyhow::Error::msg)?;
     std::fs::write(&args.out, text).with_context(|| format!("writing {}", args.out.display()))?;
     if let Some(path) = &args.errors {
-        write_errors(path, &generated, &doc, &created_by)?;
+        write_errors(path, parts, doc, created_by)?;
     }
-    report(&generated, &doc, &sampling, args);
     Ok(())
 }
 
@@ -143,32 +206,55 @@ fn sampling_box(args: &GenBsdfArgs, world: &World) -> anyhow::Result<SamplingBox
 /// The standard errors in the layout of the BSDF itself, the same parts.
 fn write_errors(
     path: &std::path::Path,
-    generated: &GeneratedBsdf,
-    doc: &KlemsDocument,
+    parts: &[GeneratedPart],
+    doc: &BsdfDocument,
     created_by: &str,
 ) -> anyhow::Result<()> {
     let name = format!("standard errors of {}", doc.name);
-    let errors = KlemsDocument {
+    // A tree's grid is incident-major: the errors are laid out as its values are.
+    let grids: Vec<(Side, Vec<f64>)> = doc
+        .parts
+        .iter()
+        .filter_map(|d| parts.iter().find(|p| p.side == d.side))
+        .map(|p| (p.side, layout_like(doc, p)))
+        .collect();
+    let errors = BsdfDocument {
         name: &name,
         created_by,
-        parts: doc
-            .parts
+        parts: grids
             .iter()
-            .filter_map(|p| generated.part(p.side))
-            .map(|p| KlemsPart {
-                side: p.side,
-                values: &p.standard_error,
+            .map(|(side, values)| DocumentPart {
+                side: *side,
+                values,
             })
             .collect(),
         ..*doc
     };
-    let text = klems_xml(&errors).map_err(anyhow::Error::msg)?;
+    let text = bsdf_xml(&errors).map_err(anyhow::Error::msg)?;
     std::fs::write(path, text).with_context(|| format!("writing {}", path.display()))
+}
+
+/// A part's standard errors in the layout `doc` writes its values in.
+fn layout_like(doc: &BsdfDocument, part: &GeneratedPart) -> Vec<f64> {
+    match doc.data {
+        skylux_hps::bsdf::DocumentData::Klems(_) => part.standard_error.clone(),
+        skylux_hps::bsdf::DocumentData::TensorTree { dims, log2_res } => {
+            let n_out = 1usize << (2 * log2_res);
+            let rows = 1usize << ((dims - 2) * log2_res);
+            let mut grid = vec![0.0; rows * n_out];
+            for i in 0..part.n_incident {
+                for o in 0..n_out {
+                    grid[i * n_out + o] = part.standard_error[o * part.n_incident + i];
+                }
+            }
+            grid
+        }
+    }
 }
 
 fn report(
     generated: &GeneratedBsdf,
-    doc: &KlemsDocument,
+    doc: &BsdfDocument,
     sampling: &SamplingBox,
     args: &GenBsdfArgs,
 ) {
@@ -188,25 +274,12 @@ fn report(
         args.geom,
         generated.samples_per_patch
     );
-    println!("part                 at normal   mean over patches   largest standard error");
-    for part in &generated.parts {
-        let side = part.side;
-        let hemi: Vec<f64> = (0..n)
-            .filter_map(|i| generated.hemispherical(side, i))
-            .collect();
-        let se = (0..n)
-            .filter_map(|i| generated.hemispherical_standard_error(side, i))
-            .fold(0.0, f64::max);
-        let written = doc.parts.iter().any(|p| p.side == side);
-        println!(
-            "{:20} {:9.4}   {:17.4}   {:22.4}{}",
-            side.window_label(),
-            hemi[0],
-            hemi.iter().sum::<f64>() / n as f64,
-            se,
-            if written { "" } else { "   (zero: left out)" }
-        );
-    }
+    summary(&generated.parts, doc, n, |side, i| {
+        Some((
+            generated.hemispherical(side, i)?,
+            generated.hemispherical_standard_error(side, i)?,
+        ))
+    });
     let r = generated.reciprocity();
     let show = |label: &str, a: Option<Asymmetry>| {
         if let Some(a) = a {
@@ -220,6 +293,33 @@ fn report(
     show("transmission", r.transmission);
     show("room-side reflection", r.room_reflection);
     show("outside reflection", r.outside_reflection);
+}
+
+/// Per part: R or T of the first incident cell (the normal for Klems and t3), the mean over
+/// incident cells, and the largest standard error of one of them.
+fn summary(
+    parts: &[GeneratedPart],
+    doc: &BsdfDocument,
+    n_incident: usize,
+    hemispherical: impl Fn(Side, usize) -> Option<(f64, f64)>,
+) {
+    println!("part                 first cell   mean over cells   largest standard error");
+    for part in parts {
+        let side = part.side;
+        let hemi: Vec<(f64, f64)> = (0..n_incident)
+            .filter_map(|i| hemispherical(side, i))
+            .collect();
+        let se = hemi.iter().map(|h| h.1).fold(0.0, f64::max);
+        let written = doc.parts.iter().any(|p| p.side == side);
+        println!(
+            "{:20} {:10.4}   {:15.4}   {:22.4}{}",
+            side.window_label(),
+            hemi[0].0,
+            hemi.iter().map(|h| h.0).sum::<f64>() / n_incident as f64,
+            se,
+            if written { "" } else { "   (zero: left out)" }
+        );
+    }
 }
 
 fn command_line() -> String {

@@ -25,7 +25,7 @@ pub use sample::{BsdfSample, OutgoingDistribution};
 pub use shirley_chiu::{disk_to_square, square_to_disk};
 pub use side::Side;
 pub use through::Through;
-pub use xml_writer::{klems_xml, KlemsDocument, KlemsPart};
+pub use xml_writer::{bsdf_xml, BsdfDocument, DocumentData, DocumentPart};
 
 use glam::DVec3;
 use klems::KlemsMatrix;

@@ -1,20 +1,31 @@
-//! Writes Klems BSDF data as a WINDOW 6 / LBNL XML file that RADIANCE reads (`checkBSDF`,
-//! the `BSDF` material, `bsdf2ttree`): the layout RADIANCE's own `wrapBSDF` writes, one
-//! `WavelengthDataBlock` per part, `Columns` (each row one outgoing patch, each column one
-//! incident patch), values in 1/sr.
+//! Writes BSDF data as a WINDOW 6 / LBNL XML file that RADIANCE reads (`checkBSDF`, the
+//! `BSDF` material, `bsdf2ttree`): the layout RADIANCE's own `wrapBSDF` writes, one
+//! `WavelengthDataBlock` per part, values in 1/sr. Klems data as `Columns` (each row one
+//! outgoing patch, each column one incident patch); a tensor tree as one full-resolution
+//! grid (`{ v v ... }`, dimension 0 varying slowest: a tree of one leaf grid, which RADIANCE
+//! reads as it reads a reduced one).
 
 use super::klems::AngleBasis;
 use super::side::Side;
 use std::fmt::Write;
 
-/// One part's matrix over the document's basis: `values[outgoing * n + incident]`, 1/sr.
-pub struct KlemsPart<'a> {
+/// One part's data, 1/sr: for Klems `values[outgoing * n + incident]`; for a tree its grid.
+pub struct DocumentPart<'a> {
     pub side: Side,
     pub values: &'a [f64],
 }
 
-/// What the file says about the device besides its data.
-pub struct KlemsDocument<'a> {
+/// How the data is organised.
+#[derive(Clone, Copy)]
+pub enum DocumentData<'a> {
+    /// Klems matrices over this basis (incident and outgoing).
+    Klems(&'a AngleBasis),
+    /// A `TensorTree3` (dims 3, isotropic) or `TensorTree4` grid of 2^log2_res cells per
+    /// dimension.
+    TensorTree { dims: u32, log2_res: u32 },
+}
+/// What the file says about the device, and its data.
+pub struct BsdfDocument<'a> {
     /// `<Name>`.
     pub name: &'a str,
     /// The command that made it, kept as an XML comment (as genBSDF does).
@@ -25,17 +36,27 @@ pub struct KlemsDocument<'a> {
     pub thickness: f64,
     pub width: f64,
     pub height: f64,
-    pub basis: &'a AngleBasis,
-    pub parts: Vec<KlemsPart<'a>>,
+    pub data: DocumentData<'a>,
+    pub parts: Vec<DocumentPart<'a>>,
 }
 
-/// The XML text of `doc`, visible band. Fails when a part's size is not the basis's square.
-pub fn klems_xml(doc: &KlemsDocument) -> Result<String, String> {
-    let n = doc.basis.len();
+/// The XML text of `doc`, visible band. Fails when a part's size does not fit the data's.
+pub fn bsdf_xml(doc: &BsdfDocument) -> Result<String, String> {
+    let (expected, row) = match doc.data {
+        DocumentData::Klems(basis) => (basis.len() * basis.len(), basis.len()),
+        DocumentData::TensorTree { dims, log2_res } => {
+            if !(3..=4).contains(&dims) || log2_res == 0 || dims * log2_res > 24 {
+                return Err(format!(
+                    "a {dims}-D tree of 2^{log2_res} cells per dimension"
+                ));
+            }
+            (1 << (dims * log2_res), 1 << log2_res)
+        }
+    };
     for part in &doc.parts {
-        if part.values.len() != n * n {
+        if part.values.len() != expected {
             return Err(format!(
-                "{}: {} values for a {n}-patch basis",
+                "{}: {} values where the data needs {expected}",
                 part.side.window_label(),
                 part.values.len()
             ));
@@ -44,7 +65,6 @@ pub fn klems_xml(doc: &KlemsDocument) -> Result<String, String> {
     let mut s = String::new();
     let comment = doc.created_by.replace("--", "- -");
     let name = escape(doc.name);
-    let basis = escape(&doc.basis.name);
     let unit = escape(doc.unit);
     // `write!` into a String cannot fail.
     let _ = write!(
@@ -61,12 +81,71 @@ pub fn klems_xml(doc: &KlemsDocument) -> Result<String, String> {
          \t\t<Thickness unit=\"{unit}\">{}</Thickness>\n\
          \t\t<Width unit=\"{unit}\">{}</Width>\n\
          \t\t<Height unit=\"{unit}\">{}</Height>\n\
-         \t</Material>\n\t<Geometry></Geometry>\n\t<DataDefinition>\n\
-         \t\t<IncidentDataStructure>Columns</IncidentDataStructure>\n\
-         \t\t<AngleBasis>\n\t\t\t<AngleBasisName>{basis}</AngleBasisName>\n",
+         \t</Material>\n\t<Geometry></Geometry>\n\t<DataDefinition>\n",
         doc.thickness, doc.width, doc.height
     );
-    for (lower, upper, n_phis) in doc.basis.rings() {
+    let basis_line = match doc.data {
+        DocumentData::Klems(basis) => {
+            definition(&mut s, basis);
+            let name = escape(&basis.name);
+            format!(
+                "\t\t\t<ColumnAngleBasis>{name}</ColumnAngleBasis>\n\
+                 \t\t\t<RowAngleBasis>{name}</RowAngleBasis>\n"
+            )
+        }
+        DocumentData::TensorTree { dims, .. } => {
+            let _ = write!(
+                s,
+                "\t\t<IncidentDataStructure>TensorTree{dims}</IncidentDataStructure>\n\
+                 \t</DataDefinition>\n"
+            );
+            "\t\t\t<AngleBasis>LBNL/Shirley-Chiu</AngleBasis>\n".to_string()
+        }
+    };
+    for part in &doc.parts {
+        let _ = write!(
+            s,
+            "\t<WavelengthData>\n\t\t<LayerNumber>System</LayerNumber>\n\
+             \t\t<Wavelength unit=\"Integral\">Visible</Wavelength>\n\
+             \t\t<SourceSpectrum>CIE Illuminant D65 1nm.ssp</SourceSpectrum>\n\
+             \t\t<DetectorSpectrum>ASTM E308 1931 Y.dsp</DetectorSpectrum>\n\
+             \t\t<WavelengthDataBlock>\n\
+             \t\t\t<WavelengthDataDirection>{}</WavelengthDataDirection>\n\
+             {basis_line}\
+             \t\t\t<ScatteringDataType>BTDF</ScatteringDataType>\n\
+             \t\t\t<ScatteringData>\n",
+            part.side.window_label()
+        );
+        let tree = matches!(doc.data, DocumentData::TensorTree { .. });
+        if tree {
+            s.push_str("{\n");
+        }
+        for chunk in part.values.chunks(row) {
+            for v in chunk {
+                // Negative zero and noise below f32's range are written as 0.
+                let v = if v.abs() < 1e-30 { 0.0 } else { *v };
+                let _ = write!(s, "{v:.6e}\t");
+            }
+            s.push('\n');
+        }
+        if tree {
+            s.push_str("}\n");
+        }
+        s.push_str("\t\t\t</ScatteringData>\n\t\t</WavelengthDataBlock>\n\t</WavelengthData>\n");
+    }
+    s.push_str("</Layer>\n</Optical>\n</WindowElement>\n");
+    Ok(s)
+}
+
+/// The `IncidentDataStructure` and `AngleBasis` of Klems data.
+fn definition(s: &mut String, basis: &AngleBasis) {
+    let name = escape(&basis.name);
+    let _ = write!(
+        s,
+        "\t\t<IncidentDataStructure>Columns</IncidentDataStructure>\n\
+         \t\t<AngleBasis>\n\t\t\t<AngleBasisName>{name}</AngleBasisName>\n"
+    );
+    for (lower, upper, n_phis) in basis.rings() {
         let centre = if lower == 0.0 {
             0.0
         } else {
@@ -82,33 +161,6 @@ pub fn klems_xml(doc: &KlemsDocument) -> Result<String, String> {
         );
     }
     s.push_str("\t\t</AngleBasis>\n\t</DataDefinition>\n");
-    for part in &doc.parts {
-        let _ = write!(
-            s,
-            "\t<WavelengthData>\n\t\t<LayerNumber>System</LayerNumber>\n\
-             \t\t<Wavelength unit=\"Integral\">Visible</Wavelength>\n\
-             \t\t<SourceSpectrum>CIE Illuminant D65 1nm.ssp</SourceSpectrum>\n\
-             \t\t<DetectorSpectrum>ASTM E308 1931 Y.dsp</DetectorSpectrum>\n\
-             \t\t<WavelengthDataBlock>\n\
-             \t\t\t<WavelengthDataDirection>{}</WavelengthDataDirection>\n\
-             \t\t\t<ColumnAngleBasis>{basis}</ColumnAngleBasis>\n\
-             \t\t\t<RowAngleBasis>{basis}</RowAngleBasis>\n\
-             \t\t\t<ScatteringDataType>BTDF</ScatteringDataType>\n\
-             \t\t\t<ScatteringData>\n",
-            part.side.window_label()
-        );
-        for row in part.values.chunks(n) {
-            for v in row {
-                // Negative zero and noise below f32's range are written as 0.
-                let v = if v.abs() < 1e-30 { 0.0 } else { *v };
-                let _ = write!(s, "{v:.6e}\t");
-            }
-            s.push('\n');
-        }
-        s.push_str("\t\t\t</ScatteringData>\n\t\t</WavelengthDataBlock>\n\t</WavelengthData>\n");
-    }
-    s.push_str("</Layer>\n</Optical>\n</WindowElement>\n");
-    Ok(s)
 }
 
 /// `text` with XML's special characters escaped.

@@ -2,7 +2,9 @@
 //! compare whole rooms (our own rooms, the corpus rooms).
 #![allow(dead_code)]
 
-use super::radiance::{agreement_failures, check_output, radiance_or_skip, rtrace_lux_runs, tool};
+use super::radiance::{
+    agreement_failures_within, check_output, radiance_or_skip, rtrace_lux_runs, tool,
+};
 use skylux_hps::engine::{self, Settings, World};
 use skylux_hps::scene;
 use std::path::{Path, PathBuf};
@@ -60,13 +62,14 @@ pub fn compare_with_rtrace(
     effort: &Effort,
 ) {
     compare_with_rtrace_from(
-        label, room_files, sky_text, sensors, scene_dir, scene_dir, work_dir, effort,
+        label, room_files, sky_text, sensors, scene_dir, scene_dir, work_dir, effort, None,
     );
 }
 
 /// [`compare_with_rtrace`] with the room's files read from `rtrace_dir` by rtrace and from
 /// `our_dir` by the engine: the same scene text naming different data (a BSDF XML made by
-/// genBSDF for rtrace, by `skylux genbsdf` for us).
+/// genBSDF for rtrace, by `skylux genbsdf` for us), judged within `band` (a fraction) when
+/// given (see `agreement_failures_within`).
 #[allow(clippy::too_many_arguments)]
 pub fn compare_with_rtrace_from(
     label: &str,
@@ -77,6 +80,7 @@ pub fn compare_with_rtrace_from(
     our_dir: &Path,
     work_dir: &Path,
     effort: &Effort,
+    band: Option<f64>,
 ) {
     let scene_dir = rtrace_dir;
     let Some((bin, lib)) = radiance_or_skip() else {
@@ -136,7 +140,7 @@ pub fn compare_with_rtrace_from(
         ours.iter().all(|o| o.illuminance_lux > 1.0),
         "{label}: every sensor is lit: {ours:?}"
     );
-    let mut failures = agreement_failures(label, &ours, &reference, effort.k_sigma);
+    let mut failures = agreement_failures_within(label, &ours, &reference, effort.k_sigma, band);
     if !failures.is_empty() {
         // rtrace's estimates are heavy-tailed where a sensor sees a sun patch: now and then all
         // of a sensor's few estimates miss its rare bright paths, and the mean and its spread
@@ -156,7 +160,7 @@ pub fn compare_with_rtrace_from(
             effort.rtrace_args,
             4 * effort.rtrace_samples,
         );
-        failures = agreement_failures(label, &ours, &second, effort.k_sigma);
+        failures = agreement_failures_within(label, &ours, &second, effort.k_sigma, band);
     }
     assert!(failures.is_empty(), "{label}: {failures:?}");
 }

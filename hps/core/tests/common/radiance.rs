@@ -319,6 +319,19 @@ pub fn agreement_failures(
     reference: &[(f64, f64)],
     k_sigma: f64,
 ) -> Vec<String> {
+    agreement_failures_within(label, ours, reference, k_sigma, None)
+}
+
+/// [`agreement_failures`] for two scenes that differ by design (the same device as two
+/// independently sampled BSDFs): with `band`, each sensor within that fraction of rtrace or
+/// k σ, and the mean relative difference within it, instead of 2 % and the shared-bias test.
+pub fn agreement_failures_within(
+    label: &str,
+    ours: &[skylux_hps::engine::SensorIlluminance],
+    reference: &[(f64, f64)],
+    k_sigma: f64,
+    band: Option<f64>,
+) -> Vec<String> {
     assert_eq!(
         ours.len(),
         reference.len(),
@@ -332,13 +345,14 @@ pub fn agreement_failures(
     variances.sort_by(f64::total_cmp);
     let pooled_variance = variances[variances.len() / 2];
     let mut failures = Vec::new();
-    let mut z_sum = 0.0;
+    let (mut z_sum, mut relative_sum) = (0.0, 0.0);
     for (o, (r, r_se)) in ours.iter().zip(reference) {
         let diff = o.illuminance_lux - r;
         let rtrace_variance = 0.5 * (r_se * r_se + pooled_variance);
         let combined = (o.stderr_lux.powi(2) + rtrace_variance).sqrt();
-        let allowed = (0.02 * r).max(k_sensor * combined);
+        let allowed = (band.unwrap_or(0.02) * r).max(k_sensor * combined);
         z_sum += diff / combined;
+        relative_sum += diff / r;
         println!(
             "  {label} {}: ours {:.1} ± {:.1} lux, rtrace {:.1} ± {:.1} lux (moderated ± {:.1}), diff {:+.2} % ({:+.2} σ)",
             o.name,
@@ -356,6 +370,18 @@ pub fn agreement_failures(
                 o.name, o.illuminance_lux, r
             ));
         }
+    }
+    if let Some(band) = band {
+        let mean = relative_sum / n;
+        println!(
+            "  {label}: mean difference {:+.2} % (allowed ±{:.1} %)",
+            100.0 * mean,
+            100.0 * band
+        );
+        if mean.abs() > band {
+            failures.push(format!("the mean difference {:+.2} %", 100.0 * mean));
+        }
+        return failures;
     }
     let set_z = z_sum / n.sqrt();
     println!(
