@@ -23,6 +23,9 @@ enum BenchWhat {
     /// The ray-box unit: tests per cycle in cycle-accurate simulation with memory stalls,
     /// Cyclone V resources, projected tests/s next to the software slab test, false misses.
     Raybox(crate::bench_raybox::RayboxBenchArgs),
+    /// `skylux genbsdf` against the pyradiance port of genBSDF, same device, box and rays
+    /// per patch: both times, the ratio, the files' per-patch differences.
+    Genbsdf(crate::bench_genbsdf::GenbsdfBenchArgs),
     /// The illuminance engine against rtrace at equal error (1 % RMS against a converged
     /// rtrace reference) on the reference room: times, errors and the ratio.
     Illuminance(crate::bench_illuminance::IlluminanceBenchArgs),
@@ -70,6 +73,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         BenchWhat::Dc { json, repeat } => crate::dc::bench(*json, (*repeat).max(1)),
         BenchWhat::States { json, repeat } => crate::dc_phase::bench(*json, (*repeat).max(1)),
         BenchWhat::Illuminance(args) => crate::bench_illuminance::run(args),
+        BenchWhat::Genbsdf(args) => crate::bench_genbsdf::run(args),
         BenchWhat::Render(args) => crate::bench_render::run(args),
         BenchWhat::Loop(args) => crate::bench_loop::run(args),
     }

@@ -150,16 +150,10 @@ pub fn run(args: &GenBsdfArgs) -> anyhow::Result<()> {
         write_documents(args, &doc, &g.parts, &created_by)?;
         let res = 1usize << g.log2_res;
         println!(
-            "{}: TensorTree{} of {res} cells per dimension (box x {}..{} y {}..{} z {}..{} {}), {} rays per incident cell",
+            "{}: TensorTree{} of {res} cells per dimension ({}), {} rays per incident cell",
             args.out.display(),
             kind.dims(),
-            sampling.min.x,
-            sampling.max.x,
-            sampling.min.y,
-            sampling.max.y,
-            sampling.min.z,
-            sampling.max.z,
-            args.geom,
+            describe_box(&sampling, &args.geom),
             g.samples_per_cell
         );
         let n_in = g.parts[0].n_incident;
@@ -260,18 +254,12 @@ fn report(
 ) {
     let n = generated.basis.len();
     println!(
-        "{}: {} x {} {} (box x {}..{} y {}..{} z {}..{} {}), {} rays per patch",
+        "{}: {} x {} {} ({}), {} rays per patch",
         args.out.display(),
         n,
         n,
         generated.basis.name,
-        sampling.min.x,
-        sampling.max.x,
-        sampling.min.y,
-        sampling.max.y,
-        sampling.min.z,
-        sampling.max.z,
-        args.geom,
+        describe_box(sampling, &args.geom),
         generated.samples_per_patch
     );
     summary(&generated.parts, doc, n, |side, i| {
@@ -320,6 +308,28 @@ fn summary(
             if written { "" } else { "   (zero: left out)" }
         );
     }
+}
+
+/// "box x A..B y C..D z E..F unit", to six decimals.
+fn describe_box(b: &SamplingBox, unit: &str) -> String {
+    let f = |v: f64| {
+        let t = format!("{v:.6}");
+        let t = t.trim_end_matches('0').trim_end_matches('.').to_string();
+        if t == "-0" {
+            "0".to_string()
+        } else {
+            t
+        }
+    };
+    format!(
+        "box x {}..{} y {}..{} z {}..{} {unit}",
+        f(b.min.x),
+        f(b.max.x),
+        f(b.min.y),
+        f(b.max.y),
+        f(b.min.z),
+        f(b.max.z)
+    )
 }
 
 fn command_line() -> String {

@@ -2,6 +2,7 @@
 
 mod bench;
 mod bench_capture;
+mod bench_genbsdf;
 mod bench_illuminance;
 mod bench_loop;
 mod bench_raybox;
@@ -90,6 +91,7 @@ enum Command {
 }
 
 fn main() -> anyhow::Result<()> {
+    quiet_on_closed_pipe();
     match Cli::parse().command {
         Command::Demo { out } => demo::run(&out),
         Command::Dc(args) => dc::run(&args),
@@ -108,5 +110,16 @@ fn main() -> anyhow::Result<()> {
         Command::Scene(args) => scene_check::run(&args),
         Command::Solpos(args) => solpos::run(&args),
         Command::Sun(args) => sun_cmd::run(&args),
+    }
+}
+
+/// `skylux ... | head` ends quietly when the reader goes, as other Unix tools do, instead of
+/// panicking in `println!` on the broken pipe: SIGPIPE back to its default action (Rust
+/// starts programs with it ignored).
+fn quiet_on_closed_pipe() {
+    #[cfg(unix)]
+    // SAFETY: called first in main, before any thread starts; SIG_DFL is a valid handler.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
     }
 }
