@@ -125,11 +125,17 @@ pub fn generate_tensor_tree(
     settings: &GenBsdfSettings,
     progress: &(dyn Fn(u64, u64) + Sync),
 ) -> Result<GeneratedTree, EngineError> {
-    if !(2..=6).contains(&log2_res) {
+    // A t4 grid of 64 cells per dimension is 16.7 M values per part (a gigabyte with the
+    // errors of four parts): the limit is 32, genBSDF's default being 16.
+    let (largest, expected) = match kind {
+        TreeKind::Isotropic => (6, "2 to 6 (4 to 64 cells per dimension) for t3"),
+        TreeKind::Anisotropic => (5, "2 to 5 (4 to 32 cells per dimension) for t4"),
+    };
+    if !(2..=largest).contains(&log2_res) {
         return Err(EngineError::Setting {
             name: "tensor tree resolution (log2)",
             value: log2_res.to_string(),
-            expected: "2 to 6 (4 to 64 cells per dimension)",
+            expected,
         });
     }
     let cells = TreeCells {
