@@ -207,21 +207,47 @@ fn require_dtc() -> bool {
 
 #[test]
 fn device_tree_overlay_compiles() {
+    overlay_compiles(
+        "skylux-overlay.dts",
+        &[
+            "compatible = \"generic-uio\"",
+            "reg = <0xff200000 0x00200000>",
+            "interrupts = <0 40 4>",
+            "no-map",
+            "bridge-enable = <1>",
+        ],
+    );
+}
+
+/// The variant with the frame buffer through u-dma-buf, cached (hardware.dma_device).
+#[test]
+fn device_tree_overlay_for_udmabuf_compiles() {
+    overlay_compiles(
+        "skylux-overlay-udmabuf.dts",
+        &[
+            "compatible = \"generic-uio\"",
+            "compatible = \"ikwzm,u-dma-buf\"",
+            "device-name = \"udmabuf0\"",
+            "compatible = \"shared-dma-pool\"",
+            "reg = <0x38000000 0x08000000>",
+            "memory-region = <&skylux_dma>",
+            "bridge-enable = <1>",
+        ],
+    );
+}
+
+fn overlay_compiles(file: &str, needles: &[&str]) {
     if !require_dtc() {
         return;
     }
-    let dts = Path::new(env!("CARGO_MANIFEST_DIR")).join("linux/skylux-overlay.dts");
+    let dts = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("linux")
+        .join(file);
     let text = read(&dts);
-    for needle in [
-        "compatible = \"generic-uio\"",
-        "reg = <0xff200000 0x00200000>",
-        "interrupts = <0 40 4>",
-        "no-map",
-        "bridge-enable = <1>",
-    ] {
-        assert!(text.contains(needle), "overlay lacks `{needle}`");
+    for needle in needles {
+        assert!(text.contains(needle), "{file} lacks `{needle}`");
     }
-    let out_file = std::env::temp_dir().join(format!("skylux-overlay-{}.dtbo", std::process::id()));
+    let out_file = std::env::temp_dir().join(format!("{file}-{}.dtbo", std::process::id()));
     let out = Command::new("dtc")
         .args(["-@", "-I", "dts", "-O", "dtb", "-o"])
         .arg(&out_file)

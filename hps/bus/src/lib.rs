@@ -3,16 +3,19 @@
 //! Two traits: [`RegisterBus`] for the 32-bit registers behind the lightweight bridge and
 //! [`DmaMemory`] for the buffers the fabric writes through the FPGA-to-SDRAM port. Drivers
 //! are written against the traits only, so the same driver runs on the DE1-SoC
-//! ([`mapped::MappedWindow`] over `/dev/mem` or a UIO device), on an ordinary file in tests,
+//! ([`mapped::MappedWindow`] over `/dev/mem` or a UIO device, [`udmabuf::UdmabufWindow`] over
+//! u-dma-buf with explicit cache maintenance), on an ordinary file in tests,
 //! and against the cycle-accurate fabric model (`skylux-sim`).
 
 pub mod error;
 pub mod mapped;
 pub mod registers;
+pub mod udmabuf;
 
 pub use error::BusError;
 pub use mapped::MappedWindow;
 pub use registers::RegisterAccess;
+pub use udmabuf::UdmabufWindow;
 
 /// 32-bit register access in the register window.
 pub trait RegisterBus {

@@ -284,6 +284,12 @@ pub struct HardwareConfig {
     /// `/dev/uioN` of the register window (its map 0) and interrupt; `/dev/mem` when absent.
     #[serde(default)]
     pub uio_device: Option<PathBuf>,
+    /// `/dev/udmabufN` (the u-dma-buf driver on the reserved region, bitstream/README.md):
+    /// the frame buffer mapped cached, each read preceded by an invalidation of its range and
+    /// each write followed by a clean (skylux_bus::udmabuf); its buffer must lie inside
+    /// `dma_base`/`dma_size`. Absent: `/dev/mem` with `O_SYNC`, uncached.
+    #[serde(default)]
+    pub dma_device: Option<PathBuf>,
     /// Unprivileged user and group to run as once the windows are mapped.
     #[serde(default = "default_user")]
     pub user: String,
@@ -315,6 +321,7 @@ impl Default for HardwareConfig {
             dma_base: default_dma_base(),
             dma_size: default_dma_size(),
             uio_device: None,
+            dma_device: None,
             user: default_user(),
             group: None,
         }
@@ -1013,6 +1020,18 @@ impl HardwareConfig {
                 ),
             );
         }
+        if let Some(d) = &h.dma_device {
+            let ok = d
+                .to_str()
+                .and_then(|s| s.strip_prefix("/dev/udmabuf"))
+                .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()));
+            if !ok {
+                return refuse(
+                    "dma_device",
+                    format!("{}: expected /dev/udmabufN (u-dma-buf)", d.display()),
+                );
+            }
+        }
         let end = h.dma_base.checked_add(h.dma_size);
         let reserved_end = DMA_RESERVED_BASE + DMA_RESERVED_SIZE;
         if h.dma_size == 0
@@ -1281,6 +1300,19 @@ dir = "out"
         assert!(with("dma_base = 0x3C000000\ndma_size = 0x04000000").is_ok());
         assert!(with("uio_device = \"/dev/uio0\"").is_ok());
         assert!(with("uio_device = \"/dev/mem\"").is_err());
+        // The cached frame buffer only through u-dma-buf's device.
+        assert!(with("dma_device = \"/dev/udmabuf0\"").is_ok());
+        for bad in [
+            "/dev/mem",
+            "/dev/udmabuf",
+            "/dev/udmabuf0/../mem",
+            "udmabuf0",
+        ] {
+            let e = with(&format!("dma_device = \"{bad}\""))
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains("hardware.dma_device"), "{bad}: {e}");
+        }
         assert!(with("user = \"root\"").is_err());
     }
 
