@@ -59,26 +59,67 @@ pub fn run(args: &GenbsdfBenchArgs) -> anyhow::Result<()> {
     std::fs::write(&our_path, bsdf_xml(&doc).map_err(anyhow::Error::msg)?)?;
 
     let their_path = work.path().join("theirs.xml");
+    let start = Instant::now();
+    run_port(&device, work.path(), args.samples, &d, &their_path)?;
+    let theirs_s = start.elapsed().as_secs_f64();
+    let (worst, rms) = hemispherical_differences(&basis, &our_path, &their_path)?;
+    let ratio = ours_s / theirs_s;
+    if args.json {
+        println!(
+            "{{\"samples_per_patch\":{},\"ours_s\":{ours_s:.3},\"pyradiance_genbsdf_s\":{theirs_s:.3},\"ratio\":{ratio:.5},\"largest_hemispherical_difference\":{worst:.4},\"rms_hemispherical_difference\":{rms:.4}}}",
+            args.samples
+        );
+    } else {
+        println!(
+            "device {} box {:?}, {} rays per patch, Klems full, both sides",
+            device.display(),
+            d,
+            args.samples
+        );
+        println!("skylux genbsdf            {ours_s:9.3} s");
+        println!("pyradiance genbsdf (2 procs) {theirs_s:6.3} s");
+        println!("ratio                     {ratio:9.5}");
+        println!("per-patch R and T apart: largest {worst:.4}, RMS {rms:.4} (both files' noise)");
+    }
+    Ok(())
+}
+
+/// The pyradiance port of genBSDF on `device` within `d`, `samples` rays per patch, its XML
+/// written to `out`.
+fn run_port(
+    device: &std::path::Path,
+    work: &std::path::Path,
+    samples: u32,
+    d: &[f64],
+    out: &std::path::Path,
+) -> anyhow::Result<()> {
     let script = "import sys\n\
         from pyradiance import genbsdf as g\n\
         d = [float(x) for x in sys.argv[4:10]]\n\
         res = g.generate_bsdf(sys.argv[1], nsamp=int(sys.argv[2]), nproc=2, \
         dim=g.SamplingBox(*d))\n\
         open(sys.argv[3], 'wb').write(g.generate_xml(vis_results=res, basis='kf'))\n";
-    let start = Instant::now();
     let status = std::process::Command::new("python3")
-        .current_dir(device.parent().unwrap_or(work.path()))
+        .current_dir(device.parent().unwrap_or(work))
         .args(["-c", script])
-        .arg(&device)
-        .arg(args.samples.to_string())
-        .arg(&their_path)
+        .arg(device)
+        .arg(samples.to_string())
+        .arg(out)
         .args([d[0], d[1], d[2], d[3], d[4], d[5]].map(|v| v.to_string()))
         .status()
         .context("python3 (pip install pyradiance)")?;
     anyhow::ensure!(status.success(), "pyradiance.genbsdf failed");
-    let theirs_s = start.elapsed().as_secs_f64();
+    Ok(())
+}
 
-    let (mine, theirs) = (Bsdf::load(&our_path)?, Bsdf::load(&their_path)?);
+/// The largest and the RMS difference of the two files' directional-hemispherical R and T
+/// over the patch centres of every part.
+fn hemispherical_differences(
+    basis: &AngleBasis,
+    ours: &std::path::Path,
+    theirs: &std::path::Path,
+) -> anyhow::Result<(f64, f64)> {
+    let (mine, theirs) = (Bsdf::load(ours)?, Bsdf::load(theirs)?);
     let mut worst = 0.0f64;
     let mut sum_sq = (0.0, 0usize);
     for side in [
@@ -99,24 +140,5 @@ pub fn run(args: &GenbsdfBenchArgs) -> anyhow::Result<()> {
             sum_sq = (sum_sq.0 + diff * diff, sum_sq.1 + 1);
         }
     }
-    let rms = (sum_sq.0 / sum_sq.1 as f64).sqrt();
-    let ratio = ours_s / theirs_s;
-    if args.json {
-        println!(
-            "{{\"samples_per_patch\":{},\"ours_s\":{ours_s:.3},\"pyradiance_genbsdf_s\":{theirs_s:.3},\"ratio\":{ratio:.5},\"largest_hemispherical_difference\":{worst:.4},\"rms_hemispherical_difference\":{rms:.4}}}",
-            args.samples
-        );
-    } else {
-        println!(
-            "device {} box {:?}, {} rays per patch, Klems full, both sides",
-            device.display(),
-            d,
-            args.samples
-        );
-        println!("skylux genbsdf            {ours_s:9.3} s");
-        println!("pyradiance genbsdf (2 procs) {theirs_s:6.3} s");
-        println!("ratio                     {ratio:9.5}");
-        println!("per-patch R and T apart: largest {worst:.4}, RMS {rms:.4} (both files' noise)");
-    }
-    Ok(())
+    Ok((worst, (sum_sq.0 / sum_sq.1 as f64).sqrt()))
 }

@@ -8,7 +8,7 @@ use glam::DVec3;
 use skylux_hps::bsdf::{bsdf_xml, AngleBasis, BsdfDocument, DocumentPart, Side};
 use skylux_hps::engine::genbsdf::{
     generate_klems, generate_tensor_tree, Asymmetry, GenBsdfSettings, GeneratedBsdf, GeneratedPart,
-    SamplingBox, TreeKind,
+    GeneratedTree, SamplingBox, TreeKind,
 };
 use skylux_hps::engine::World;
 use skylux_hps::scene;
@@ -132,39 +132,53 @@ pub fn run(args: &GenBsdfArgs) -> anyhow::Result<()> {
         bar.set_position(d);
     };
     if let Some(tree) = args.tree {
-        let kind = match tree {
-            Tree::T3 => TreeKind::Isotropic,
-            Tree::T4 => TreeKind::Anisotropic,
-        };
         let g = generate_tensor_tree(
             &world,
             &sampling,
-            kind,
+            tree_kind(tree),
             args.tree_log2,
             &settings,
             &progress,
         )?;
         bar.finish_and_clear();
-        let grids = g.grids();
-        let doc = g.document(&grids, &name, &created_by, &args.geom, &sampling);
-        write_documents(args, &doc, &g.parts, &created_by)?;
-        let res = 1usize << g.log2_res;
-        println!(
-            "{}: TensorTree{} of {res} cells per dimension ({}), {} rays per incident cell",
-            args.out.display(),
-            kind.dims(),
-            describe_box(&sampling, &args.geom),
-            g.samples_per_cell
-        );
-        let n_in = g.parts[0].n_incident;
-        summary(&g.parts, &doc, n_in, |side, i| g.hemispherical(side, i));
-        return Ok(());
+        return write_tree(args, &g, &sampling, &name, &created_by);
     }
     let generated = generate_klems(&world, &sampling, &basis, &settings, &progress)?;
     bar.finish_and_clear();
     let doc = generated.document(&name, &created_by, &args.geom, &sampling);
     write_documents(args, &doc, &generated.parts, &created_by)?;
     report(&generated, &doc, &sampling, args);
+    Ok(())
+}
+
+fn tree_kind(tree: Tree) -> TreeKind {
+    match tree {
+        Tree::T3 => TreeKind::Isotropic,
+        Tree::T4 => TreeKind::Anisotropic,
+    }
+}
+
+/// Writes a sampled tree (and its errors) and prints its summary.
+fn write_tree(
+    args: &GenBsdfArgs,
+    g: &GeneratedTree,
+    sampling: &SamplingBox,
+    name: &str,
+    created_by: &str,
+) -> anyhow::Result<()> {
+    let grids = g.grids();
+    let doc = g.document(&grids, name, created_by, &args.geom, sampling);
+    write_documents(args, &doc, &g.parts, created_by)?;
+    println!(
+        "{}: TensorTree{} of {} cells per dimension ({}), {} rays per incident cell",
+        args.out.display(),
+        g.kind.dims(),
+        1usize << g.log2_res,
+        describe_box(sampling, &args.geom),
+        g.samples_per_cell
+    );
+    let n_in = g.parts[0].n_incident;
+    summary(&g.parts, &doc, n_in, |side, i| g.hemispherical(side, i));
     Ok(())
 }
 

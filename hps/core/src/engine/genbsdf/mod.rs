@@ -312,16 +312,7 @@ fn sample_cell(
         let count = BATCH.min(settings.samples_per_patch - b * BATCH);
         let strata = if count == BATCH { STRATA } else { 0 };
         for i in 0..count {
-            let u = if strata > 0 {
-                let (a, c) = (i % strata, i / strata);
-                [
-                    (f64::from(a) + rng.uniform()) / f64::from(strata),
-                    (f64::from(c) + rng.uniform()) / f64::from(strata),
-                ]
-            } else {
-                [rng.uniform(), rng.uniform()]
-            };
-            let incident = cells.incident(front, cell, u);
+            let incident = cells.incident(front, cell, stratified(i, strata, &mut rng));
             let origin = DVec3::new(
                 sampling.min.x + rng.uniform() * size.x,
                 sampling.min.y + rng.uniform() * size.y,
@@ -339,20 +330,34 @@ fn sample_cell(
                     path.push((out_bin(out_front, c, n_out), bright(w)));
                 }
             });
-            // A path may leave more than once (a split at glass): its flux per bin is one draw.
-            path.sort_unstable_by_key(|e| e.0);
-            let mut k = 0;
-            while k < path.len() {
-                let bin = path[k].0;
-                let mut w = 0.0;
-                while k < path.len() && path[k].0 == bin {
-                    w += path[k].1;
-                    k += 1;
-                }
-                sums.sum[bin] += w;
-                sums.sum_sq[bin] += w * w;
-            }
+            sums.add_path(&mut path);
         }
     }
     sums
+}
+
+/// Sample `i` of a batch stratified `strata` × `strata` over the unit square (plain uniform
+/// numbers for `strata` 0).
+fn stratified(i: u32, strata: u32, rng: &mut Rng) -> [f64; 2] {
+    if strata == 0 {
+        return [rng.uniform(), rng.uniform()];
+    }
+    let (a, c) = (i % strata, i / strata);
+    [
+        (f64::from(a) + rng.uniform()) / f64::from(strata),
+        (f64::from(c) + rng.uniform()) / f64::from(strata),
+    ]
+}
+
+impl CellSums {
+    /// Adds one path's escapes (bin, flux): a path may leave more than once (a split at
+    /// glass), and its flux per bin is one draw of the estimator.
+    fn add_path(&mut self, path: &mut [(usize, f64)]) {
+        path.sort_unstable_by_key(|e| e.0);
+        for group in path.chunk_by(|a, b| a.0 == b.0) {
+            let w: f64 = group.iter().map(|e| e.1).sum();
+            self.sum[group[0].0] += w;
+            self.sum_sq[group[0].0] += w * w;
+        }
+    }
 }

@@ -219,3 +219,69 @@ impl GeneratedTree {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene;
+
+    #[test]
+    fn nothing_in_the_box_transmits_every_cell_whole_and_t4_onto_its_own_cell() {
+        let world = World::new(
+            &scene::parse(
+                "empty.rad",
+                b"void polygon nothing 0 0 12 5 5 -3  -5 5 -3  -5 -5 -3  5 -5 -3\n",
+            )
+            .unwrap(),
+        )
+        .unwrap();
+        let sampling = SamplingBox {
+            min: DVec3::new(-0.5, -0.5, -0.1),
+            max: DVec3::new(0.5, 0.5, 0.0),
+        };
+        let settings = GenBsdfSettings {
+            samples_per_patch: 64,
+            ..Default::default()
+        };
+        for kind in [TreeKind::Isotropic, TreeKind::Anisotropic] {
+            let g =
+                generate_tensor_tree(&world, &sampling, kind, 3, &settings, &|_, _| {}).unwrap();
+            for side in [Side::FrontTransmission, Side::BackTransmission] {
+                let part = g.part(side).unwrap();
+                for i in 0..part.n_incident {
+                    let (t, se) = g.hemispherical(side, i).unwrap();
+                    assert!((t - 1.0).abs() < 1e-9, "{kind:?} {side:?} {i}: {t}");
+                    if kind == TreeKind::Anisotropic {
+                        // (An isotropic cell's rays land in neighbouring outgoing cells as
+                        // their sin θ varies over it: per cell a spread, in sum exactly 1.)
+                        assert!(se < 1e-9, "{side:?} {i}: σ {se}");
+                        // The square point of the reversed incident is the outgoing one.
+                        let own = part.values[i * part.n_incident + i] * PI / 64.0;
+                        assert!((own - 1.0).abs() < 1e-9, "{side:?} cell {i}: {own}");
+                    }
+                }
+            }
+            // The grid as written: an isotropic tree's upper half of dimension 0 is zero.
+            for (_, grid) in g.grids() {
+                assert_eq!(grid.len(), 1 << (kind.dims() * 3));
+                if kind == TreeKind::Isotropic {
+                    assert!(grid[grid.len() / 2..].iter().all(|&v| v == 0.0));
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn resolutions_beyond_the_memory_limit_are_refused() {
+        let world = World::new(&scene::parse("e.rad", b"").unwrap()).unwrap();
+        let sampling = SamplingBox {
+            min: DVec3::new(-0.5, -0.5, -0.1),
+            max: DVec3::new(0.5, 0.5, 0.0),
+        };
+        let s = GenBsdfSettings::default();
+        let go = |kind, log2| generate_tensor_tree(&world, &sampling, kind, log2, &s, &|_, _| {});
+        assert!(go(TreeKind::Anisotropic, 6).is_err());
+        assert!(go(TreeKind::Isotropic, 7).is_err());
+        assert!(go(TreeKind::Anisotropic, 1).is_err());
+    }
+}
