@@ -146,7 +146,8 @@ pub fn run(args: &GenBsdfArgs) -> anyhow::Result<()> {
     let generated = generate_klems(&world, &sampling, &basis, &settings, &progress)?;
     bar.finish_and_clear();
     let doc = generated.document(&name, &created_by, &args.geom, &sampling);
-    write_documents(args, &doc, &generated.parts, &created_by)?;
+    let layout = |p: &GeneratedPart| p.standard_error.clone();
+    write_documents(args, &doc, &generated.parts, &created_by, &layout)?;
     report(&generated, &doc, &sampling, args);
     Ok(())
 }
@@ -168,7 +169,9 @@ fn write_tree(
 ) -> anyhow::Result<()> {
     let grids = g.grids();
     let doc = g.document(&grids, name, created_by, &args.geom, sampling);
-    write_documents(args, &doc, &g.parts, created_by)?;
+    // A tree's grid is incident-major: the errors are laid out as its values are.
+    let layout = |p: &GeneratedPart| g.grid_of(p, &p.standard_error);
+    write_documents(args, &doc, &g.parts, created_by, &layout)?;
     println!(
         "{}: TensorTree{} of {} cells per dimension ({}), {} rays per incident cell",
         args.out.display(),
@@ -182,12 +185,14 @@ fn write_tree(
     Ok(())
 }
 
-/// The BSDF and, with --errors, its standard errors in the same layout.
+/// The BSDF and, with --errors, its standard errors in the same layout (`layout` turns a
+/// part's standard errors into what the file holds for it).
 fn write_documents(
     args: &GenBsdfArgs,
     doc: &BsdfDocument,
     parts: &[GeneratedPart],
     created_by: &str,
+    layout: &dyn Fn(&GeneratedPart) -> Vec<f64>,
 ) -> anyhow::Result<()> {
     anyhow::ensure!(
         !doc.parts.is_empty(),
@@ -196,7 +201,7 @@ fn write_documents(
     let text = bsdf_xml(doc).map_err(anyhow::Error::msg)?;
     std::fs::write(&args.out, text).with_context(|| format!("writing {}", args.out.display()))?;
     if let Some(path) = &args.errors {
-        write_errors(path, parts, doc, created_by)?;
+        write_errors(path, parts, doc, created_by, layout)?;
     }
     Ok(())
 }
@@ -217,14 +222,14 @@ fn write_errors(
     parts: &[GeneratedPart],
     doc: &BsdfDocument,
     created_by: &str,
+    layout: &dyn Fn(&GeneratedPart) -> Vec<f64>,
 ) -> anyhow::Result<()> {
     let name = format!("standard errors of {}", doc.name);
-    // A tree's grid is incident-major: the errors are laid out as its values are.
     let grids: Vec<(Side, Vec<f64>)> = doc
         .parts
         .iter()
         .filter_map(|d| parts.iter().find(|p| p.side == d.side))
-        .map(|p| (p.side, layout_like(doc, p)))
+        .map(|p| (p.side, layout(p)))
         .collect();
     let errors = BsdfDocument {
         name: &name,
@@ -240,24 +245,6 @@ fn write_errors(
     };
     let text = bsdf_xml(&errors).map_err(anyhow::Error::msg)?;
     std::fs::write(path, text).with_context(|| format!("writing {}", path.display()))
-}
-
-/// A part's standard errors in the layout `doc` writes its values in.
-fn layout_like(doc: &BsdfDocument, part: &GeneratedPart) -> Vec<f64> {
-    match doc.data {
-        skylux_hps::bsdf::DocumentData::Klems(_) => part.standard_error.clone(),
-        skylux_hps::bsdf::DocumentData::TensorTree { dims, log2_res } => {
-            let n_out = 1usize << (2 * log2_res);
-            let rows = 1usize << ((dims - 2) * log2_res);
-            let mut grid = vec![0.0; rows * n_out];
-            for i in 0..part.n_incident {
-                for o in 0..n_out {
-                    grid[i * n_out + o] = part.standard_error[o * part.n_incident + i];
-                }
-            }
-            grid
-        }
-    }
 }
 
 fn report(

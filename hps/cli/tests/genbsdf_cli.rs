@@ -92,6 +92,8 @@ fn tensor_trees_isotropic_and_anisotropic() {
             "--out",
             xml.to_str().unwrap(),
         ];
+        let se = dir.path().join(format!("blind-{tree}.se.xml"));
+        args.extend(["--errors", se.to_str().unwrap()]);
         args.extend([
             "--tree",
             tree,
@@ -108,6 +110,8 @@ fn tensor_trees_isotropic_and_anisotropic() {
         assert!(bsdf.has_tensor_tree(), "{tree}");
         let t = bsdf.hemispherical(glam::DVec3::new(-0.3, 0.0, 0.954), Scattering::Transmission);
         assert!(t > 0.1 && t < 0.8, "{tree}: T {t}");
+        // The errors in the tree's own layout: a tree of the same shape.
+        assert!(Bsdf::load(&se).unwrap().has_tensor_tree(), "{tree}");
     }
 }
 

@@ -2,7 +2,7 @@
 //! the receiving hemispheres, each part's patches in the frame RADIANCE reads it in
 //! ([`Side::incident_in_basis_frame`]), so that the matrix lands where `BSDF` looks.
 
-use super::{sample_parts, Cells, GenBsdfSettings, GeneratedPart, SamplingBox};
+use super::{document, sample_parts, Cells, GenBsdfSettings, GeneratedPart, SamplingBox};
 use crate::bsdf::{AngleBasis, BsdfDocument, DocumentData, DocumentPart, Side};
 use crate::engine::error::EngineError;
 use crate::engine::world::World;
@@ -164,25 +164,17 @@ impl GeneratedBsdf {
         unit: &'a str,
         sampling: &SamplingBox,
     ) -> BsdfDocument<'a> {
-        let size = sampling.max - sampling.min;
-        BsdfDocument {
-            name,
-            created_by,
-            unit,
-            thickness: size.z,
-            width: size.x,
-            height: size.y,
-            data: DocumentData::Klems(&self.basis),
-            parts: self
-                .parts
-                .iter()
-                .filter(|p| p.values.iter().any(|&v| v > 0.0))
-                .map(|p| DocumentPart {
-                    side: p.side,
-                    values: &p.values,
-                })
-                .collect(),
-        }
+        let parts = self
+            .parts
+            .iter()
+            .filter(|p| p.values.iter().any(|&v| v > 0.0))
+            .map(|p| DocumentPart {
+                side: p.side,
+                values: &p.values,
+            })
+            .collect();
+        let data = DocumentData::Klems(&self.basis);
+        document(name, created_by, unit, sampling, data, parts)
     }
 }
 

@@ -25,7 +25,7 @@ use super::material::bright;
 use super::ray::Ray;
 use super::rng::Rng;
 use super::world::World;
-use crate::bsdf::Side;
+use crate::bsdf::{BsdfDocument, DocumentData, DocumentPart, Side};
 use glam::DVec3;
 use rayon::prelude::*;
 
@@ -145,6 +145,28 @@ impl GeneratedPart {
             var += (self.standard_error[o * self.n_incident + incident] * w).powi(2);
         }
         (sum, var.sqrt())
+    }
+}
+
+/// A document of `parts` over `data`, the device's size the sampling box's.
+fn document<'a>(
+    name: &'a str,
+    created_by: &'a str,
+    unit: &'a str,
+    sampling: &SamplingBox,
+    data: DocumentData<'a>,
+    parts: Vec<DocumentPart<'a>>,
+) -> BsdfDocument<'a> {
+    let size = sampling.max - sampling.min;
+    BsdfDocument {
+        name,
+        created_by,
+        unit,
+        thickness: size.z,
+        width: size.x,
+        height: size.y,
+        data,
+        parts,
     }
 }
 

@@ -14,7 +14,7 @@
 //!
 //! The grid is written whole (no reduction: RADIANCE reads a one-leaf tree as a reduced one).
 
-use super::{sample_parts, Cells, GenBsdfSettings, GeneratedPart, SamplingBox};
+use super::{document, sample_parts, Cells, GenBsdfSettings, GeneratedPart, SamplingBox};
 use crate::bsdf::{disk_to_square, square_to_disk, BsdfDocument, DocumentData, DocumentPart, Side};
 use crate::engine::error::EngineError;
 use crate::engine::world::World;
@@ -165,27 +165,32 @@ impl GeneratedTree {
     }
 
     /// Each part's grid as the file holds it: incident cells slowest, then the outgoing
-    /// square's two coordinates; an isotropic tree's unused upper half zero.
+    /// square's two coordinates; an isotropic tree's unused upper half zero. Parts that
+    /// carry no light are left out (as genBSDF leaves them).
     pub fn grids(&self) -> Vec<(Side, Vec<f64>)> {
+        self.parts
+            .iter()
+            .filter(|p| p.values.iter().any(|&v| v > 0.0))
+            .map(|p| (p.side, self.grid_of(p, &p.values)))
+            .collect()
+    }
+
+    /// `per_element` (a part's values or standard errors, in the part's layout) as the
+    /// file's grid.
+    pub fn grid_of(&self, part: &GeneratedPart, per_element: &[f64]) -> Vec<f64> {
         let res = 1usize << self.log2_res;
         let n_out = res * res;
         let rows = match self.kind {
             TreeKind::Isotropic => res,
             TreeKind::Anisotropic => res * res,
         };
-        self.parts
-            .iter()
-            .filter(|p| p.values.iter().any(|&v| v > 0.0))
-            .map(|p| {
-                let mut grid = vec![0.0; rows * n_out];
-                for i in 0..p.n_incident {
-                    for o in 0..n_out {
-                        grid[i * n_out + o] = p.values[o * p.n_incident + i];
-                    }
-                }
-                (p.side, grid)
-            })
-            .collect()
+        let mut grid = vec![0.0; rows * n_out];
+        for i in 0..part.n_incident {
+            for o in 0..n_out {
+                grid[i * n_out + o] = per_element[o * part.n_incident + i];
+            }
+        }
+        grid
     }
 
     /// The XML document of `grids` (from [`Self::grids`]).
@@ -197,26 +202,18 @@ impl GeneratedTree {
         unit: &'a str,
         sampling: &SamplingBox,
     ) -> BsdfDocument<'a> {
-        let size = sampling.max - sampling.min;
-        BsdfDocument {
-            name,
-            created_by,
-            unit,
-            thickness: size.z,
-            width: size.x,
-            height: size.y,
-            data: DocumentData::TensorTree {
-                dims: self.kind.dims(),
-                log2_res: self.log2_res,
-            },
-            parts: grids
-                .iter()
-                .map(|(side, values)| DocumentPart {
-                    side: *side,
-                    values,
-                })
-                .collect(),
-        }
+        let data = DocumentData::TensorTree {
+            dims: self.kind.dims(),
+            log2_res: self.log2_res,
+        };
+        let parts = grids
+            .iter()
+            .map(|(side, values)| DocumentPart {
+                side: *side,
+                values,
+            })
+            .collect();
+        document(name, created_by, unit, sampling, data, parts)
     }
 }
 
