@@ -396,21 +396,7 @@ fn frads_office_with_electrochromic_absdf_glazing() {
     std::fs::write(dir.path().join("materials_absdf.mat"), materials).unwrap();
     std::os::unix::fs::symlink(office.join("Objects"), dir.path().join("Objects")).unwrap();
     let mut files = vec![PathBuf::from("materials_absdf.mat")];
-    for f in [
-        "windowframe",
-        "overhang",
-        "ground",
-        "extwalls",
-        "floor",
-        "desks",
-        "horframe",
-        "cubefabric",
-        "ceiling",
-        "cubeframe",
-        "walls",
-        "lower_glass",
-        "upper_glass",
-    ] {
+    for f in common::corpus::FRADS_OFFICE_SCENE {
         files.push(PathBuf::from(format!("Objects/{f}.rad")));
     }
     let sky_text = sky(

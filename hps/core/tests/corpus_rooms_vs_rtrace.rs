@@ -93,21 +93,7 @@ fn frads_office_at_its_195_grid_points() {
     };
     let office = Path::new(FRADS_OFFICE);
     let mut files = vec![PathBuf::from("Objects/materials.mat")];
-    for f in [
-        "windowframe",
-        "overhang",
-        "ground",
-        "extwalls",
-        "floor",
-        "desks",
-        "horframe",
-        "cubefabric",
-        "ceiling",
-        "cubeframe",
-        "walls",
-        "lower_glass",
-        "upper_glass",
-    ] {
+    for f in common::corpus::FRADS_OFFICE_SCENE {
         files.push(PathBuf::from(format!("Objects/{f}.rad")));
     }
     let sky = common::compare::sky(

@@ -18,3 +18,21 @@ pub fn corpus() -> PathBuf {
     );
     corpus
 }
+
+/// frads' office scene files as its `two_phase.cfg` lists them under `Objects/`, less
+/// `deskleg.rad` and `chairs.rad` (absent from the snapshot), after its `materials.mat`.
+pub const FRADS_OFFICE_SCENE: [&str; 13] = [
+    "windowframe",
+    "overhang",
+    "ground",
+    "extwalls",
+    "floor",
+    "desks",
+    "horframe",
+    "cubefabric",
+    "ceiling",
+    "cubeframe",
+    "walls",
+    "lower_glass",
+    "upper_glass",
+];
