@@ -76,6 +76,10 @@ pub struct IlluminanceBenchArgs {
     /// rtrace does at `-st 0` (at 0.15 m_bsdf.c folds the weaker ones into its diffuse term).
     #[arg(long)]
     rtrace_st: Option<f64>,
+    /// Our engine only, scored against the reference (cached, or built first): for tuning
+    /// the engine between benches; no rtrace timings and no ratio. Incompatible with --json.
+    #[arg(long)]
+    engine_only: bool,
 }
 
 impl IlluminanceBenchArgs {
@@ -436,6 +440,9 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
             args.target_rel_err
         );
     }
+    if args.engine_only && args.json {
+        bail!("--engine-only prints its measurements as lines; it has no --json form");
+    }
     if args.runs < 2 {
         bail!("--runs {}: expected at least 2", args.runs);
     }
@@ -473,12 +480,24 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
         }
     };
     let reference = converged_reference(&mut bench, args, &room, &sky, &dir, &log)?;
+    let mut scene_files = room.scene_paths.clone();
+    scene_files.push(sky_path.clone());
+    if args.engine_only {
+        measure_engine(
+            args,
+            &scene_files,
+            &room.dir,
+            &room.sensors,
+            &reference,
+            &log,
+        )?;
+        let _ = std::fs::remove_dir_all(&work);
+        return Ok(());
+    }
     let mut rtrace_configs = measure_rtrace_pure(&mut bench, args, &reference, &log)?;
     if !args.skip_cache_config {
         rtrace_configs.push(measure_rtrace_cache(&mut bench, args, &reference, &log)?);
     }
-    let mut scene_files = room.scene_paths.clone();
-    scene_files.push(sky_path.clone());
     let skylux_configs = measure_engine(
         args,
         &scene_files,
@@ -885,7 +904,9 @@ fn measure_engine(
                     ..Default::default()
                 };
                 let scene = scene::load_files_with(scene_files, &options)?;
-                let world = World::new(&scene)?;
+                let mut world = World::new(&scene)?;
+                let points: Vec<_> = sensors.iter().map(|s| s.position_m).collect();
+                engine::openings::add_openings(&mut world, &points);
                 let settings = Settings {
                     ambient_bounces: OUR_AB,
                     samples_per_sensor: n,

@@ -60,7 +60,9 @@ pub fn run(args: &IlluminanceArgs) -> anyhow::Result<()> {
         },
     )?;
     let sensors = scene::load_sensors(&args.sensors)?;
-    let world = World::new(&scene)?;
+    let mut world = World::new(&scene)?;
+    let points: Vec<_> = sensors.iter().map(|s| s.position_m).collect();
+    engine::openings::add_openings(&mut world, &points);
     let settings = Settings {
         ambient_bounces: args.ab,
         samples_per_sensor: args.ad,

@@ -345,7 +345,11 @@ impl Pipeline {
         }
         let scene = skylux_hps::scene::load_files(&config.room.scene)?;
         let sensors = skylux_hps::scene::load_sensors(&config.room.sensors)?;
-        let world = World::new(&scene)?;
+        let mut world = World::new(&scene)?;
+        skylux_hps::engine::openings::add_openings(
+            &mut world,
+            &sensors.iter().map(|s| s.position_m).collect::<Vec<_>>(),
+        );
         let settings = room_settings(config);
         let cache_dir = config.cache_dir();
         let dc_path = cache_dir.join(format!("dc-{:016x}.dc", room_hash(config)?));

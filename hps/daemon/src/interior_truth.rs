@@ -48,7 +48,11 @@ impl InteriorTruth {
     ) -> Result<Self, String> {
         let scene = skylux_hps::scene::load_files(scene).map_err(|e| e.to_string())?;
         let sensors = skylux_hps::scene::load_sensors(sensors).map_err(|e| e.to_string())?;
-        let world = World::new(&scene).map_err(|e| e.to_string())?;
+        let mut world = World::new(&scene).map_err(|e| e.to_string())?;
+        skylux_hps::engine::openings::add_openings(
+            &mut world,
+            &sensors.iter().map(|s| s.position_m).collect::<Vec<_>>(),
+        );
         Ok(Self {
             world,
             sensors,

@@ -393,7 +393,7 @@ impl<'a> SkyNee<'a> {
                 continue;
             }
             let s = source.direction;
-            let Some((p, _)) = portals.sample_point(rng) else {
+            let Some((p, triangle)) = portals.sample_point(rng) else {
                 continue;
             };
             // Into the room from the portal point, through glass and invisible surfaces.
@@ -408,6 +408,12 @@ impl<'a> SkyNee<'a> {
             let Some((y, n_y, prim_y, m)) = found else {
                 continue;
             };
+            // Only a point whose way back to the portal counts in the density (see
+            // `Portals::projected_area_pdf`).
+            let t_max = Self::opaque_distance(world, y, Some(prim_y), s);
+            if !portals.projection_crosses(triangle, y, s, t_max) {
+                continue;
+            }
             let to = y - x;
             let d2 = to.length_squared();
             if (d2).partial_cmp(&1e-12) != Some(std::cmp::Ordering::Greater) {
@@ -455,7 +461,7 @@ impl<'a> SkyNee<'a> {
                 q_back
             };
             let p_a = q * pdf_lobe * cos_y / d2;
-            let p_b = self.sun_patch_pdf(world, y, n_y, prim_y, s);
+            let p_b = portals.projected_area_pdf(y, n_y, s, t_max);
             if (p_a + p_b).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 continue;
             }

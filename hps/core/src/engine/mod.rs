@@ -29,6 +29,7 @@ pub mod genbsdf;
 pub mod illuminance;
 pub mod integrator;
 pub mod material;
+pub mod openings;
 pub mod phase;
 pub mod portal;
 pub mod qmc;

@@ -47,6 +47,16 @@ impl Triangle {
     }
 }
 
+impl Triangle {
+    /// |n · s| when the half-line from `y` along unit `s` crosses the triangle nearer than
+    /// `t_max_m`: the one test the sun-patch density and its sampler share.
+    fn projected_crossing(&self, y: DVec3, s: DVec3, t_max_m: f64) -> Option<f64> {
+        let dist = self.hit(y, s)?;
+        let c = self.normal.dot(s).abs();
+        (dist < t_max_m && c > 1e-12).then_some(c)
+    }
+}
+
 /// The portals of a world: triangles sampled in proportion to their area.
 #[derive(Clone, Debug, Default)]
 pub struct Portals {
@@ -55,6 +65,8 @@ pub struct Portals {
     cumulative_m2: Vec<f64>,
     /// Primitive indices of the portal polygons, for reports.
     primitives: Vec<u32>,
+    /// Openings added ([`Portals::add_openings`]), which have no primitive.
+    openings: usize,
 }
 
 impl Portals {
@@ -62,35 +74,54 @@ impl Portals {
     pub fn new(polygons: &[(u32, Vec<DVec3>)]) -> Self {
         let mut portals = Portals::default();
         for (primitive, vertices) in polygons {
-            if vertices.len() < 3 {
-                continue;
-            }
-            let mut added = false;
-            for i in 1..vertices.len() - 1 {
-                let (v0, v1, v2) = (vertices[0], vertices[i], vertices[i + 1]);
-                let (e1, e2) = (v1 - v0, v2 - v0);
-                let c = e1.cross(e2);
-                let area_m2 = 0.5 * c.length();
-                if (area_m2).partial_cmp(&1e-12) != Some(std::cmp::Ordering::Greater)
-                    || !area_m2.is_finite()
-                {
-                    continue;
-                }
-                let total = portals.total_area_m2() + area_m2;
-                portals.triangles.push(Triangle {
-                    v0,
-                    e1,
-                    e2,
-                    normal: c.normalize(),
-                });
-                portals.cumulative_m2.push(total);
-                added = true;
-            }
-            if added {
+            if portals.push_polygon(vertices) {
                 portals.primitives.push(*primitive);
             }
         }
         portals
+    }
+
+    /// Adds openings (rectangles with no surface in them), sampled like the rest.
+    pub fn add_openings(&mut self, openings: &[[DVec3; 4]]) {
+        for o in openings {
+            if self.push_polygon(o) {
+                self.openings += 1;
+            }
+        }
+    }
+
+    /// Openings among the portals.
+    pub fn opening_count(&self) -> usize {
+        self.openings
+    }
+
+    /// Fan-triangulates a polygon into the portals; false if it has no area.
+    fn push_polygon(&mut self, vertices: &[DVec3]) -> bool {
+        if vertices.len() < 3 {
+            return false;
+        }
+        let mut added = false;
+        for i in 1..vertices.len() - 1 {
+            let (v0, v1, v2) = (vertices[0], vertices[i], vertices[i + 1]);
+            let (e1, e2) = (v1 - v0, v2 - v0);
+            let c = e1.cross(e2);
+            let area_m2 = 0.5 * c.length();
+            if (area_m2).partial_cmp(&1e-12) != Some(std::cmp::Ordering::Greater)
+                || !area_m2.is_finite()
+            {
+                continue;
+            }
+            let total = self.total_area_m2() + area_m2;
+            self.triangles.push(Triangle {
+                v0,
+                e1,
+                e2,
+                normal: c.normalize(),
+            });
+            self.cumulative_m2.push(total);
+            added = true;
+        }
+        added
     }
 
     pub fn is_empty(&self) -> bool {
@@ -114,7 +145,7 @@ impl Portals {
         if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
-        let (y, _) = self.point(rng, total);
+        let (y, _, _) = self.point(rng, total);
         let to = y - x;
         let dist2 = to.length_squared();
         if (dist2).partial_cmp(&1e-18) != Some(std::cmp::Ordering::Greater) {
@@ -125,20 +156,22 @@ impl Portals {
         (pdf > 0.0 && pdf.is_finite()).then_some((d, pdf))
     }
 
-    /// A point drawn uniformly over the portals' area, with the unit normal of its triangle.
-    pub fn sample_point(&self, rng: &mut Rng) -> Option<(DVec3, DVec3)> {
+    /// A point drawn uniformly over the portals' area, with the index of its triangle (for
+    /// [`Portals::projection_crosses`]).
+    pub fn sample_point(&self, rng: &mut Rng) -> Option<(DVec3, usize)> {
         let total = self.total_area_m2();
         if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
-        Some(self.point(rng, total))
+        let (p, _, i) = self.point(rng, total);
+        Some((p, i))
     }
 
-    /// A point uniform over the portals (total area `total` > 0) and its triangle's normal,
-    /// from two uniforms: the first chooses the triangle by area and, rescaled within the
-    /// triangle's share, gives the first coordinate, so stratified pairs stay stratified
+    /// A point uniform over the portals (total area `total` > 0), its triangle's normal and
+    /// index, from two uniforms: the first chooses the triangle by area and, rescaled within
+    /// the triangle's share, gives the first coordinate, so stratified pairs stay stratified
     /// across triangles.
-    fn point(&self, rng: &mut Rng, total: f64) -> (DVec3, DVec3) {
+    fn point(&self, rng: &mut Rng, total: f64) -> (DVec3, DVec3, usize) {
         let target = rng.uniform() * total;
         let i = self
             .cumulative_m2
@@ -154,29 +187,41 @@ impl Portals {
         let u = ((target - below) / share).clamp(0.0, 1.0);
         // Uniform point on the triangle (square-root parametrisation).
         let (r1, r2) = (u.sqrt(), rng.uniform());
-        (t.v0 + t.e1 * (r1 * (1.0 - r2)) + t.e2 * (r1 * r2), t.normal)
+        (
+            t.v0 + t.e1 * (r1 * (1.0 - r2)) + t.e2 * (r1 * r2),
+            t.normal,
+            i,
+        )
     }
 
     /// Density per unit area at a point `y` (unit normal `n_y`) of the points reached by
     /// following unit direction −`s` from a point drawn by [`Portals::sample_point`]: Σ over
     /// the portal triangles the half-line from `y` along `s` crosses nearer than `t_max_m`
     /// of |n_y · s| / (A |n_p · s|) (a parallel projection scales areas by that ratio).
+    ///
+    /// A sampler must keep only the points whose own triangle counts here
+    /// ([`Portals::projection_crosses`]): where a portal lies in the plane of an opaque
+    /// surface (an opening's edge cells overlap the wall around the hole), whether a crossing
+    /// is nearer than the surface is a matter of rounding, and the sampler and this density
+    /// must decide it alike.
     pub fn projected_area_pdf(&self, y: DVec3, n_y: DVec3, s: DVec3, t_max_m: f64) -> f64 {
         let total = self.total_area_m2();
         if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return 0.0;
         }
         let cy = n_y.dot(s).abs();
-        let mut p = 0.0;
-        for t in &self.triangles {
-            if let Some(dist) = t.hit(y, s) {
-                let c = t.normal.dot(s).abs();
-                if dist < t_max_m && c > 1e-12 {
-                    p += cy / (total * c);
-                }
-            }
-        }
-        p
+        self.triangles
+            .iter()
+            .filter_map(|t| t.projected_crossing(y, s, t_max_m))
+            .map(|c| cy / (total * c))
+            .sum()
+    }
+
+    /// Whether triangle `triangle` counts in [`Portals::projected_area_pdf`] at `y`.
+    pub fn projection_crosses(&self, triangle: usize, y: DVec3, s: DVec3, t_max_m: f64) -> bool {
+        self.triangles
+            .get(triangle)
+            .is_some_and(|t| t.projected_crossing(y, s, t_max_m).is_some())
     }
 
     /// Density in solid angle with which [`Portals::sample`] from `x` produces unit `d`:

@@ -233,6 +233,13 @@ impl World {
         &self.portals
     }
 
+    /// Adds openings (holes in the room's envelope, `super::openings` finds them) to the
+    /// portals next-event estimation samples the sky through. A sampling aid only: results
+    /// stay unbiased whatever is added.
+    pub fn add_opening_portals(&mut self, openings: &[[DVec3; 4]]) {
+        self.portals.add_openings(openings);
+    }
+
     /// Names of the polygons used as portals.
     pub fn portal_names(&self) -> Vec<&str> {
         self.portals
@@ -367,6 +374,15 @@ impl World {
         self.closest_where(ray, from, |_| true)
     }
 
+    /// The closest surface along `ray` nearer than `t_max_m` (from a point on no surface):
+    /// a visibility test that need not look past the point it tests.
+    pub fn intersect_within(&self, ray: &Ray, t_max_m: f64) -> Option<Hit> {
+        if !self.antimatter.is_empty() {
+            return self.intersect(ray, None).filter(|h| h.t_m < t_max_m);
+        }
+        self.closest_raw_within(ray, None, t_max_m, |_| true)
+    }
+
     /// The closest surface along `ray` (leaving `from`) that is neither glass nor invisible:
     /// one query where stepping through each pane took one per pane.
     pub fn first_opaque(&self, ray: &Ray, from: Option<u32>) -> Option<Hit> {
@@ -434,6 +450,17 @@ impl World {
         from: Option<u32>,
         accept: impl Fn(u32) -> bool,
     ) -> Option<Hit> {
+        self.closest_raw_within(ray, from, f64::INFINITY, accept)
+    }
+
+    /// [`World::closest_raw`] within `[0, t_max_m]`.
+    fn closest_raw_within(
+        &self,
+        ray: &Ray,
+        from: Option<u32>,
+        t_max_m: f64,
+        accept: impl Fn(u32) -> bool,
+    ) -> Option<Hit> {
         let primitive_hit = |p: u32, t_max: f64| {
             if !accept(p) {
                 return None;
@@ -449,13 +476,13 @@ impl World {
         };
         if self.software_box_test {
             self.bvh
-                .closest(&SlabTest, ray, 0.0, f64::INFINITY, primitive_hit, |h| h.t_m)
+                .closest(&SlabTest, ray, 0.0, t_max_m, primitive_hit, |h| h.t_m)
         } else {
             self.bvh.closest(
                 self.box_test.as_ref(),
                 ray,
                 0.0,
-                f64::INFINITY,
+                t_max_m,
                 primitive_hit,
                 |h| h.t_m,
             )

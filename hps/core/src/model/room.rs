@@ -25,7 +25,11 @@ impl Room {
     ) -> Result<Self, ModelError> {
         let scene = crate::scene::load(campaign.path(&campaign.config.files.scene))?;
         let sensors = crate::scene::load_sensors(campaign.path(&campaign.config.files.sensors))?;
-        let world = World::new(&scene)?;
+        let mut world = World::new(&scene)?;
+        engine::openings::add_openings(
+            &mut world,
+            &sensors.iter().map(|s| s.position_m).collect::<Vec<_>>(),
+        );
         let dc = engine::daylight_coefficients(&world, &sensors, mf, &settings, progress)?;
         Ok(Self {
             world,

@@ -120,7 +120,12 @@ pub fn compare_with_rtrace_from(
     let scene = scene::load_files_with(&files, &options).unwrap();
     let sensors_text = sensors;
     let sensors = scene::parse_sensors(format!("{label}.pts"), sensors).unwrap();
-    let world = World::new(&scene).unwrap();
+    let mut world = World::new(&scene).unwrap();
+    // As `skylux illuminance` does: unglazed openings sampled as windows.
+    engine::openings::add_openings(
+        &mut world,
+        &sensors.iter().map(|s| s.position_m).collect::<Vec<_>>(),
+    );
     let settings = Settings {
         ambient_bounces: effort.our_bounces,
         samples_per_sensor: our_samples_here(effort.our_samples),
