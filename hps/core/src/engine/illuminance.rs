@@ -263,10 +263,16 @@ impl<'a> Run<'a> {
     }
 }
 
-/// Sensors in groups of at most `size` neighbours, in a fixed order: the first sensor not yet
-/// placed with the `size − 1` unplaced ones nearest to it. (Consecutive lines of a file are
+/// Sensors in groups of at most `size` neighbours, as few groups as that allows and of even
+/// sizes, in a fixed order: the first sensor not yet placed with the unplaced ones nearest
+/// to it. (Consecutive lines of a file are
 /// not always neighbours: a grid's row ends next to the next row's start.)
 fn reuse_groups(sensors: &[Sensor], size: usize) -> Vec<Vec<usize>> {
+    // As many groups as `size` needs, of even sizes: no small leftover group whose
+    // sensors share with few others.
+    let size = sensors
+        .len()
+        .div_ceil(sensors.len().div_ceil(size.max(1)).max(1));
     let mut placed = vec![false; sensors.len()];
     let mut groups = Vec::new();
     for first in 0..sensors.len() {
@@ -319,7 +325,8 @@ fn share_vertex(world: &World, group: &[&Sensor], from: usize, v: &SharedVertex,
         }
         // The vertex must be sensor k's first hit along w (the sensor that found it saw it).
         if k != from {
-            match world.intersect_within(&Ray::new(sensor.position_m, w), dist * (1.0 + 1e-6)) {
+            match world.intersect_within(&Ray::new(sensor.position_m, w), None, dist * (1.0 + 1e-6))
+            {
                 Some(h)
                     if h.primitive == v.primitive
                         && (h.t_m - dist).abs() <= 1e-6 * dist.max(1.0) => {}

@@ -408,12 +408,6 @@ impl<'a> SkyNee<'a> {
             let Some((y, n_y, prim_y, m)) = found else {
                 continue;
             };
-            // Only a point whose way back to the portal counts in the density (see
-            // `Portals::projected_area_pdf`).
-            let t_max = Self::opaque_distance(world, y, Some(prim_y), s);
-            if !portals.projection_crosses(triangle, y, s, t_max) {
-                continue;
-            }
             let to = y - x;
             let d2 = to.length_squared();
             if (d2).partial_cmp(&1e-12) != Some(std::cmp::Ordering::Greater) {
@@ -446,10 +440,16 @@ impl<'a> SkyNee<'a> {
                 continue;
             }
             // x must see y directly.
-            match world.intersect(&Ray::new(x, w), from) {
+            match world.intersect_within(&Ray::new(x, w), from, dist * (1.0 + 1e-6)) {
                 Some(h)
                     if h.primitive == prim_y && (h.t_m - dist).abs() <= 1e-6 * dist.max(1.0) => {}
                 _ => continue,
+            }
+            // Only a point whose way back to the portal counts in the density (see
+            // `Portals::projected_area_pdf`).
+            let t_max = Self::opaque_distance(world, y, Some(prim_y), s);
+            if !portals.projection_crosses(triangle, y, s, t_max) {
+                continue;
             }
             let t = world.source_transmission(shading.origin_towards(y, l), Some(prim_y), l);
             if t == DVec3::ZERO {

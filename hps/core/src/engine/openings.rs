@@ -178,8 +178,9 @@ impl RoomBox {
     }
 }
 
-/// A cell centred on `c` is open when a ray from one of the interior points nearest to it
-/// passes `c` with nothing there, and no such ray meets a surface at `c`.
+/// A cell centred on `c` is open when the ray from the nearest interior point that reaches
+/// `c` at all (the nearest few are tried, nearest first) passes it with nothing there; a
+/// surface at `c` closes it.
 fn cell_is_open(world: &World, points: &[DVec3], c: DVec3, tolerance_m: f64) -> bool {
     let mut nearest: Vec<(f64, DVec3)> =
         points.iter().map(|p| (p.distance_squared(c), *p)).collect();
@@ -188,21 +189,23 @@ fn cell_is_open(world: &World, points: &[DVec3], c: DVec3, tolerance_m: f64) -> 
         return false;
     }
     nearest.select_nth_unstable_by(k - 1, |x, y| x.0.total_cmp(&y.0));
-    let mut passed = false;
-    for &(d2, p) in &nearest[..k] {
+    let testers = &mut nearest[..k];
+    testers.sort_by(|x, y| x.0.total_cmp(&y.0));
+    for &(d2, p) in testers.iter() {
         let dist = d2.sqrt();
         if dist <= tolerance_m {
             continue;
         }
         let d = (c - p) / dist;
         match world.intersect(&Ray::new(p, d), None) {
-            None => passed = true,
-            Some(hit) if hit.t_m > dist + tolerance_m => passed = true,
+            None => return true,
+            Some(hit) if hit.t_m > dist + tolerance_m => return true,
             Some(hit) if hit.t_m >= dist - tolerance_m => return false,
+            // Something in the way: ask the next.
             Some(_) => {}
         }
     }
-    passed
+    false
 }
 
 /// The open cells of an `n` × `n` grid (row-major, row = second index) as rectangles

@@ -374,13 +374,13 @@ impl World {
         self.closest_where(ray, from, |_| true)
     }
 
-    /// The closest surface along `ray` nearer than `t_max_m` (from a point on no surface):
-    /// a visibility test that need not look past the point it tests.
-    pub fn intersect_within(&self, ray: &Ray, t_max_m: f64) -> Option<Hit> {
+    /// [`World::intersect`] nearer than `t_max_m`: a visibility test that need not look past
+    /// the point it tests.
+    pub fn intersect_within(&self, ray: &Ray, from: Option<u32>, t_max_m: f64) -> Option<Hit> {
         if !self.antimatter.is_empty() {
-            return self.intersect(ray, None).filter(|h| h.t_m < t_max_m);
+            return self.intersect(ray, from).filter(|h| h.t_m < t_max_m);
         }
-        self.closest_raw_within(ray, None, t_max_m, |_| true)
+        self.closest_raw_within(ray, from, t_max_m, |_| true)
     }
 
     /// The closest surface along `ray` (leaving `from`) that is neither glass nor invisible:
