@@ -79,6 +79,60 @@ fn box_room_text_under_every_sky(label: &str, room_text: &str, sensors: &str, ef
     }
 }
 
+/// Directions towards the BSDF window mixed into the continuation at Lambertian vertices and
+/// at the sensors (`Settings::bsdf_window_sampling`) change the noise, not the answer: the box
+/// room with the LBNL tutorial's venetian blinds (corpus `blinds.xml`) under a uniform sky and
+/// a sun 45° up through the blinds, its six sensors facing up and the same six facing away
+/// from the window, with and without: within 4 combined standard errors of each other, and
+/// at equal paths at most half the relative standard error on average (measured: 0.41).
+#[test]
+fn sampling_towards_bsdf_windows_changes_the_noise_not_the_answer() {
+    let xml = corpus().join("bsdf/sariths-matrix-tutorial/room/blinds/blinds.xml");
+    let sun = DVec3::new(0.3, -0.65, 0.7).normalize();
+    let text = box_room(&xml)
+        + &format!(
+            "void light solar 0 0 3 1e5 1e5 1e5\nsolar source sun 0 0 4 {} {} {} 0.533\n\
+             void glow sky_glow 0 0 4 100 100 100 0\nsky_glow source sky 0 0 4 0 0 1 180\n",
+            sun.x, sun.y, sun.z
+        );
+    let scene = scene::parse("room.rad", text.as_bytes()).unwrap();
+    // Facing up, and away from the window (all their light then comes off the room).
+    let away: String = BOX_SENSORS.replace(" 0 0 1", " 0 1 0");
+    let both = format!("{BOX_SENSORS}{away}");
+    let sensors = scene::parse_sensors("box.pts", both.as_bytes()).unwrap();
+    let world = World::new(&scene).unwrap();
+    assert!((world.bsdf_windows().total_area_m2() - 2.4).abs() < 1e-9);
+    let run = |bsdf_window_sampling: bool| {
+        let settings = Settings {
+            ambient_bounces: 8,
+            samples_per_sensor: 4096,
+            seed: 3,
+            bsdf_window_sampling,
+            ..Settings::default()
+        };
+        engine::illuminance(&world, &sensors, &settings, &|_, _| {}).unwrap()
+    };
+    let (with, without) = (run(true), run(false));
+    let (mut rel_with, mut rel_without) = (0.0, 0.0);
+    for (a, b) in with.iter().zip(&without) {
+        let z = (a.illuminance_lux - b.illuminance_lux)
+            / (a.stderr_lux.powi(2) + b.stderr_lux.powi(2)).sqrt();
+        println!(
+            "{}: {:.1} ± {:.1} lux with, {:.1} ± {:.1} without ({z:+.2} σ)",
+            a.name, a.illuminance_lux, a.stderr_lux, b.illuminance_lux, b.stderr_lux
+        );
+        assert!(z.abs() < 4.0, "{}: {z:.2} σ apart", a.name);
+        rel_with += a.stderr_lux / a.illuminance_lux;
+        rel_without += b.stderr_lux / b.illuminance_lux;
+    }
+    assert!(
+        rel_with < 0.5 * rel_without,
+        "mean relative standard error {:.4} with, {:.4} without",
+        rel_with / 12.0,
+        rel_without / 12.0
+    );
+}
+
 #[test]
 fn box_room_with_the_satine_shade() {
     let xml = corpus().join("bsdf/frads/2011-SA1.xml");

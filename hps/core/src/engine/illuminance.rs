@@ -29,7 +29,9 @@
 //! is thus used by several sensors for one visibility ray each.
 
 use super::error::EngineError;
-use super::integrator::{irradiance_sample, irradiance_sample_shared, Settings, SharedVertex};
+use super::integrator::{
+    irradiance_sample, irradiance_sample_shared, sensor_direction_pdf, Settings, SharedVertex,
+};
 use super::material::bright;
 use super::qmc::Randomisation;
 use super::ray::Ray;
@@ -219,7 +221,7 @@ impl<'a> Run<'a> {
                 rng.clear_prefix();
             }
             for (from, v) in &shared {
-                share_vertex(world, &members, *from, v, &mut e);
+                share_vertex(world, settings, &members, *from, v, &mut e);
             }
             for (a, x) in acc.iter_mut().zip(&e) {
                 let lux = lux_from_irradiance(*x);
@@ -300,15 +302,25 @@ fn reuse_groups(sensors: &[Sensor], size: usize) -> Vec<Vec<usize>> {
 
 /// Hands the shared vertex `v`, found by the path of sensor `from` of `group`, to every sensor
 /// of the group that sees it directly from the same side: sensor j's irradiance sample `e[j]`
-/// gains π L p_j / Σ_k p_k, where p_k = (cos θ_k / π) cos θ_v / d_k² is the area density at
-/// the vertex of sensor k's cosine-weighted first direction (0 where the vertex is not k's
-/// first hit). Over the group's paths this counts the light of the Lambertian first vertices
-/// once for each sensor in expectation (balance heuristic).
-fn share_vertex(world: &World, group: &[&Sensor], from: usize, v: &SharedVertex, e: &mut [DVec3]) {
+/// gains L G_j / Σ_k p_k, where G_j = cos θ_j cos θ_v / d_j² and p_k = p_k(ω_k) cos θ_v / d_k²
+/// is the area density at the vertex of sensor k's first direction (its cosine lobe,
+/// p = cos θ_k / π, so that j gains π L p_j / Σ p_k, or that mixed with the `BSDF` windows:
+/// `integrator::sensor_direction_pdf`; 0 where the vertex is not k's first hit). Over the
+/// group's paths this counts the light of the Lambertian first vertices once for each sensor
+/// in expectation (balance heuristic).
+fn share_vertex(
+    world: &World,
+    settings: &Settings,
+    group: &[&Sensor],
+    from: usize,
+    v: &SharedVertex,
+    e: &mut [DVec3],
+) {
     let side = (group[from].position_m - v.position_m)
         .dot(v.normal)
         .signum();
     let mut density = [0.0f64; REUSE_GROUP];
+    let mut geometry = [0.0f64; REUSE_GROUP];
     let mut total = 0.0;
     for (k, sensor) in group.iter().enumerate() {
         let to = v.position_m - sensor.position_m;
@@ -318,7 +330,8 @@ fn share_vertex(world: &World, group: &[&Sensor], from: usize, v: &SharedVertex,
         }
         let dist = d2.sqrt();
         let w = to / dist;
-        let cos_k = sensor.direction.normalize_or_zero().dot(w);
+        let normal = sensor.direction.normalize_or_zero();
+        let cos_k = normal.dot(w);
         let cos_v = -w.dot(v.normal) * side;
         if !(cos_k > 0.0 && cos_v > 0.0) {
             continue;
@@ -333,15 +346,17 @@ fn share_vertex(world: &World, group: &[&Sensor], from: usize, v: &SharedVertex,
                 _ => continue,
             }
         }
-        density[k] = cos_k / std::f64::consts::PI * cos_v / d2;
+        let pdf_sr = sensor_direction_pdf(world, settings, sensor.position_m, normal, w);
+        density[k] = pdf_sr * cos_v / d2;
+        geometry[k] = cos_k * cos_v / d2;
         total += density[k];
     }
     if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         return;
     }
-    for (x, p) in e.iter_mut().zip(&density) {
+    for ((x, p), g) in e.iter_mut().zip(&density).zip(&geometry) {
         if *p > 0.0 {
-            *x += std::f64::consts::PI * v.radiance_rgb * (p / total);
+            *x += v.radiance_rgb * (g / total);
         }
     }
 }

@@ -31,6 +31,10 @@
 //! sun's next-event estimate there is carried back; the vertex's own diffuse sample that
 //! reaches the same point weights its sun estimate there by the balance heuristic in area
 //! measure ([`Settings::sun_portal_sampling`]).
+//!
+//! Light a `BSDF` window passes reaches no next-event strategy; at the sensors and at the
+//! Lambertian vertices with such a window in front, the continuation mixes directions towards
+//! the windows into the cosine lobe (`Continuation`, [`Settings::bsdf_window_sampling`]).
 
 use super::error::EngineError;
 use super::material::{DiffuseLobe, Interaction, Scatter, Shading};
@@ -93,6 +97,10 @@ pub struct Settings {
     /// path, when it is a Lambertian surface, also lights the other sensors of its group
     /// that see it, weighted by the balance heuristic over the group's sensors. Unbiased.
     pub path_reuse: bool,
+    /// At Lambertian vertices, continuations mixed with directions towards the `BSDF`
+    /// windows (`Continuation`). Unbiased; on, the light a window of blinds or a shade
+    /// passes is found by many more paths.
+    pub bsdf_window_sampling: bool,
 }
 
 impl Default for Settings {
@@ -108,6 +116,7 @@ impl Default for Settings {
             sun_portal_sampling: true,
             stratified: true,
             path_reuse: true,
+            bsdf_window_sampling: true,
         }
     }
 }
@@ -252,18 +261,20 @@ fn sensor_path(
         return (e, None);
     }
     let nee = SkyNee::new(world, settings);
-    let lobe = DiffuseLobe::sensor(normal);
+    let continuation = Continuation::of_sensor(world, settings, position_m, normal);
     if let Some(nee) = &nee {
-        e += nee.estimate(world, position_m, from, &lobe, rng);
+        e += nee.estimate(world, position_m, from, &continuation, rng);
         if !shared {
-            e += nee.sun_estimate(world, position_m, from, &lobe, 1.0, 1.0, rng);
+            e += nee.sun_estimate(world, position_m, from, &continuation, rng);
         }
     }
-    // Indirect: cosine-weighted direction, so E = π L(ω) per sample.
-    let d = cosine_direction(normal, rng);
+    // Indirect: E = L(ω) cos θ / p(ω) per sample (π L(ω) for the cosine lobe alone).
+    let Some((d, weight)) = continuation.sample_direction(rng) else {
+        return (e, None);
+    };
     let last = LastDiffuse {
         position_m,
-        pdf_sr: lobe.eval(d).1,
+        pdf_sr: continuation.eval(d).1,
         sun_patch_sampled: !shared,
     };
     let ray = Ray::new(position_m, d);
@@ -297,8 +308,23 @@ fn sensor_path(
                 radiance_rgb: l,
             }),
         ),
-        None => (e + PI * l, None),
+        None => (e + weight * l, None),
     }
+}
+
+/// The density with which a sensor at `position_m` facing unit `normal` chooses its first
+/// direction `d` (per steradian): the cosine lobe's, or its mixture with the `BSDF` windows
+/// in front of it ([`Continuation`]). What path reuse weights a shared vertex by.
+pub fn sensor_direction_pdf(
+    world: &World,
+    settings: &Settings,
+    position_m: DVec3,
+    normal: DVec3,
+    d: DVec3,
+) -> f64 {
+    Continuation::of_sensor(world, settings, position_m, normal)
+        .eval(d)
+        .1
 }
 
 /// Where the path's last diffuse scattering happened and the density (per steradian) with
@@ -311,6 +337,84 @@ struct LastDiffuse {
     /// The vertex also sampled the sun's patch ([`SkyNee::sun_estimate`]), so the next
     /// vertex's sun estimate shares the light with it by multiple importance sampling.
     sun_patch_sampled: bool,
+}
+
+/// Share of a Lambertian vertex's continuations sent towards the `BSDF` windows.
+const WINDOW_SHARE: f64 = 0.5;
+
+/// How a diffuse vertex chooses its continuation: by its lobe, or, at a Lambertian vertex of
+/// a room with `BSDF` windows, by a mixture of the lobe and directions towards a point drawn
+/// uniformly over the windows (defensive mixture sampling, Hesterberg 1995; Veach 1997
+/// §9.2.4 for its one-sample balance heuristic). A window of blinds or a shade passes the
+/// sky and the sun by its BSDF, which no next-event strategy of the room's vertices can
+/// sample, so without this only the continuation that happens to hit the window finds that
+/// light. Every weight that needs the continuation's density (the sky's and the sun patch's
+/// next-event estimates here, an escape or sun estimate it finds) takes the mixture's.
+#[derive(Clone, Copy)]
+struct Continuation<'a> {
+    lobe: DiffuseLobe,
+    /// The vertex.
+    at: DVec3,
+    /// The windows mixed in (None: the lobe alone).
+    windows: Option<&'a Portals>,
+    /// The path throughput before the bounce, when Russian roulette will act after it.
+    roulette_throughput: Option<DVec3>,
+}
+
+impl<'a> Continuation<'a> {
+    /// A sensor's: its cosine lobe, mixed with the `BSDF` windows in front of it; no roulette.
+    fn of_sensor(world: &'a World, settings: &Settings, at: DVec3, normal: DVec3) -> Self {
+        let windows = world.bsdf_windows();
+        let mix = settings.bsdf_window_sampling && windows.any_in_front(at, normal);
+        Self {
+            lobe: DiffuseLobe::sensor(normal),
+            at,
+            windows: mix.then_some(windows),
+            roulette_throughput: None,
+        }
+    }
+
+    /// (f |cos θ|, the density with which the continuation chooses unit `d`).
+    fn eval(&self, d: DVec3) -> (DVec3, f64) {
+        let (f, pdf) = self.lobe.eval(d);
+        match self.windows {
+            Some(w) => (
+                f,
+                (1.0 - WINDOW_SHARE) * pdf + WINDOW_SHARE * w.pdf(self.at, d),
+            ),
+            None => (f, pdf),
+        }
+    }
+
+    /// The Russian-roulette survival of the continuation in unit direction `d` ([`Tracer::bounce`]).
+    fn survival(&self, d: DVec3) -> f64 {
+        let Some(throughput) = self.roulette_throughput else {
+            return 1.0;
+        };
+        let (f, pdf) = self.eval(d);
+        if (pdf).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            return 1.0;
+        }
+        ((throughput * f / pdf).max_element() / RUSSIAN_ROULETTE_THROUGHPUT).min(1.0)
+    }
+
+    /// A direction and its weight f |cos θ| / p: from the lobe's front (a Lambertian
+    /// reflector, a sensor) alone or from the mixture; None when a window's direction lies
+    /// behind the surface or in its plane.
+    fn sample_direction(&self, rng: &mut Rng) -> Option<(DVec3, DVec3)> {
+        let Some(windows) = self.windows else {
+            // ρ/π |cos θ| over front_probability |cos θ| / π, cancelled exactly.
+            let d = cosine_direction(self.lobe.normal, rng);
+            return Some((d, self.lobe.front_rgb * (PI / self.lobe.front_probability)));
+        };
+        let d = if rng.uniform() < WINDOW_SHARE {
+            windows.sample(self.at, rng)?.0
+        } else {
+            cosine_direction(self.lobe.normal, rng)
+        };
+        let (f, pdf) = self.eval(d);
+        (pdf > 0.0 && pdf.is_finite() && f != DVec3::ZERO).then(|| (d, f / pdf))
+    }
 }
 
 /// Next-event estimation of the light beyond the scene (sky and ground `glow`s, environment)
@@ -370,18 +474,15 @@ impl<'a> SkyNee<'a> {
     /// on a portal is followed along the sun's direction into the room to the first opaque
     /// surface y (where the sun may shine through the window), y is connected to the vertex
     /// `x`, and the sun's next-event estimate at y is carried back. Combined by the balance
-    /// heuristic with the path that reaches y by the vertex's own diffuse sampling (density
-    /// `q` p(ω) |cos θ_y| / d², `q_front`/`q_back` the Russian-roulette survival of that
-    /// continuation), whose sun estimate at y [`trace`] weights to match.
-    #[allow(clippy::too_many_arguments)]
+    /// heuristic with the path that reaches y by the vertex's own continuation (density
+    /// q p(ω) |cos θ_y| / d², q that continuation's Russian-roulette survival), whose sun
+    /// estimate at y [`trace`] weights to match.
     fn sun_estimate(
         &self,
         world: &World,
         x: DVec3,
         from: Option<u32>,
-        lobe: &DiffuseLobe,
-        q_front: f64,
-        q_back: f64,
+        continuation: &Continuation,
         rng: &mut Rng,
     ) -> DVec3 {
         let Some(portals) = self.sun_portals else {
@@ -415,7 +516,7 @@ impl<'a> SkyNee<'a> {
             }
             let dist = d2.sqrt();
             let w = to / dist;
-            let (f, pdf_lobe) = lobe.eval(w);
+            let (f, pdf_lobe) = continuation.eval(w);
             if f == DVec3::ZERO {
                 continue;
             }
@@ -455,12 +556,7 @@ impl<'a> SkyNee<'a> {
             if t == DVec3::ZERO {
                 continue;
             }
-            let q = if lobe.normal.dot(w) > 0.0 {
-                q_front
-            } else {
-                q_back
-            };
-            let p_a = q * pdf_lobe * cos_y / d2;
+            let p_a = continuation.survival(w) * pdf_lobe * cos_y / d2;
             let p_b = portals.projected_area_pdf(y, n_y, s, t_max);
             if (p_a + p_b).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 continue;
@@ -515,7 +611,7 @@ impl<'a> SkyNee<'a> {
         world: &World,
         x: DVec3,
         from: Option<u32>,
-        lobe: &DiffuseLobe,
+        lobe: &Continuation,
         rng: &mut Rng,
     ) -> DVec3 {
         let mut sum = DVec3::ZERO;
@@ -539,7 +635,7 @@ impl<'a> SkyNee<'a> {
         world: &World,
         x: DVec3,
         from: Option<u32>,
-        lobe: &DiffuseLobe,
+        lobe: &Continuation,
         d: DVec3,
         portal_pdf: Option<f64>,
     ) -> DVec3 {
@@ -829,7 +925,7 @@ impl PathState {
     }
 }
 
-impl Tracer<'_, '_> {
+impl<'a> Tracer<'a, '_> {
     /// The path leaves the scene: what it collects there, weighted against the next-event
     /// strategies of its last diffuse vertex.
     fn escape(&mut self, path: &PathState) -> DVec3 {
@@ -864,7 +960,17 @@ impl Tracer<'_, '_> {
                 }
             });
         let allow_diffuse = path.ambient_used < self.settings.ambient_bounces;
-        let lobe = self.sky(path, p, shading, allow_diffuse, rng);
+        let lambertian = self.world.material(hit.primitive).is_lambertian();
+        let continuation = self.sky(path, p, shading, allow_diffuse, lambertian, rng);
+        if let Some(c) = continuation.filter(|c| c.windows.is_some()) {
+            // A Lambertian surface continues from the point itself.
+            return match c.sample_direction(rng) {
+                Some((direction, weight)) => {
+                    self.bounce(path, p, direction, weight, continuation, rng)
+                }
+                None => Next::End,
+            };
+        }
         let scatter = shading.sample(allow_diffuse, rng);
         if let Scatter::Diffuse { direction, .. } | Scatter::Specular { direction, .. } = scatter {
             path.next_origin = Some(shading.origin_towards(p, direction));
@@ -872,7 +978,7 @@ impl Tracer<'_, '_> {
         match scatter {
             Scatter::Absorbed => Next::End,
             Scatter::Diffuse { direction, weight } => {
-                self.bounce(path, p, direction, weight, lobe, rng)
+                self.bounce(path, p, direction, weight, continuation, rng)
             }
             Scatter::Specular { direction, weight } => path.specular(
                 self.settings,
@@ -926,36 +1032,41 @@ impl Tracer<'_, '_> {
     }
 
     /// Next-event estimation of the sky and of the sun's patch at a vertex that may scatter
-    /// diffusely; returns the diffuse lobe the continuation's weights need.
+    /// diffusely; returns how the vertex continues, which the weights of what its
+    /// continuation finds need. `lambertian`: the surface scatters only by its diffuse lobe,
+    /// so the continuation may mix in directions towards the BSDF windows.
     fn sky(
         &self,
         path: &mut PathState,
         p: DVec3,
         shading: &Shading,
         allow_diffuse: bool,
+        lambertian: bool,
         rng: &mut Rng,
-    ) -> Option<DiffuseLobe> {
-        let nee = self.nee?;
+    ) -> Option<Continuation<'a>> {
         let lobe = shading.diffuse_lobe(allow_diffuse)?;
-        path.radiance += path.throughput * nee.estimate(self.world, p, path.from, &lobe, rng);
-        if nee.sun_portals.is_some() {
-            let q_front = self.survival(path, lobe.front_rgb, lobe.front_probability);
-            let q_back = self.survival(path, lobe.back_rgb, lobe.back_probability);
-            path.radiance += path.throughput
-                * nee.sun_estimate(self.world, p, path.from, &lobe, q_front, q_back, rng);
+        let windows = self.world.bsdf_windows();
+        // Not at a surface behind or beside every window (the window's own wall): there no
+        // direction towards a window leaves the surface.
+        let mix = lambertian
+            && self.settings.bsdf_window_sampling
+            && windows.any_in_front(p, lobe.normal);
+        let continuation = Continuation {
+            lobe,
+            at: p,
+            windows: mix.then_some(windows),
+            roulette_throughput: (self.roulette && path.ambient_used + 1 > RUSSIAN_ROULETTE_AFTER)
+                .then_some(path.throughput),
+        };
+        if let Some(nee) = self.nee {
+            path.radiance +=
+                path.throughput * nee.estimate(self.world, p, path.from, &continuation, rng);
+            if nee.sun_portals.is_some() {
+                path.radiance += path.throughput
+                    * nee.sun_estimate(self.world, p, path.from, &continuation, rng);
+            }
         }
-        Some(lobe)
-    }
-
-    /// The Russian-roulette survival of a continuation through the lobe side of value `f`
-    /// chosen with probability `prob`.
-    fn survival(&self, path: &PathState, f: DVec3, prob: f64) -> f64 {
-        if self.roulette && path.ambient_used + 1 > RUSSIAN_ROULETTE_AFTER && prob > 0.0 {
-            ((path.throughput * f * (PI / prob)).max_element() / RUSSIAN_ROULETTE_THROUGHPUT)
-                .min(1.0)
-        } else {
-            1.0
-        }
+        Some(continuation)
     }
 
     /// A diffuse bounce in unit `direction` with weight `weight`, then Russian roulette.
@@ -965,14 +1076,14 @@ impl Tracer<'_, '_> {
         p: DVec3,
         direction: DVec3,
         weight: DVec3,
-        lobe: Option<DiffuseLobe>,
+        continuation: Option<Continuation>,
         rng: &mut Rng,
     ) -> Next {
         path.ambient_used += 1;
         path.throughput *= weight;
-        path.last = lobe.map(|lobe| LastDiffuse {
+        path.last = continuation.map(|c| LastDiffuse {
             position_m: p,
-            pdf_sr: lobe.eval(direction).1,
+            pdf_sr: c.eval(direction).1,
             sun_patch_sampled: true,
         });
         let mut survival = 1.0;

@@ -124,6 +124,16 @@ impl Portals {
         added
     }
 
+    /// Whether some part of the portals lies in front of the plane through `x` with unit
+    /// normal `n` (a surface there can send light towards them).
+    pub fn any_in_front(&self, x: DVec3, n: DVec3) -> bool {
+        self.triangles.iter().any(|t| {
+            [t.v0, t.v0 + t.e1, t.v0 + t.e2]
+                .iter()
+                .any(|v| (*v - x).dot(n) > 1e-9)
+        })
+    }
+
     pub fn is_empty(&self) -> bool {
         self.triangles.is_empty()
     }

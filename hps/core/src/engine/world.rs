@@ -63,6 +63,10 @@ pub struct World {
     /// Polygons that may serve as portals (glass or invisible), with their vertices.
     portal_candidates: Vec<(u32, Vec<DVec3>)>,
     portals: Portals,
+    /// Polygons of `BSDF` material open to the outside (windows with blinds, shades):
+    /// directions towards them are mixed into the continuation at Lambertian vertices
+    /// (`integrator::Continuation`), since no next-event strategy reaches the light they pass.
+    bsdf_windows: Portals,
     /// Plane mirrors (primitive, normal, reflectance), for virtual sources: listed once, not
     /// found by a scan of every primitive at every vertex.
     mirrors: Vec<(u32, DVec3, VirtualSourceReflectance)>,
@@ -171,6 +175,7 @@ impl World {
             names,
             portal_candidates: Vec::new(),
             portals: Portals::default(),
+            bsdf_windows: Portals::default(),
             mirrors: Vec::new(),
             source_crossings: false,
             antimatter,
@@ -186,6 +191,14 @@ impl World {
                 }
             })
             .collect();
+        let bsdf_windows: Vec<(u32, Vec<DVec3>)> = polygon_vertices
+            .iter()
+            .filter(|(p, v)| {
+                matches!(world.material(*p), Material::Bsdf(_)) && world.opens_to_outside(*p, v)
+            })
+            .cloned()
+            .collect();
+        world.bsdf_windows = Portals::new(&bsdf_windows);
         world.portal_candidates = polygon_vertices
             .into_iter()
             .filter(|(p, _)| world.material(*p).is_clear())
@@ -200,7 +213,7 @@ impl World {
         Ok(world)
     }
 
-    /// Whether a glass or invisible polygon is an opening to the outside: from its centre,
+    /// Whether a glass, invisible or `BSDF` polygon is an opening to the outside: from its centre,
     /// on one side or the other, some of nine rays (the normal and eight at 60° from it)
     /// leave the scene without meeting anything opaque.
     fn opens_to_outside(&self, primitive: u32, vertices: &[DVec3]) -> bool {
@@ -231,6 +244,11 @@ impl World {
     /// and invisible polygons with a side open to the outside).
     pub fn portals(&self) -> &Portals {
         &self.portals
+    }
+
+    /// The `BSDF` windows open to the outside, as an area distribution (empty if none).
+    pub fn bsdf_windows(&self) -> &Portals {
+        &self.bsdf_windows
     }
 
     /// Adds openings (holes in the room's envelope, `super::openings` finds them) to the

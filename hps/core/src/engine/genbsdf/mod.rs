@@ -289,6 +289,7 @@ fn path_settings(settings: &GenBsdfSettings) -> Settings {
         sun_portal_sampling: false,
         stratified: false,
         path_reuse: false,
+        bsdf_window_sampling: false,
     }
 }
 
