@@ -482,21 +482,12 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
     let reference = converged_reference(&mut bench, args, &room, &sky, &dir, &log)?;
     let mut scene_files = room.scene_paths.clone();
     scene_files.push(sky_path.clone());
-    if args.engine_only {
-        measure_engine(
-            args,
-            &scene_files,
-            &room.dir,
-            &room.sensors,
-            &reference,
-            &log,
-        )?;
-        let _ = std::fs::remove_dir_all(&work);
-        return Ok(());
-    }
-    let mut rtrace_configs = measure_rtrace_pure(&mut bench, args, &reference, &log)?;
-    if !args.skip_cache_config {
-        rtrace_configs.push(measure_rtrace_cache(&mut bench, args, &reference, &log)?);
+    let mut rtrace_configs = Vec::new();
+    if !args.engine_only {
+        rtrace_configs = measure_rtrace_pure(&mut bench, args, &reference, &log)?;
+        if !args.skip_cache_config {
+            rtrace_configs.push(measure_rtrace_cache(&mut bench, args, &reference, &log)?);
+        }
     }
     let skylux_configs = measure_engine(
         args,
@@ -506,6 +497,11 @@ pub fn run(args: &IlluminanceBenchArgs) -> anyhow::Result<()> {
         &reference,
         &log,
     )?;
+    if args.engine_only {
+        // Tuning: the lines above are the result.
+        let _ = std::fs::remove_dir_all(&work);
+        return Ok(());
+    }
     let outcome = Outcome {
         room: &room,
         sky: format!("{} {}", sky_spec.tool, sky_spec.args.join(" ")),
