@@ -226,7 +226,10 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
             100.0 * se_rel,
             100.0 * rel
         );
-        assert!(rel.abs() < 0.02, "V row {s}: {rel}");
+        // 2 %, or 4 of rfluxmtx's own standard errors where its runs spread wider (the deep
+        // sensor S5: its mean moved by 1.1 % between two CI-like runs, ours fixed by the seed).
+        let band = 0.02_f64.max(4.0 * se_rel);
+        assert!(rel.abs() < band, "V row {s}: {rel} (band {band})");
     }
     // The patch-wise distribution: a mirrored or rotated frame moves the window's light
     // between patches (the building below the horizon, the sky above): tens of per cent.
