@@ -20,8 +20,9 @@
 //! consecutive ones (a grid's rows are neighbours), and path i of every sensor of a group is
 //! traced together. When a path's first vertex is a Lambertian surface, its estimate of the
 //! radiance there serves every sensor of the group that sees the point: sensor j takes
-//! π L p_j / Σ_k p_k, p_k the area density with which sensor k's cosine-weighted first
-//! direction lands there (the balance heuristic over the group's sensors; Veach 1997 §9.2;
+//! L G_j / Σ_k p_k, G_j its geometry term and p_k the area density with which sensor k's first
+//! direction (cosine-weighted, or mixed with the `BSDF` windows) lands there (the balance
+//! heuristic over the group's sensors; Veach 1997 §9.2;
 //! path reuse as in Bekaert, Sbert & Halton 2002, "Accelerating path tracing by re-using
 //! paths"). Sample i of sensor j is then its own path's remaining terms plus its shares of
 //! the group's i-th vertices, so the samples of different i stay independent and the

@@ -97,8 +97,8 @@ pub struct Settings {
     /// path, when it is a Lambertian surface, also lights the other sensors of its group
     /// that see it, weighted by the balance heuristic over the group's sensors. Unbiased.
     pub path_reuse: bool,
-    /// At Lambertian vertices, continuations mixed with directions towards the `BSDF`
-    /// windows (`Continuation`). Unbiased; on, the light a window of blinds or a shade
+    /// At the sensors and at Lambertian vertices with a `BSDF` window in front, continuations
+    /// mixed with directions towards the windows (`Continuation`). Unbiased; on, the light a window of blinds or a shade
     /// passes is found by many more paths.
     pub bsdf_window_sampling: bool,
 }

@@ -65,8 +65,6 @@ pub struct Portals {
     cumulative_m2: Vec<f64>,
     /// Primitive indices of the portal polygons, for reports.
     primitives: Vec<u32>,
-    /// Openings added ([`Portals::add_openings`]), which have no primitive.
-    openings: usize,
 }
 
 impl Portals {
@@ -81,18 +79,12 @@ impl Portals {
         portals
     }
 
-    /// Adds openings (rectangles with no surface in them), sampled like the rest.
+    /// Adds openings (rectangles with no surface in them, so no primitive), sampled like the
+    /// rest.
     pub fn add_openings(&mut self, openings: &[[DVec3; 4]]) {
         for o in openings {
-            if self.push_polygon(o) {
-                self.openings += 1;
-            }
+            self.push_polygon(o);
         }
-    }
-
-    /// Openings among the portals.
-    pub fn opening_count(&self) -> usize {
-        self.openings
     }
 
     /// Fan-triangulates a polygon into the portals; false if it has no area.
@@ -155,7 +147,7 @@ impl Portals {
         if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
-        let (y, _, _) = self.point(rng, total);
+        let (y, _) = self.point(rng, total);
         let to = y - x;
         let dist2 = to.length_squared();
         if (dist2).partial_cmp(&1e-18) != Some(std::cmp::Ordering::Greater) {
@@ -173,15 +165,15 @@ impl Portals {
         if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
-        let (p, _, i) = self.point(rng, total);
+        let (p, i) = self.point(rng, total);
         Some((p, i))
     }
 
-    /// A point uniform over the portals (total area `total` > 0), its triangle's normal and
-    /// index, from two uniforms: the first chooses the triangle by area and, rescaled within
+    /// A point uniform over the portals (total area `total` > 0) and its triangle's index,
+    /// from two uniforms: the first chooses the triangle by area and, rescaled within
     /// the triangle's share, gives the first coordinate, so stratified pairs stay stratified
     /// across triangles.
-    fn point(&self, rng: &mut Rng, total: f64) -> (DVec3, DVec3, usize) {
+    fn point(&self, rng: &mut Rng, total: f64) -> (DVec3, usize) {
         let target = rng.uniform() * total;
         let i = self
             .cumulative_m2
@@ -197,11 +189,7 @@ impl Portals {
         let u = ((target - below) / share).clamp(0.0, 1.0);
         // Uniform point on the triangle (square-root parametrisation).
         let (r1, r2) = (u.sqrt(), rng.uniform());
-        (
-            t.v0 + t.e1 * (r1 * (1.0 - r2)) + t.e2 * (r1 * r2),
-            t.normal,
-            i,
-        )
+        (t.v0 + t.e1 * (r1 * (1.0 - r2)) + t.e2 * (r1 * r2), i)
     }
 
     /// Density per unit area at a point `y` (unit normal `n_y`) of the points reached by
