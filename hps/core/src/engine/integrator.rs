@@ -101,6 +101,13 @@ pub struct Settings {
     /// mixed with directions towards the windows (`Continuation`). Unbiased; on, the light a window of blinds or a shade
     /// passes is found by many more paths.
     pub bsdf_window_sampling: bool,
+    /// Next-event estimation of the sunlit surfaces past the portals (the ground, a façade
+    /// or an overhang outside a window): a sky strategy's direction that meets an opaque
+    /// surface beyond a portal carries the sun's light reflected there, combined with the
+    /// continuation that reaches the same surface by multiple importance sampling. Unbiased;
+    /// on, the sunlit ground that a room sees only through its windows no longer reaches it
+    /// by rare continuations of great weight.
+    pub sunlit_outside_sampling: bool,
 }
 
 impl Default for Settings {
@@ -117,6 +124,7 @@ impl Default for Settings {
             stratified: true,
             path_reuse: true,
             bsdf_window_sampling: true,
+            sunlit_outside_sampling: true,
         }
     }
 }
@@ -263,7 +271,9 @@ fn sensor_path(
     let nee = SkyNee::new(world, settings);
     let continuation = Continuation::of_sensor(world, settings, position_m, normal);
     if let Some(nee) = &nee {
-        e += nee.estimate(world, position_m, from, &continuation, rng);
+        // A shared first vertex's estimate must not depend on the sensor that found it, so
+        // neither strategy that the vertex's own sun estimate is weighted against acts here.
+        e += nee.estimate(world, position_m, from, &continuation, !shared, rng);
         if !shared {
             e += nee.sun_estimate(world, position_m, from, &continuation, rng);
         }
@@ -276,6 +286,8 @@ fn sensor_path(
         position_m,
         pdf_sr: continuation.eval(d).1,
         sun_patch_sampled: !shared,
+        outside_sampled: !shared,
+        survival: 1.0,
     };
     let ray = Ray::new(position_m, d);
     let first = if shared {
@@ -337,6 +349,12 @@ struct LastDiffuse {
     /// The vertex also sampled the sun's patch ([`SkyNee::sun_estimate`]), so the next
     /// vertex's sun estimate shares the light with it by multiple importance sampling.
     sun_patch_sampled: bool,
+    /// The vertex also sampled the sunlit surfaces past the portals
+    /// ([`SkyNee::sunlit_outside`]): the sun estimate of a surface the path then meets beyond
+    /// a portal, through clear surfaces only, shares the light with it.
+    outside_sampled: bool,
+    /// The Russian-roulette survival of the continuation (1 without roulette).
+    survival: f64,
 }
 
 /// Share of a Lambertian vertex's continuations sent towards the `BSDF` windows.
@@ -424,6 +442,9 @@ struct SkyNee<'a> {
     sky: Option<&'a SkyDistribution>,
     /// Portals through which sunlit points are sampled (see [`SkyNee::sun_estimate`]).
     sun_portals: Option<&'a Portals>,
+    /// The sky strategies' directions also collect the sun reflected by the opaque surface
+    /// they meet beyond a portal ([`SkyNee::sunlit_outside`]).
+    sunlit_outside: bool,
 }
 
 impl<'a> SkyNee<'a> {
@@ -431,24 +452,29 @@ impl<'a> SkyNee<'a> {
     /// nothing beyond the scene is bright.
     fn new(world: &'a World, settings: &Settings) -> Option<Self> {
         let bright = world.has_escape_radiance();
-        let portals = (bright && settings.portal_sampling && !world.portals().is_empty())
-            .then(|| world.portals());
+        let has_light = world
+            .distant_sources()
+            .iter()
+            .any(|s| s.kind == DistantKind::Light);
+        // Sampled for the sky, or for the sunlit surfaces past them.
+        let sunlit_outside = has_light && settings.sunlit_outside_sampling;
+        let portals =
+            ((bright || sunlit_outside) && settings.portal_sampling && !world.portals().is_empty())
+                .then(|| world.portals());
         let sky = if bright && settings.sky_sampling {
             world.sky_distribution()
         } else {
             None
         };
-        let has_light = world
-            .distant_sources()
-            .iter()
-            .any(|s| s.kind == DistantKind::Light);
         let sun_portals =
             (has_light && settings.sun_portal_sampling && !world.portals().is_empty())
                 .then(|| world.portals());
+        let sunlit_outside = sunlit_outside && portals.is_some();
         (portals.is_some() || sky.is_some() || sun_portals.is_some()).then_some(Self {
             portals,
             sky,
             sun_portals,
+            sunlit_outside,
         })
     }
 
@@ -558,10 +584,13 @@ impl<'a> SkyNee<'a> {
             }
             let p_a = continuation.survival(w) * pdf_lobe * cos_y / d2;
             let p_b = portals.projected_area_pdf(y, n_y, s, t_max);
-            if (p_a + p_b).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            // Seen through an opening, y is also the sunlit outside's (area measure).
+            let p_c = self.outside_pdf_sr(x, w, dist) * cos_y / d2;
+            let total = p_a + p_b + p_c;
+            if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 continue;
             }
-            sum += f * (cos_y / d2) * c * source.radiance(l) * t / (p_a + p_b);
+            sum += f * (cos_y / d2) * c * source.radiance(l) * t / total;
         }
         sum
     }
@@ -605,31 +634,35 @@ impl<'a> SkyNee<'a> {
 
     /// One sample from each strategy at `x` (leaving surface `from`), for the diffuse `lobe`:
     /// Σ f |cos| L T / (p_lobe + p_portal + p_sky), the reflected radiance (or irradiance for
-    /// a sensor) they estimate.
+    /// a sensor) they estimate; with `outside`, also the sunlit surfaces past the portals
+    /// their directions meet ([`SkyNee::sunlit_outside`]).
     fn estimate(
         &self,
         world: &World,
         x: DVec3,
         from: Option<u32>,
         lobe: &Continuation,
+        outside: bool,
         rng: &mut Rng,
     ) -> DVec3 {
+        let outside = outside && self.sunlit_outside;
         let mut sum = DVec3::ZERO;
         if let Some(portals) = self.portals {
             if let Some((d, pp)) = portals.sample(x, rng) {
-                sum += self.one(world, x, from, lobe, d, Some(pp));
+                sum += self.one(world, x, from, lobe, d, Some(pp), outside, rng);
             }
         }
         if let Some(sky) = self.sky {
             let (d, _) = sky.sample(rng);
             let pp = self.portals.map(|p| p.pdf(x, d));
             if pp.is_none_or(|pp| pp > 0.0) {
-                sum += self.one(world, x, from, lobe, d, pp);
+                sum += self.one(world, x, from, lobe, d, pp, outside, rng);
             }
         }
         sum
     }
 
+    #[allow(clippy::too_many_arguments)]
     fn one(
         &self,
         world: &World,
@@ -638,25 +671,134 @@ impl<'a> SkyNee<'a> {
         lobe: &Continuation,
         d: DVec3,
         portal_pdf: Option<f64>,
+        outside: bool,
+        rng: &mut Rng,
     ) -> DVec3 {
         let (f, pdf_lobe) = lobe.eval(d);
         if f == DVec3::ZERO {
             return DVec3::ZERO;
         }
         let l = world.escape_radiance(d);
-        if l == DVec3::ZERO {
+        if l == DVec3::ZERO && !outside {
             return DVec3::ZERO;
         }
-        let denominator = pdf_lobe + self.pdf_sr_given(portal_pdf, d);
+        let p_nee = self.pdf_sr_given(portal_pdf, d);
+        let denominator = pdf_lobe + p_nee;
         if (denominator).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return DVec3::ZERO;
         }
         let t = world.shadow_transmission(x, from, d);
         if t == DVec3::ZERO {
-            return DVec3::ZERO;
+            return if outside {
+                self.sunlit_outside(world, x, from, lobe, d, p_nee, rng)
+            } else {
+                DVec3::ZERO
+            };
         }
         f * l * t / denominator
     }
+
+    /// Density (per steradian) of the sky strategies for unit `d` from `x` when the opaque
+    /// surface `dist` away along it lies past a portal, as [`SkyNee::sunlit_outside`] counts
+    /// it; 0 otherwise (or when that strategy is off).
+    fn outside_pdf_sr(&self, x: DVec3, d: DVec3, dist: f64) -> f64 {
+        let Some(portals) = self.portals.filter(|_| self.sunlit_outside) else {
+            return 0.0;
+        };
+        let (pp, first) = portals.pdf_and_first_crossing(x, d);
+        if pp > 0.0 && lies_beyond(first, dist) {
+            self.pdf_sr_given(Some(pp), d)
+        } else {
+            0.0
+        }
+    }
+
+    /// The sun reflected towards `x` by the opaque surface y that unit `d` (a sky strategy's
+    /// direction, density `p_nee` per steradian, whose shadow ray something blocked) meets
+    /// past a portal, through the glass on the way: the ground, a façade, an overhang
+    /// outside. Combined by the balance heuristic with the continuation that reaches y
+    /// through clear surfaces (its density q p(ω), q its Russian-roulette survival), whose
+    /// sun estimate at y [`Tracer::sun`] weights to match, and, where nothing lies between x
+    /// and y (an opening), with the sun-patch strategy's density at y.
+    #[allow(clippy::too_many_arguments)]
+    fn sunlit_outside(
+        &self,
+        world: &World,
+        x: DVec3,
+        from: Option<u32>,
+        lobe: &Continuation,
+        d: DVec3,
+        p_nee: f64,
+        rng: &mut Rng,
+    ) -> DVec3 {
+        let Some(portals) = self.portals else {
+            return DVec3::ZERO;
+        };
+        let ray = Ray::new(x, d);
+        let Some(hit) = world.first_opaque(&ray, from) else {
+            return DVec3::ZERO;
+        };
+        let (_, first) = portals.pdf_and_first_crossing(x, d);
+        let cos_y = hit.normal.dot(d).abs();
+        let material = world.material(hit.primitive);
+        if !lies_beyond(first, hit.t_m) || cos_y <= 1e-9 || !material.is_shaded_somewhere() {
+            return DVec3::ZERO;
+        }
+        let y = ray.at(hit.t_m);
+        let flat = world.is_flat(hit.primitive);
+        let (m_y, shading_normal) = material.at_hit(&hit.as_seen(y, d, flat), rng);
+        let Some(shading) = m_y.shading(d, shading_normal, flat) else {
+            return DVec3::ZERO;
+        };
+        let (f, pdf_lobe) = lobe.eval(d);
+        let p_continuation = lobe.survival(d) * pdf_lobe;
+        let mut clear: Option<(DVec3, bool)> = None;
+        let mut sum = DVec3::ZERO;
+        for source in world.distant_sources() {
+            if source.kind != DistantKind::Light {
+                continue;
+            }
+            let l = sample_cone(source, rng);
+            let c = shading.source_coefficient(l, source.solid_angle_sr);
+            if c == DVec3::ZERO || !brighter_than_zero(c * source.radiance(l)) {
+                continue;
+            }
+            let t_sun =
+                world.source_transmission(shading.origin_towards(y, l), Some(hit.primitive), l);
+            if t_sun == DVec3::ZERO {
+                continue;
+            }
+            // The glass between x and y, once.
+            let (t_clear, crossed) = *clear.get_or_insert_with(|| {
+                world.transmission_within(x, from, d, hit.t_m * (1.0 - 1e-9))
+            });
+            if t_clear == DVec3::ZERO {
+                return sum;
+            }
+            // Nothing between x and y: the sun-patch strategy may reach y too.
+            let p_patch_sr = if crossed {
+                0.0
+            } else {
+                self.sun_patch_pdf(world, y, hit.normal, hit.primitive, source.direction)
+                    * hit.t_m
+                    * hit.t_m
+                    / cos_y
+            };
+            let total = p_continuation + p_nee + p_patch_sr;
+            if (total).partial_cmp(&0.0) == Some(std::cmp::Ordering::Greater) {
+                sum += f * t_clear * c * source.radiance(l) * t_sun / total;
+            }
+        }
+        sum
+    }
+}
+
+/// Whether the surface `dist` away along a line lies past the portal crossed `first_crossing`
+/// away: what [`SkyNee::sunlit_outside`] counts and every weight against it tests alike. The
+/// margin keeps a portal in the plane of a surface (an opening's cell over the wall around the
+/// hole) from counting by rounding on one side and not on the other.
+fn lies_beyond(first_crossing: f64, dist: f64) -> bool {
+    first_crossing < dist * (1.0 - 1e-6) - 1e-6
 }
 
 /// One path from a sensor, as [`irradiance_sample`] traces it, with no distant `light` and
@@ -802,6 +944,9 @@ struct PathState {
     /// segment, while the path has gone straight from it with no crossing: what the sun-patch
     /// strategy's weight at the next vertex needs.
     direct: Option<f64>,
+    /// Since the last diffuse vertex the path has crossed only clear surfaces (glass, no
+    /// material), as the sunlit-outside strategy's rays do.
+    clear_only: bool,
     /// Where the next segment starts when not at the vertex (a proxy's transmitted light,
     /// [`Shading::origin_towards`]).
     next_origin: Option<DVec3>,
@@ -846,6 +991,7 @@ fn trace(
         crossings: 0,
         last,
         direct: last.filter(|l| l.sun_patch_sampled).map(|l| l.pdf_sr),
+        clear_only: true,
         next_origin: None,
         view,
     };
@@ -869,7 +1015,12 @@ fn trace(
                 Next::End
             }
             Interaction::Absorbed => Next::End,
-            Interaction::Specular(step) => path.specular(settings, |rng| step.sample(rng), rng),
+            Interaction::Specular(step) => {
+                if !world.material(hit.primitive).is_clear() {
+                    path.clear_only = false;
+                }
+                path.specular(settings, |rng| step.sample(rng), rng)
+            }
             Interaction::Shaded(shading) => tracer.shade(&mut path, &hit, p, &shading, rng),
         };
         match next {
@@ -980,22 +1131,39 @@ impl<'a> Tracer<'a, '_> {
             Scatter::Diffuse { direction, weight } => {
                 self.bounce(path, p, direction, weight, continuation, rng)
             }
-            Scatter::Specular { direction, weight } => path.specular(
-                self.settings,
-                |_| Scatter::Specular { direction, weight },
-                rng,
-            ),
+            Scatter::Specular { direction, weight } => {
+                path.clear_only = false;
+                path.specular(
+                    self.settings,
+                    |_| Scatter::Specular { direction, weight },
+                    rng,
+                )
+            }
         }
     }
 
     /// Next-event estimation of every distant `light` at the vertex; reached straight from a
-    /// diffuse vertex, the sun-patch strategy there could have produced this vertex too, so
-    /// the estimate is weighted by the balance heuristic in area measure.
+    /// diffuse vertex, the sun-patch strategy there could have produced this vertex too, and
+    /// so could the sunlit-outside strategy past a portal, so the estimate is weighted by
+    /// the balance heuristic in area measure.
     fn sun(&self, path: &mut PathState, hit: &Hit, p: DVec3, shading: &Shading, rng: &mut Rng) {
         let d = path.ray.direction;
-        let p_direct = match (self.nee, path.direct) {
-            (Some(nee), Some(pdf)) if nee.sun_portals.is_some() => {
-                Some(pdf * hit.normal.dot(d).abs() / (hit.t_m * hit.t_m))
+        // (the continuation's density, the sunlit outside's, whether the sun patch's counts)
+        let densities = match (self.nee, path.last.filter(|_| path.clear_only)) {
+            (Some(nee), Some(last)) => {
+                let dist = if path.direct.is_some() {
+                    hit.t_m
+                } else {
+                    (p - last.position_m).length()
+                };
+                let g = hit.normal.dot(d).abs() / (dist * dist);
+                let outside = if last.outside_sampled {
+                    nee.outside_pdf_sr(last.position_m, d, dist) * g
+                } else {
+                    0.0
+                };
+                let patch = path.direct.is_some() && nee.sun_portals.is_some();
+                Some((last.pdf_sr * last.survival * g, outside, patch))
             }
             _ => None,
         };
@@ -1014,16 +1182,20 @@ impl<'a> Tracer<'a, '_> {
             if t == DVec3::ZERO {
                 continue;
             }
-            let w = match (self.nee, p_direct) {
-                (Some(nee), Some(p_a)) if p_a > 0.0 => {
-                    let p_b = nee.sun_patch_pdf(
-                        self.world,
-                        p,
-                        hit.normal,
-                        hit.primitive,
-                        source.direction,
-                    );
-                    p_a / (p_a + p_b)
+            let w = match (self.nee, densities) {
+                (Some(nee), Some((p_a, p_c, patch))) if p_a > 0.0 => {
+                    let p_b = if patch {
+                        nee.sun_patch_pdf(
+                            self.world,
+                            p,
+                            hit.normal,
+                            hit.primitive,
+                            source.direction,
+                        )
+                    } else {
+                        0.0
+                    };
+                    p_a / (p_a + p_b + p_c)
                 }
                 _ => 1.0,
             };
@@ -1060,7 +1232,7 @@ impl<'a> Tracer<'a, '_> {
         };
         if let Some(nee) = self.nee {
             path.radiance +=
-                path.throughput * nee.estimate(self.world, p, path.from, &continuation, rng);
+                path.throughput * nee.estimate(self.world, p, path.from, &continuation, true, rng);
             if nee.sun_portals.is_some() {
                 path.radiance += path.throughput
                     * nee.sun_estimate(self.world, p, path.from, &continuation, rng);
@@ -1085,7 +1257,10 @@ impl<'a> Tracer<'a, '_> {
             position_m: p,
             pdf_sr: c.eval(direction).1,
             sun_patch_sampled: true,
+            outside_sampled: true,
+            survival: 1.0,
         });
+        path.clear_only = true;
         let mut survival = 1.0;
         if self.roulette && path.ambient_used > RUSSIAN_ROULETTE_AFTER {
             let q = (path.throughput.max_element() / RUSSIAN_ROULETTE_THROUGHPUT).min(1.0);
@@ -1096,6 +1271,9 @@ impl<'a> Tracer<'a, '_> {
             survival = q;
         }
         // Every diffuse vertex samples the sun patch, so the next vertex weights its sun.
+        if let Some(last) = path.last.as_mut() {
+            last.survival = survival;
+        }
         path.direct = path.last.map(|l| l.pdf_sr * survival);
         if path.throughput.max_element() <= 0.0 {
             return Next::End;

@@ -226,20 +226,27 @@ impl Portals {
     /// Σ t² / (A |n · d|) over the portal triangles the half-line crosses at distance t,
     /// A the total portal area.
     pub fn pdf(&self, x: DVec3, d: DVec3) -> f64 {
+        self.pdf_and_first_crossing(x, d).0
+    }
+
+    /// [`Portals::pdf`], and the distance along `d` from `x` to the nearest portal triangle
+    /// crossed (infinite if none): where the outside begins on that line.
+    pub fn pdf_and_first_crossing(&self, x: DVec3, d: DVec3) -> (f64, f64) {
         let total = self.total_area_m2();
         if (total).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
-            return 0.0;
+            return (0.0, f64::INFINITY);
         }
-        let mut p = 0.0;
+        let (mut p, mut first) = (0.0, f64::INFINITY);
         for t in &self.triangles {
             if let Some(dist) = t.hit(x, d) {
                 let c = t.normal.dot(d).abs();
                 if c > 1e-12 {
                     p += dist * dist / (total * c);
+                    first = first.min(dist);
                 }
             }
         }
-        p
+        (p, first)
     }
 }
 

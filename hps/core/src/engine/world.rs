@@ -530,21 +530,35 @@ impl World {
     /// transmits may be crossed twice, which one intersection per primitive cannot see, so a
     /// ray that meets one is traced crossing by crossing instead.
     pub fn shadow_transmission(&self, origin: DVec3, from: Option<u32>, dir: DVec3) -> DVec3 {
+        self.transmission_within(origin, from, dir, f64::INFINITY).0
+    }
+
+    /// [`World::shadow_transmission`] over the first `t_max_m` of the ray only, and whether
+    /// it crosses any surface there (invisible ones too): what passes from a point to the
+    /// surface it sees through glass.
+    pub fn transmission_within(
+        &self,
+        origin: DVec3,
+        from: Option<u32>,
+        dir: DVec3,
+        t_max_m: f64,
+    ) -> (DVec3, bool) {
         if !self.antimatter.is_empty() {
             // Which surfaces count depends on the volumes crossed: in order only.
-            return self.shadow_transmission_stepwise(origin, from, dir);
+            return self.transmission_stepwise(origin, from, dir, t_max_m);
         }
         let ray = Ray::new(origin, dir);
         let mut t = DVec3::ONE;
+        let mut crossed = false;
         let mut curved_crossing = false;
         let mut visit = |p: u32| {
             let Some(t_min) = self.self_hit_t_min(p, from) else {
                 return true;
             };
-            let Some(hit) = self.primitives[p as usize].intersect(&ray, t_min, f64::INFINITY)
-            else {
+            let Some(hit) = self.primitives[p as usize].intersect(&ray, t_min, t_max_m) else {
                 return true;
             };
+            crossed = true;
             let point = HitPoint {
                 point_m: ray.at(hit.t_m),
                 direction: dir,
@@ -566,15 +580,15 @@ impl World {
         };
         if self.software_box_test {
             self.bvh
-                .visit_crossed(&SlabTest, &ray, 0.0, f64::INFINITY, &mut visit);
+                .visit_crossed(&SlabTest, &ray, 0.0, t_max_m, &mut visit);
         } else {
             self.bvh
-                .visit_crossed(self.box_test.as_ref(), &ray, 0.0, f64::INFINITY, &mut visit);
+                .visit_crossed(self.box_test.as_ref(), &ray, 0.0, t_max_m, &mut visit);
         }
         if curved_crossing {
-            self.shadow_transmission_stepwise(origin, from, dir)
+            self.transmission_stepwise(origin, from, dir, t_max_m)
         } else {
-            t
+            (t, crossed)
         }
     }
 
@@ -620,29 +634,38 @@ impl World {
         DVec3::ZERO
     }
 
-    /// [`World::shadow_transmission`] crossing by crossing, one closest-hit query each.
-    fn shadow_transmission_stepwise(&self, origin: DVec3, from: Option<u32>, dir: DVec3) -> DVec3 {
+    /// [`World::transmission_within`] crossing by crossing, one closest-hit query each.
+    fn transmission_stepwise(
+        &self,
+        origin: DVec3,
+        from: Option<u32>,
+        dir: DVec3,
+        t_max_m: f64,
+    ) -> (DVec3, bool) {
         let mut ray = Ray::new(origin, dir);
         let mut from = from;
         let mut t = DVec3::ONE;
-        for _ in 0..MAX_SHADOW_CROSSINGS {
-            let Some(hit) = self.intersect(&ray, from) else {
-                return t;
+        let mut left_m = t_max_m;
+        for crossing in 0..MAX_SHADOW_CROSSINGS {
+            let crossed = crossing > 0;
+            let Some(hit) = self.intersect(&ray, from).filter(|h| h.t_m < left_m) else {
+                return (t, crossed);
             };
             let flat = self.is_flat(hit.primitive);
             let point = hit.as_seen(ray.at(hit.t_m), dir, flat);
             match self.material(hit.primitive).shadow_crossing_at(&point) {
                 ShadowCrossing::PassThrough => {}
                 ShadowCrossing::Transmits(factor) => t *= factor,
-                ShadowCrossing::Opaque => return DVec3::ZERO,
+                ShadowCrossing::Opaque => return (DVec3::ZERO, true),
             }
             if t == DVec3::ZERO {
-                return t;
+                return (t, true);
             }
+            left_m -= hit.t_m;
             ray = Ray::new(ray.at(hit.t_m), dir);
             from = Some(hit.primitive);
         }
-        DVec3::ZERO
+        (DVec3::ZERO, true)
     }
 }
 

@@ -290,6 +290,7 @@ fn path_settings(settings: &GenBsdfSettings) -> Settings {
         stratified: false,
         path_reuse: false,
         bsdf_window_sampling: false,
+        sunlit_outside_sampling: false,
     }
 }
 
