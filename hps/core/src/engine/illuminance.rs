@@ -337,15 +337,12 @@ fn share_vertex(
         if !(cos_k > 0.0 && cos_v > 0.0) {
             continue;
         }
-        // The vertex must be sensor k's first hit along w (the sensor that found it saw it).
-        if k != from {
-            match world.intersect_within(&Ray::new(sensor.position_m, w), None, dist * (1.0 + 1e-6))
-            {
-                Some(h)
-                    if h.primitive == v.primitive
-                        && (h.t_m - dist).abs() <= 1e-6 * dist.max(1.0) => {}
-                _ => continue,
-            }
+        // The vertex must be sensor k's first hit along w (the sensor that found it saw it):
+        // nothing before it.
+        if k != from
+            && world.blocked_within(&Ray::new(sensor.position_m, w), None, dist * (1.0 - 1e-6))
+        {
+            continue;
         }
         let pdf_sr = sensor_direction_pdf(world, settings, sensor.position_m, normal, w);
         density[k] = pdf_sr * cos_v / d2;

@@ -567,10 +567,8 @@ impl<'a> SkyNee<'a> {
                 continue;
             }
             // x must see y directly.
-            match world.intersect_within(&Ray::new(x, w), from, dist * (1.0 + 1e-6)) {
-                Some(h)
-                    if h.primitive == prim_y && (h.t_m - dist).abs() <= 1e-6 * dist.max(1.0) => {}
-                _ => continue,
+            if world.blocked_within(&Ray::new(x, w), from, dist * (1.0 - 1e-6)) {
+                continue;
             }
             // Only a point whose way back to the portal counts in the density (see
             // `Portals::projected_area_pdf`).
@@ -687,15 +685,15 @@ impl<'a> SkyNee<'a> {
         if (denominator).partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return DVec3::ZERO;
         }
-        let t = world.shadow_transmission(x, from, d);
-        if t == DVec3::ZERO {
+        let shadow = world.transmission_within(x, from, d, f64::INFINITY);
+        if shadow.transmission == DVec3::ZERO {
             return if outside {
-                self.sunlit_outside(world, x, from, lobe, d, p_nee, rng)
+                self.sunlit_outside(world, x, from, lobe, d, p_nee, shadow.blocked_at_m, rng)
             } else {
                 DVec3::ZERO
             };
         }
-        f * l * t / denominator
+        f * l * shadow.transmission / denominator
     }
 
     /// Density (per steradian) of the sky strategies for unit `d` from `x` when the opaque
@@ -714,7 +712,8 @@ impl<'a> SkyNee<'a> {
     }
 
     /// The sun reflected towards `x` by the opaque surface y that unit `d` (a sky strategy's
-    /// direction, density `p_nee` per steradian, whose shadow ray something blocked) meets
+    /// direction, density `p_nee` per steradian, whose shadow ray was found blocked
+    /// `blocked_at_m` away) meets
     /// past a portal, through the glass on the way: the ground, a façade, an overhang
     /// outside. Combined by the balance heuristic with the continuation that reaches y
     /// through clear surfaces (its density q p(ω), q its Russian-roulette survival), whose
@@ -729,16 +728,22 @@ impl<'a> SkyNee<'a> {
         lobe: &Continuation,
         d: DVec3,
         p_nee: f64,
+        blocked_at_m: f64,
         rng: &mut Rng,
     ) -> DVec3 {
         let Some(portals) = self.portals else {
             return DVec3::ZERO;
         };
+        // Blocked before the portals: nothing past them is seen (the common case deep in a
+        // room, settled without another ray).
+        let (_, first) = portals.pdf_and_first_crossing(x, d);
+        if !lies_beyond(first, blocked_at_m) {
+            return DVec3::ZERO;
+        }
         let ray = Ray::new(x, d);
         let Some(hit) = world.first_opaque(&ray, from) else {
             return DVec3::ZERO;
         };
-        let (_, first) = portals.pdf_and_first_crossing(x, d);
         let cos_y = hit.normal.dot(d).abs();
         let material = world.material(hit.primitive);
         if !lies_beyond(first, hit.t_m) || cos_y <= 1e-9 || !material.is_shaded_somewhere() {
@@ -770,7 +775,8 @@ impl<'a> SkyNee<'a> {
             }
             // The glass between x and y, once.
             let (t_clear, crossed) = *clear.get_or_insert_with(|| {
-                world.transmission_within(x, from, d, hit.t_m * (1.0 - 1e-9))
+                let s = world.transmission_within(x, from, d, hit.t_m * (1.0 - 1e-9));
+                (s.transmission, s.crossed)
             });
             if t_clear == DVec3::ZERO {
                 return sum;
@@ -1148,8 +1154,9 @@ impl<'a> Tracer<'a, '_> {
     /// the balance heuristic in area measure.
     fn sun(&self, path: &mut PathState, hit: &Hit, p: DVec3, shading: &Shading, rng: &mut Rng) {
         let d = path.ray.direction;
-        // (the continuation's density, the sunlit outside's, whether the sun patch's counts)
-        let densities = match (self.nee, path.last.filter(|_| path.clear_only)) {
+        // The continuation's density and its geometry term, per unit area, and whether the
+        // sun patch's density counts.
+        let straight = match (self.nee, path.last.filter(|_| path.clear_only)) {
             (Some(nee), Some(last)) => {
                 let dist = if path.direct.is_some() {
                     hit.t_m
@@ -1157,16 +1164,13 @@ impl<'a> Tracer<'a, '_> {
                     (p - last.position_m).length()
                 };
                 let g = hit.normal.dot(d).abs() / (dist * dist);
-                let outside = if last.outside_sampled {
-                    nee.outside_pdf_sr(last.position_m, d, dist) * g
-                } else {
-                    0.0
-                };
                 let patch = path.direct.is_some() && nee.sun_portals.is_some();
-                Some((last.pdf_sr * last.survival * g, outside, patch))
+                Some((nee, last, dist, g, patch))
             }
             _ => None,
         };
+        // The sunlit outside's density, once, when some light arrives.
+        let mut outside: Option<f64> = None;
         for source in self.world.distant_sources() {
             if source.kind != DistantKind::Light {
                 continue;
@@ -1182,8 +1186,9 @@ impl<'a> Tracer<'a, '_> {
             if t == DVec3::ZERO {
                 continue;
             }
-            let w = match (self.nee, densities) {
-                (Some(nee), Some((p_a, p_c, patch))) if p_a > 0.0 => {
+            let w = match straight {
+                Some((nee, last, dist, g, patch)) if last.pdf_sr * last.survival > 0.0 => {
+                    let p_a = last.pdf_sr * last.survival * g;
                     let p_b = if patch {
                         nee.sun_patch_pdf(
                             self.world,
@@ -1195,6 +1200,13 @@ impl<'a> Tracer<'a, '_> {
                     } else {
                         0.0
                     };
+                    let p_c = *outside.get_or_insert_with(|| {
+                        if last.outside_sampled {
+                            nee.outside_pdf_sr(last.position_m, d, dist) * g
+                        } else {
+                            0.0
+                        }
+                    });
                     p_a / (p_a + p_b + p_c)
                 }
                 _ => 1.0,

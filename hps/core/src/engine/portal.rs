@@ -26,6 +26,11 @@ impl Triangle {
     /// Distance along unit `d` from `o` at which the triangle is crossed (Möller–Trumbore,
     /// "Fast, minimum storage ray/triangle intersection", 1997), if ahead.
     fn hit(&self, o: DVec3, d: DVec3) -> Option<f64> {
+        // The plane first: most lines from a point leave most portals' planes behind.
+        let towards = self.normal.dot(d);
+        if towards == 0.0 || self.normal.dot(self.v0 - o) / towards <= 0.0 {
+            return None;
+        }
         let p = d.cross(self.e2);
         let det = self.e1.dot(p);
         if det.abs() < 1e-15 {

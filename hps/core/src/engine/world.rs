@@ -392,6 +392,33 @@ impl World {
         self.closest_where(ray, from, |_| true)
     }
 
+    /// Whether any surface (glass and invisible ones too) lies on `ray` nearer than
+    /// `t_max_m`, not counting the flat surface `from`: whether a point that far along it is
+    /// the ray's first hit. One unordered traversal that stops at the first surface found.
+    pub fn blocked_within(&self, ray: &Ray, from: Option<u32>, t_max_m: f64) -> bool {
+        if !self.antimatter.is_empty() {
+            return self.intersect_within(ray, from, t_max_m).is_some();
+        }
+        let mut blocked = false;
+        let mut visit = |p: u32| {
+            let Some(t_min) = self.self_hit_t_min(p, from) else {
+                return true;
+            };
+            blocked = self.primitives[p as usize]
+                .intersect(ray, t_min, t_max_m)
+                .is_some();
+            !blocked
+        };
+        if self.software_box_test {
+            self.bvh
+                .visit_crossed(&SlabTest, ray, 0.0, t_max_m, &mut visit);
+        } else {
+            self.bvh
+                .visit_crossed(self.box_test.as_ref(), ray, 0.0, t_max_m, &mut visit);
+        }
+        blocked
+    }
+
     /// [`World::intersect`] nearer than `t_max_m`: a visibility test that need not look past
     /// the point it tests.
     pub fn intersect_within(&self, ray: &Ray, from: Option<u32>, t_max_m: f64) -> Option<Hit> {
@@ -530,19 +557,20 @@ impl World {
     /// transmits may be crossed twice, which one intersection per primitive cannot see, so a
     /// ray that meets one is traced crossing by crossing instead.
     pub fn shadow_transmission(&self, origin: DVec3, from: Option<u32>, dir: DVec3) -> DVec3 {
-        self.transmission_within(origin, from, dir, f64::INFINITY).0
+        self.transmission_within(origin, from, dir, f64::INFINITY)
+            .transmission
     }
 
-    /// [`World::shadow_transmission`] over the first `t_max_m` of the ray only, and whether
-    /// it crosses any surface there (invisible ones too): what passes from a point to the
-    /// surface it sees through glass.
+    /// [`World::shadow_transmission`] over the first `t_max_m` of the ray only, whether it
+    /// crosses any surface there (invisible ones too), and where it was found blocked: what
+    /// passes from a point to the surface it sees through glass.
     pub fn transmission_within(
         &self,
         origin: DVec3,
         from: Option<u32>,
         dir: DVec3,
         t_max_m: f64,
-    ) -> (DVec3, bool) {
+    ) -> ShadowSegment {
         if !self.antimatter.is_empty() {
             // Which surfaces count depends on the volumes crossed: in order only.
             return self.transmission_stepwise(origin, from, dir, t_max_m);
@@ -550,6 +578,7 @@ impl World {
         let ray = Ray::new(origin, dir);
         let mut t = DVec3::ONE;
         let mut crossed = false;
+        let mut blocked_at_m = f64::INFINITY;
         let mut curved_crossing = false;
         let mut visit = |p: u32| {
             let Some(t_min) = self.self_hit_t_min(p, from) else {
@@ -576,6 +605,9 @@ impl World {
                 return false;
             }
             t *= factor;
+            if t == DVec3::ZERO {
+                blocked_at_m = hit.t_m;
+            }
             t != DVec3::ZERO
         };
         if self.software_box_test {
@@ -588,7 +620,11 @@ impl World {
         if curved_crossing {
             self.transmission_stepwise(origin, from, dir, t_max_m)
         } else {
-            (t, crossed)
+            ShadowSegment {
+                transmission: t,
+                crossed,
+                blocked_at_m,
+            }
         }
     }
 
@@ -641,32 +677,55 @@ impl World {
         from: Option<u32>,
         dir: DVec3,
         t_max_m: f64,
-    ) -> (DVec3, bool) {
+    ) -> ShadowSegment {
         let mut ray = Ray::new(origin, dir);
         let mut from = from;
         let mut t = DVec3::ONE;
-        let mut left_m = t_max_m;
+        let mut travelled_m = 0.0;
+        let blocked = |at_m: f64| ShadowSegment {
+            transmission: DVec3::ZERO,
+            crossed: true,
+            blocked_at_m: at_m,
+        };
         for crossing in 0..MAX_SHADOW_CROSSINGS {
-            let crossed = crossing > 0;
-            let Some(hit) = self.intersect(&ray, from).filter(|h| h.t_m < left_m) else {
-                return (t, crossed);
+            let Some(hit) = self
+                .intersect(&ray, from)
+                .filter(|h| travelled_m + h.t_m < t_max_m)
+            else {
+                return ShadowSegment {
+                    transmission: t,
+                    crossed: crossing > 0,
+                    blocked_at_m: f64::INFINITY,
+                };
             };
+            travelled_m += hit.t_m;
             let flat = self.is_flat(hit.primitive);
             let point = hit.as_seen(ray.at(hit.t_m), dir, flat);
             match self.material(hit.primitive).shadow_crossing_at(&point) {
                 ShadowCrossing::PassThrough => {}
                 ShadowCrossing::Transmits(factor) => t *= factor,
-                ShadowCrossing::Opaque => return (DVec3::ZERO, true),
+                ShadowCrossing::Opaque => return blocked(travelled_m),
             }
             if t == DVec3::ZERO {
-                return (t, true);
+                return blocked(travelled_m);
             }
-            left_m -= hit.t_m;
             ray = Ray::new(ray.at(hit.t_m), dir);
             from = Some(hit.primitive);
         }
-        (DVec3::ZERO, true)
+        blocked(travelled_m)
     }
+}
+
+/// What a shadow ray meets over a stretch of its line ([`World::transmission_within`]).
+#[derive(Clone, Copy, Debug)]
+pub struct ShadowSegment {
+    /// The product of the transmissions crossed; 0 if something opaque is in the way.
+    pub transmission: DVec3,
+    /// Some surface (glass, invisible or opaque) lies on the stretch.
+    pub crossed: bool,
+    /// Where the surface that stopped the ray lies (infinite if none did). Found by an
+    /// unordered traversal, it is a blocker, not always the nearest one.
+    pub blocked_at_m: f64,
 }
 
 /// The distant emitter of a `source` surface `s` with its material `material` and the
