@@ -487,6 +487,48 @@ fn textured_mirror_matches_rtrace() {
     );
 }
 
+/// A texture above a `mixfunc` of two materials (as `!genrev ... -s` writes one over the
+/// modifier it is given: RADIANCE's test render `torus.rad` has its smoothing texture over a
+/// `mixfunc` of a metal and a glow): both sides take the perturbed normal, and a pattern
+/// above colours both. The sides alternate in stripes (a coefficient of 1 or 0, so rtrace
+/// traces one side and we choose it for sure); ray by ray within 1e-3 of rtrace, and the
+/// texture changes at least a quarter of rtrace's rays.
+#[test]
+fn texture_above_a_material_mixfunc_matches_rtrace() {
+    let Some((bin, lib)) = radiance_or_skip() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("ripple.cal"),
+        "dx = 0.3 * sin(2.5 * Px);\ndy = 0.2 * cos(1.7 * Py);\ndz = 0;\nflat = 0;\n\
+         tint = 0.7 + 0.3 * cos(2 * Px + Py);\n",
+    )
+    .unwrap();
+    let scene = |dx: &str| {
+        format!(
+            "void light sunlight 0 0 3 2e4 2e4 2e4\n\
+             sunlight source sun 0 0 4 0.3 0.2 1 0.5\n\
+             void plastic red 0 0 5 0.7 0.2 0.1 0 0\n\
+             void plastic blue 0 0 5 0.1 0.3 0.7 0 0\n\
+             void mixfunc striped 4 red blue if(sin(3*Px),1,0) .\n0\n0\n\
+             striped texfunc ripple 4 {dx} ripple.cal\n0\n0\n\
+             ripple brightfunc tinted 2 tint ripple.cal\n0\n0\n\
+             tinted polygon floor 0 0 12 0 0 0 4 0 0 4 3 0 0 3 0\n"
+        )
+    };
+    std::fs::write(dir.path().join("scene.rad"), scene("flat flat flat")).unwrap();
+    let straight = rtrace_along(dir.path(), &rays(), &bin, &lib);
+    let theirs = compare_scene(
+        dir.path(),
+        &scene("dx dy dz"),
+        "a texture and a pattern above a mixfunc of two plastics",
+        &bin,
+        &lib,
+    );
+    moved_by_the_texture(&theirs, &straight);
+}
+
 /// `floor.cal`: stripes of colour along x and y, so a ray that lands elsewhere reads
 /// otherwise.
 fn write_floor_stripes(dir: &std::path::Path) {

@@ -233,8 +233,8 @@ const CASES: &[Case] = &[
         dir: RENDERS,
         files: &["basic.mat", "torus.rad"],
         // `genrev -s` writes `texfunc Phong` of RADIANCE's rev.cal, which is in RADIANCE's
-        // library, not in the snapshot (with RAYPATH at that library the engine stops at
-        // torus.rad:14 instead: a texfunc above a mixfunc).
+        // library, not in the snapshot (with RAYPATH at that library it loads: its texture
+        // above a mixfunc, patterns_ray_by_ray_vs_rtrace.rs).
         expect: Expect::Unreadable("rev.cal"),
     },
     Case {

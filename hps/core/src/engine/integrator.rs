@@ -775,7 +775,7 @@ impl<'a> SkyNee<'a> {
             }
             // The glass between x and y, once.
             let (t_clear, crossed) = *clear.get_or_insert_with(|| {
-                let s = world.transmission_within(x, from, d, hit.t_m * (1.0 - 1e-9));
+                let s = world.transmission_within(x, from, d, hit.t_m * (1.0 - 1e-6));
                 (s.transmission, s.crossed)
             });
             if t_clear == DVec3::ZERO {

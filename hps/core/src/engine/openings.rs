@@ -15,6 +15,7 @@
 use super::ray::Ray;
 use super::world::World;
 use glam::DVec3;
+use rayon::prelude::*;
 
 /// Cells along each side of a face of the room's box.
 const CELLS_PER_SIDE: usize = 48;
@@ -156,12 +157,16 @@ impl RoomBox {
         // Tolerance for "the surface is at the cell": round-off of the box's own hits.
         let scale = (a1 - a0).max(b1 - b0).max(1e-3);
         let tolerance_m = 1e-6 * scale + 1e-6;
-        let mut open = vec![false; n * n];
-        for (i, cell) in open.iter_mut().enumerate() {
-            let (ia, ib) = (i % n, i / n);
-            let c = point_at(a0 + (ia as f64 + 0.5) * da, b0 + (ib as f64 + 0.5) * db);
-            *cell = cell_is_open(world, points, c, tolerance_m);
-        }
+        // The cells are independent: tested in parallel (the search runs before every
+        // illuminance computation, the daemon's cycle and the bench's runs included).
+        let open: Vec<bool> = (0..n * n)
+            .into_par_iter()
+            .map(|i| {
+                let (ia, ib) = (i % n, i / n);
+                let c = point_at(a0 + (ia as f64 + 0.5) * da, b0 + (ib as f64 + 0.5) * db);
+                cell_is_open(world, points, c, tolerance_m)
+            })
+            .collect();
         rectangles(&open, n)
             .into_iter()
             .map(|(ia0, ia1, ib0, ib1)| {

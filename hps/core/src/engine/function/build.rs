@@ -27,21 +27,47 @@ pub fn material_of(
     surface: &Surface,
     loader: &mut FunctionLoader,
 ) -> Result<Material, EngineError> {
+    material_under(scene, start, surface, loader, &[])
+}
+
+/// [`material_of`] under the patterns and textures `above` it: those on the chain above a
+/// `mixfunc` of materials, which RADIANCE applies before the mixture chooses (`rayshade`
+/// runs down the chain, `raytexture` accumulating colour and perturbation), so both sides
+/// take them, after their own.
+fn material_under(
+    scene: &Scene,
+    start: ModifierRef,
+    surface: &Surface,
+    loader: &mut FunctionLoader,
+    above: &[Modulation],
+) -> Result<Material, EngineError> {
     let chain = chain(scene, start);
     let material = chain.iter().copied().find(|m| m.kind.is_material());
     let emitter =
         material.is_some_and(|m| matches!(m.kind, ModifierKind::Light(_) | ModifierKind::Glow(_)));
     let functions = chain.iter().any(|m| is_function(&m.kind, emitter));
-    if !functions {
+    if !functions && above.is_empty() {
         let (material, patterns) = resolve(scene, start)?;
         return Material::from_scene(scene, surface, material, patterns);
     }
     let Some(material) = material else {
         return Ok(Material::Invisible); // void: patterns on nothing
     };
-    let mut modulations = Vec::new();
+    let mut modulations = above.to_vec();
     for m in chain.iter().filter(|m| !m.kind.is_material()) {
         modulations.push(modulation(scene, m, loader)?);
+    }
+    if let ModifierKind::Mixdata(_)
+    | ModifierKind::Mixpict(_)
+    | ModifierKind::Mixfunc(_)
+    | ModifierKind::Mixtext(_) = material.kind
+    {
+        // The patterns above go down to the sides.
+        let (coefficient, sides) = mix_parts(material, loader)?.expect("a mixture has two sides");
+        return Ok(Material::Varying(Arc::new(VaryingMaterial {
+            modulations: Vec::new(),
+            base: mixture(scene, coefficient, sides, surface, loader, &modulations)?,
+        })));
     }
     let base = base(scene, material, surface, loader)?;
     let refuse = |why: &str| {
@@ -60,9 +86,9 @@ pub fn material_of(
         )
         | VaryingBase::Brtd(_)
         | VaryingBase::Function(_)
-        | VaryingBase::Anisotropic(_) => {}
+        | VaryingBase::Anisotropic(_)
+        | VaryingBase::Mix { .. } => {}
         _ if modulations.is_empty() => {}
-        VaryingBase::Mix { .. } => return refuse("patterns above a mixfunc are not traced yet"),
         VaryingBase::Plain(_) => return refuse(
             "patterns are traced on plastic, metal, trans, glass, mirror, light, glow and BRTDfunc only",
         ),
@@ -244,7 +270,7 @@ fn base(
         | ModifierKind::Mixfunc(_)
         | ModifierKind::Mixtext(_) => {
             let (coefficient, sides) = mix_parts(m, loader)?.expect("a mixture has two sides");
-            mixture(scene, coefficient, sides, surface, loader)?
+            mixture(scene, coefficient, sides, surface, loader, &[])?
         }
         // Its patterns are the chain's modulations.
         _ => VaryingBase::Plain(Material::from_modifier(surface, Some(m), Vec::new())?),
@@ -337,18 +363,20 @@ fn anisotropic(
     })
 }
 
-/// A `mixfunc`, `mixdata`, `mixpict` or `mixtext` of the `sides` (foreground, background).
+/// A `mixfunc`, `mixdata`, `mixpict` or `mixtext` of the `sides` (foreground, background),
+/// each under the modulations `above` the mixture.
 fn mixture(
     scene: &Scene,
     coefficient: MixCoefficient,
     sides: [ModifierRef; 2],
     surface: &Surface,
     loader: &mut FunctionLoader,
+    above: &[Modulation],
 ) -> Result<VaryingBase, EngineError> {
     Ok(VaryingBase::Mix {
         coefficient,
-        foreground: Box::new(material_of(scene, sides[0], surface, loader)?),
-        background: Box::new(material_of(scene, sides[1], surface, loader)?),
+        foreground: Box::new(material_under(scene, sides[0], surface, loader, above)?),
+        background: Box::new(material_under(scene, sides[1], surface, loader, above)?),
     })
 }
 
