@@ -163,8 +163,8 @@ const CASES: &[Case] = &[
         files: &["environ.rad", "furniture.rad"],
         // Read whole since colorpict and pattern mixtures (furniture.rad:43, :91); the
         // engine then needs RADIANCE's library for `or` (rayinit.cal, not in the snapshot).
-        // With RAYPATH at the wheel's lib it stops at environ.rad:51 (a pattern on a
-        // mirror), and the two pictures the scene names are absent from the snapshot.
+        // With RAYPATH at the wheel's lib it stops at furniture.rad:43: the two pictures
+        // the scene names are absent from the snapshot.
         expect: Expect::EngineStops(&["environ.rad:41", "or: undefined function"]),
     },
     Case {
