@@ -42,7 +42,7 @@ use super::portal::Portals;
 use super::ray::Ray;
 use super::rng::Rng;
 use super::sampling::{cosine_direction, sample_cone};
-use super::sky::DistantKind;
+use super::sky::{DistantEmitter, DistantKind};
 use super::sky_sampling::SkyDistribution;
 use super::virtual_sources::mirrored_lights;
 use super::world::{Hit, World};
@@ -763,16 +763,9 @@ impl<'a> SkyNee<'a> {
             if source.kind != DistantKind::Light {
                 continue;
             }
-            let l = sample_cone(source, rng);
-            let c = shading.source_coefficient(l, source.solid_angle_sr);
-            if c == DVec3::ZERO || !brighter_than_zero(c * source.radiance(l)) {
+            let Some(light) = light_at(world, &shading, y, Some(hit.primitive), source, rng) else {
                 continue;
-            }
-            let t_sun =
-                world.source_transmission(shading.origin_towards(y, l), Some(hit.primitive), l);
-            if t_sun == DVec3::ZERO {
-                continue;
-            }
+            };
             // The glass between x and y, once.
             let (t_clear, crossed) = *clear.get_or_insert_with(|| {
                 let s = world.transmission_within(x, from, d, hit.t_m * (1.0 - 1e-6));
@@ -792,7 +785,7 @@ impl<'a> SkyNee<'a> {
             };
             let total = p_continuation + p_nee + p_patch_sr;
             if (total).partial_cmp(&0.0) == Some(std::cmp::Ordering::Greater) {
-                sum += f * t_clear * c * source.radiance(l) * t_sun / total;
+                sum += f * t_clear * light / total;
             }
         }
         sum
@@ -1175,17 +1168,9 @@ impl<'a> Tracer<'a, '_> {
             if source.kind != DistantKind::Light {
                 continue;
             }
-            let l = sample_cone(source, rng);
-            let c = shading.source_coefficient(l, source.solid_angle_sr);
-            if c == DVec3::ZERO || !brighter_than_zero(c * source.radiance(l)) {
+            let Some(light) = light_at(self.world, shading, p, path.from, source, rng) else {
                 continue;
-            }
-            let t = self
-                .world
-                .source_transmission(shading.origin_towards(p, l), path.from, l);
-            if t == DVec3::ZERO {
-                continue;
-            }
+            };
             let w = match straight {
                 Some((nee, last, dist, g, patch)) if last.pdf_sr * last.survival > 0.0 => {
                     let p_a = last.pdf_sr * last.survival * g;
@@ -1211,7 +1196,7 @@ impl<'a> Tracer<'a, '_> {
                 }
                 _ => 1.0,
             };
-            path.radiance += path.throughput * c * source.radiance(l) * t * w;
+            path.radiance += path.throughput * light * w;
         }
     }
 
@@ -1292,6 +1277,26 @@ impl<'a> Tracer<'a, '_> {
         }
         Next::Bounce(direction)
     }
+}
+
+/// One distant `source`'s next-event estimate at the shaded point `p` (on primitive `from`):
+/// the radiance its sampled direction brings, times the shading's coefficient and what the
+/// scene transmits towards it; None when nothing arrives.
+fn light_at(
+    world: &World,
+    shading: &Shading,
+    p: DVec3,
+    from: Option<u32>,
+    source: &DistantEmitter,
+    rng: &mut Rng,
+) -> Option<DVec3> {
+    let l = sample_cone(source, rng);
+    let c = shading.source_coefficient(l, source.solid_angle_sr);
+    if c == DVec3::ZERO || !brighter_than_zero(c * source.radiance(l)) {
+        return None;
+    }
+    let t = world.source_transmission(shading.origin_towards(p, l), from, l);
+    (t != DVec3::ZERO).then(|| c * source.radiance(l) * t)
 }
 
 /// RADIANCE's test before a source's shadow ray (direct.c): a contribution whose brightness
