@@ -418,24 +418,8 @@ mod tests {
             };
             illuminance(&world, &sensors, &settings, &|_, _| {}).unwrap()
         };
-        let with = run(true, true);
-        let plain = run(false, false);
-        let (mut se_with, mut se_plain) = (0.0, 0.0);
-        for (a, b) in with.iter().zip(&plain) {
-            let z = (a.illuminance_lux - b.illuminance_lux)
-                / (a.stderr_lux.powi(2) + b.stderr_lux.powi(2)).sqrt();
-            assert!(
-                z.abs() < 4.0,
-                "{}: {:.1} ± {:.1} lux with the opening, {:.1} ± {:.1} without",
-                a.name,
-                a.illuminance_lux,
-                a.stderr_lux,
-                b.illuminance_lux,
-                b.stderr_lux
-            );
-            se_with += a.stderr_lux / a.illuminance_lux;
-            se_plain += b.stderr_lux / b.illuminance_lux;
-        }
+        let (se_with, se_plain) =
+            agree_within_4_sigma(&run(true, true), &run(false, false), "the opening");
         assert!(se_with < 0.5 * se_plain, "{se_with} against {se_plain}");
     }
 
@@ -483,24 +467,11 @@ mod tests {
                     };
                     illuminance(&world, &sensors, &settings, &|_, _| {}).unwrap()
                 };
-                let (with, without) = (run(true), run(false));
-                let (mut se_with, mut se_without) = (0.0, 0.0);
-                for (a, b) in with.iter().zip(&without) {
-                    let z = (a.illuminance_lux - b.illuminance_lux)
-                        / (a.stderr_lux.powi(2) + b.stderr_lux.powi(2)).sqrt();
-                    assert!(
-                        z.abs() < 4.0,
-                        "glazed {glazed}, reuse {reuse}, {}: {:.1} ± {:.1} lux with the \
-                         strategy, {:.1} ± {:.1} without",
-                        a.name,
-                        a.illuminance_lux,
-                        a.stderr_lux,
-                        b.illuminance_lux,
-                        b.stderr_lux
-                    );
-                    se_with += a.stderr_lux / a.illuminance_lux;
-                    se_without += b.stderr_lux / b.illuminance_lux;
-                }
+                let (se_with, se_without) = agree_within_4_sigma(
+                    &run(true),
+                    &run(false),
+                    &format!("the strategy (glazed {glazed}, reuse {reuse})"),
+                );
                 eprintln!("glazed {glazed}, reuse {reuse}: {se_with:.4} against {se_without:.4}");
                 assert!(
                     se_with < 0.8 * se_without,
@@ -508,6 +479,32 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// Asserts that every sensor of `with` reads what it reads in `without` within 4
+    /// combined standard errors, and returns the two runs' summed relative standard errors.
+    fn agree_within_4_sigma(
+        with: &[crate::engine::illuminance::SensorIlluminance],
+        without: &[crate::engine::illuminance::SensorIlluminance],
+        what: &str,
+    ) -> (f64, f64) {
+        let (mut se_with, mut se_without) = (0.0, 0.0);
+        for (a, b) in with.iter().zip(without) {
+            let z = (a.illuminance_lux - b.illuminance_lux)
+                / (a.stderr_lux.powi(2) + b.stderr_lux.powi(2)).sqrt();
+            assert!(
+                z.abs() < 4.0,
+                "{}: {:.1} ± {:.1} lux with {what}, {:.1} ± {:.1} without",
+                a.name,
+                a.illuminance_lux,
+                a.stderr_lux,
+                b.illuminance_lux,
+                b.stderr_lux
+            );
+            se_with += a.stderr_lux / a.illuminance_lux;
+            se_without += b.stderr_lux / b.illuminance_lux;
+        }
+        (se_with, se_without)
     }
 
     #[test]

@@ -409,14 +409,19 @@ impl World {
                 .is_some();
             !blocked
         };
+        self.visit_crossed(ray, t_max_m, &mut visit);
+        blocked
+    }
+
+    /// Every primitive whose box `ray` crosses nearer than `t_max_m`, in no order, handed to
+    /// `visit` until it returns false ([`Bvh::visit_crossed`] with this world's box test).
+    fn visit_crossed(&self, ray: &Ray, t_max_m: f64, visit: impl FnMut(u32) -> bool) {
         if self.software_box_test {
-            self.bvh
-                .visit_crossed(&SlabTest, ray, 0.0, t_max_m, &mut visit);
+            self.bvh.visit_crossed(&SlabTest, ray, 0.0, t_max_m, visit);
         } else {
             self.bvh
-                .visit_crossed(self.box_test.as_ref(), ray, 0.0, t_max_m, &mut visit);
+                .visit_crossed(self.box_test.as_ref(), ray, 0.0, t_max_m, visit);
         }
-        blocked
     }
 
     /// [`World::intersect`] nearer than `t_max_m`: a visibility test that need not look past
@@ -610,13 +615,7 @@ impl World {
             }
             t != DVec3::ZERO
         };
-        if self.software_box_test {
-            self.bvh
-                .visit_crossed(&SlabTest, &ray, 0.0, t_max_m, &mut visit);
-        } else {
-            self.bvh
-                .visit_crossed(self.box_test.as_ref(), &ray, 0.0, t_max_m, &mut visit);
-        }
+        self.visit_crossed(&ray, t_max_m, &mut visit);
         if curved_crossing {
             self.transmission_stepwise(origin, from, dir, t_max_m)
         } else {
