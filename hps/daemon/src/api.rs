@@ -24,6 +24,9 @@ pub struct ApiState {
     pub last_error: Option<ErrorReport>,
     pub cycles_ok: u64,
     pub cycles_failed: u64,
+    /// Successful cycles per place their HDR map was made (`fabric`: the fabric's map;
+    /// `hps`: raw frames merged on the HPS).
+    pub cycles_by_hdr: std::collections::BTreeMap<String, u64>,
     /// Failures per kind (`sensor_absent`, `output`, ...).
     pub failures_by_kind: std::collections::BTreeMap<String, u64>,
     /// Successful cycles whose record carried each plausibility flag.
@@ -165,6 +168,16 @@ fn metrics(s: &ApiState) -> String {
             ("{outcome=\"ok\"}".into(), s.cycles_ok as f64),
             ("{outcome=\"failed\"}".into(), s.cycles_failed as f64),
         ],
+    );
+    put(
+        "skyluxd_captures_total",
+        "counter",
+        "Successful cycles by where their HDR map was made (fabric: the fabric's map; hps: \
+         raw frames merged on the HPS, kept in campaign format).",
+        s.cycles_by_hdr
+            .iter()
+            .map(|(k, v)| (format!("{{hdr=\"{k}\"}}"), *v as f64))
+            .collect(),
     );
     put(
         "skyluxd_failures_total",

@@ -185,6 +185,10 @@ pub struct CycleRecord {
     /// Successful cycles since the daemon started, from 1.
     pub sequence: u64,
     pub source: String,
+    /// Where the capture's HDR map was made: `fabric` (the fabric's map of grouped words) or
+    /// `hps` (raw frames merged here; the capture can be kept in campaign format).
+    #[serde(default = "hdr_hps")]
+    pub hdr: String,
     pub sun: SunRecord,
     /// Illuminance per sensor through the daylight coefficients, lux.
     pub illuminance: Vec<SensorLux>,
@@ -222,6 +226,10 @@ pub struct CycleRecord {
     pub plausibility: Vec<String>,
 }
 
+fn hdr_hps() -> String {
+    "hps".into()
+}
+
 impl CycleRecord {
     /// A small valid record: no sun, one sensor at 123.5 lx. For the tests and the API's fuzz
     /// harness, which need a record without running a cycle.
@@ -230,6 +238,7 @@ impl CycleRecord {
             time: time.into(),
             sequence: 1,
             source: source.into(),
+            hdr: hdr_hps(),
             sun: SunRecord {
                 spa_altitude_deg: 40.0,
                 spa_azimuth_deg: 180.0,
@@ -536,6 +545,11 @@ impl Pipeline {
             time: set.time.to_rfc3339(),
             sequence: 0,
             source: source.to_string(),
+            hdr: if set.fabric_map.is_some() {
+                "fabric".into()
+            } else {
+                hdr_hps()
+            },
             sun: sun_record(&spa, &terms),
             illuminance: sensor_lux(&self.room.sensors, &lux),
             monte_carlo,

@@ -15,12 +15,16 @@
 //! On SIGHUP the configuration file is read and validated again and applied from the next
 //! cycle; a bad file is logged with its file, line and field and the running configuration
 //! kept (see `reload_config` for what a reload can change).
+//!
+//! On SIGUSR1 the next capture is raw (in map mode, the default: `raw_captures`): merged on
+//! the HPS and kept in campaign format, for calibration and audits.
 
 use crate::api::{ApiServer, ApiState, ErrorReport, SharedState};
 use crate::config::{Config, FaultKind, Overrides, SimSourceKind};
 use crate::cycle::{CycleError, Pipeline};
 use crate::notify::Notifier;
 use crate::output::{FaultHook, Output, API_ADDRESS_FILE};
+use crate::raw_captures::RawSchedule;
 use crate::source::{CaptureSource, SimSource, SourceError};
 use chrono::{DateTime, FixedOffset, Timelike, Utc};
 use std::panic::AssertUnwindSafe;
@@ -142,10 +146,11 @@ pub fn run(options: &Options) -> i32 {
     }
 }
 
-/// The stop (SIGTERM, SIGINT) and reload (SIGHUP) flags.
+/// The stop (SIGTERM, SIGINT), reload (SIGHUP) and raw-capture request (SIGUSR1) flags.
 struct Signals {
     stop: Arc<AtomicBool>,
     reload: Arc<AtomicBool>,
+    raw_request: Arc<AtomicBool>,
 }
 
 /// Cycles counted since start.
@@ -175,6 +180,8 @@ struct Daemon<'a> {
     output: Option<Output>,
     api_address_written: bool,
     counts: CycleCounts,
+    /// When a capture is raw in map mode.
+    raw_schedule: RawSchedule,
 }
 
 /// Start-up: configuration, signals, hardware and source, the room, the API and the clock.
@@ -210,6 +217,7 @@ fn start(options: &Options) -> Result<Daemon<'_>, i32> {
         },
     };
     notifier.ready(&format!("API on {}", api.address));
+    let raw_schedule = RawSchedule::new(config.fabric.raw_every_s);
     Ok(Daemon {
         options,
         config,
@@ -225,6 +233,7 @@ fn start(options: &Options) -> Result<Daemon<'_>, i32> {
         output: None,
         api_address_written: false,
         counts: CycleCounts::default(),
+        raw_schedule,
     })
 }
 
@@ -263,11 +272,21 @@ fn install_signal_handlers() -> Result<Signals, i32> {
         }
     }
     let reload = Arc::new(AtomicBool::new(false));
-    if let Err(e) = signal_hook::flag::register(signal_hook::consts::SIGHUP, reload.clone()) {
-        tracing::error!(error = %e, "cannot install the SIGHUP handler");
-        return Err(EXIT_SOFTWARE);
+    let raw_request = Arc::new(AtomicBool::new(false));
+    for (signal, flag) in [
+        (signal_hook::consts::SIGHUP, &reload),
+        (signal_hook::consts::SIGUSR1, &raw_request),
+    ] {
+        if let Err(e) = signal_hook::flag::register(signal, flag.clone()) {
+            tracing::error!(error = %e, signal, "cannot install the signal handler");
+            return Err(EXIT_SOFTWARE);
+        }
     }
-    Ok(Signals { stop, reload })
+    Ok(Signals {
+        stop,
+        reload,
+        raw_request,
+    })
 }
 
 /// The hardware: map the two windows, then give up root, then bring the fabric up (before
@@ -429,6 +448,8 @@ impl Daemon<'_> {
         match outcome {
             Ok(source) => {
                 s.config_error = None;
+                self.raw_schedule
+                    .set_every_s(self.config.fabric.raw_every_s);
                 if let Some(source) = source {
                     self.source = source;
                 }
@@ -463,6 +484,17 @@ impl Daemon<'_> {
         };
         let started = Instant::now();
         let (attempts, sequence) = (self.counts.attempts, self.counts.ok + 1);
+        if self.signals.raw_request.swap(false, Ordering::Relaxed) {
+            tracing::info!("SIGUSR1: the next capture is raw");
+            self.raw_schedule.request();
+        }
+        let raw = self.raw_schedule.due(self.config.fabric.hdr, at);
+        if let Some(reason) = raw {
+            tracing::info!(
+                ?reason,
+                "raw capture (merged on the HPS, kept in campaign format)"
+            );
+        }
         let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
             run_cycle(
                 self.source.as_mut(),
@@ -470,6 +502,7 @@ impl Daemon<'_> {
                 out,
                 &self.config,
                 at,
+                raw.is_some(),
                 attempts,
                 sequence,
                 &self.signals.stop,
@@ -486,7 +519,12 @@ impl Daemon<'_> {
             )))
         });
         match result {
-            Ok(Some((record, output_ms))) => self.succeeded(record, output_ms, started),
+            Ok(Some((record, output_ms))) => {
+                if record.hdr == "hps" {
+                    self.raw_schedule.taken(at);
+                }
+                self.succeeded(record, output_ms, started)
+            }
             Ok(None) => {
                 tracing::info!(
                     "stop requested during the capture: capture discarded, nothing written"
@@ -589,6 +627,7 @@ impl Daemon<'_> {
         {
             let mut s = self.state.lock().unwrap_or_else(|p| p.into_inner());
             s.cycles_ok += 1;
+            *s.cycles_by_hdr.entry(record.hdr.clone()).or_default() += 1;
             s.consecutive_failures = 0;
             s.last_durations = Some(record.durations_ms.clone());
             s.last_output_ms = output_ms;
@@ -685,12 +724,17 @@ fn run_cycle(
     output: &mut Output,
     config: &Config,
     at: DateTime<FixedOffset>,
+    raw: bool,
     attempt: u64,
     sequence: u64,
     stop: &AtomicBool,
 ) -> Result<Option<(crate::cycle::CycleRecord, f64)>, CycleError> {
     let t = Instant::now();
-    let set = source.capture(at);
+    let set = if raw {
+        source.capture_raw(at)
+    } else {
+        source.capture(at)
+    };
     // Stopped during the capture: whatever it gave (frames, or an error from the abandoned
     // wait) is discarded, and nothing is written.
     if stop.load(Ordering::Relaxed) {
@@ -886,6 +930,7 @@ fn reload_config(
     *config = new;
     tracing::info!(
         next_sequence,
+        raw_every_s = config.fabric.raw_every_s,
         period_s = config.capture.period_s,
         source_rebuilt = rebuilt.is_some(),
         "SIGHUP: configuration reloaded, applied from the next cycle"

@@ -90,7 +90,7 @@ pub fn sim_fabric_model_source(
     device: &skylux_hps::camera::DeviceConfig,
     stop: Arc<AtomicBool>,
 ) -> Result<SimFabricModelSource, SourceError> {
-    let (settings, plan, memory_bytes) = crate::fabric_source::sim_fabric_plan(config)?;
+    let (settings, plan, memory_bytes) = crate::fabric_source::sim_fabric_plan(config, device)?;
     let world = crate::sim_stage::WorldStage::new(config, device)?;
     let sensor = skylux_sim::mt9p031::Mt9p031::new(world.pixel_source(), settings.pixclk_hz);
     let (model, regs, memory) = fabric_model(
@@ -132,6 +132,22 @@ impl CaptureSource for SimFabricModelSource {
     }
 
     fn capture(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
+        self.capture_with(at, false)
+    }
+
+    fn capture_raw(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
+        self.capture_with(at, true)
+    }
+}
+
+impl SimFabricModelSource {
+    /// One capture (raw if `raw`), with the configured fault of this attempt made in the
+    /// model first.
+    fn capture_with(
+        &mut self,
+        at: DateTime<FixedOffset>,
+        raw: bool,
+    ) -> Result<CaptureSet, SourceError> {
         self.attempts += 1;
         let fault = SimSource::fault_for(&self.faults, self.attempts)
             .and_then(|k| hardware_fault(k, self.lines));
@@ -140,7 +156,11 @@ impl CaptureSource for SimFabricModelSource {
             self.with_model(|m| m.inject(f));
         }
         self.world.stage(at)?;
-        let result = self.inner.capture(at);
+        let result = if raw {
+            self.inner.capture_raw(at)
+        } else {
+            self.inner.capture(at)
+        };
         // A fault lasts one attempt (a stopped PIXCLK until the next configuration's reset).
         self.with_model(|m| m.clear_faults());
         let mut set = result?;

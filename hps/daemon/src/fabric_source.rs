@@ -10,18 +10,18 @@
 //! timeout), then read every slot, check its descriptor and checksum, release it, and hand the
 //! frames over.
 //!
-//! **Raw mode.** The capture path runs in raw mode (samples unchanged, two per word), and the
-//! source returns [`RawFrame`]s: the daemon's HDR path, its kept captures (campaign format) and
-//! the offline pipeline all consume raw frames, so a capture from the fabric is processed
-//! exactly as a capture from `--sim` or from the campaign tools. The grouped words would halve
-//! the DMA traffic and the HPS read (5 MB instead of 10 MB per full frame, BENCHMARKS.md) but
-//! cannot be kept in campaign format; the HDR merge takes both (`hdr::ExposureFrame`).
+//! **Map mode**, the default (`[fabric] hdr = "fabric"`, issue 22 items 1 and 3). The capture
+//! path runs grouped with the device's black level, valid range and weights, the exposures run
+//! long to short, and the DMA writes the set as one map into one slot (`hdr.*`): the source
+//! returns that map ([`FabricMapCapture`]) instead of frames, and the cycle reads it into its
+//! luminance map with the merge's calibration. One map read instead of five frames.
 //!
-//! **Map mode** (`[fabric] hdr = "fabric"`, issue 22 item 1). The capture path runs grouped
-//! with the device's black level, valid range and weights, the exposures run long to short,
-//! and the DMA writes the set as one map into one slot (`hdr.*`): the source returns that map
-//! ([`FabricMapCapture`]) instead of frames, and the cycle reads it into its luminance map
-//! with the merge's calibration. One map read instead of five frames; nothing raw to keep.
+//! **Raw captures** ([`CaptureSource::capture_raw`]; every capture with `hdr = "hps"`): the
+//! capture path runs raw (samples unchanged, two per word) into one slot per exposure, and the
+//! source returns [`RawFrame`]s, which the daemon merges on the HPS and keeps in campaign
+//! format, as a capture from `--sim` or the campaign tools. In map mode the daemon asks for one
+//! on its `raw_every_s` cadence or on SIGUSR1, for calibration and audits; both rings fit the
+//! DMA buffer, so the switch costs nothing but the capture.
 //!
 //! **Reads of the DMA buffer.** The FPGA-to-SDRAM port is not cache-coherent (hardware-facts.md
 //! §3.2): the buffer is mapped uncached (`/dev/mem` with `O_SYNC` on a `no-map` region,
@@ -328,7 +328,11 @@ pub struct FabricSource<B: RegisterBus, M: DmaMemory, W: FrameWait> {
     wait: W,
     settings: FabricSettings,
     plan: ExposurePlan,
+    /// The ring of the default capture: one grouped slot in map mode, else one raw slot per
+    /// exposure.
     ring: RingConfig,
+    /// The ring of a raw capture (the same as `ring` without map mode).
+    raw_ring: RingConfig,
     stop: Arc<AtomicBool>,
 }
 
@@ -380,9 +384,10 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
         let plan =
             plan_exposures(&settings, fabric.info().sys_clock_hz).map_err(SourceError::Other)?;
         let base = memory.phys_base().next_multiple_of(8);
-        let ring = ring_for(&settings, &plan, base);
-        let slots = ring.ring.slots;
-        let end = base - memory.phys_base() + u64::from(ring.window_size_bytes);
+        let ring = ring_for(settings.map.as_ref(), &settings, &plan, base);
+        let raw_ring = ring_for(None, &settings, &plan, base);
+        let end = base - memory.phys_base()
+            + u64::from(ring.window_size_bytes.max(raw_ring.window_size_bytes));
         if end > memory.len_bytes() {
             return Err(SourceError::Other(format!(
                 "DMA buffer: the ring needs {end} bytes from {:#x}, the buffer has {}: raise \
@@ -414,10 +419,12 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                     })
                 })?;
         }
-        for slot in 0..slots {
-            ring.ring
-                .release_slot(&mut memory, slot)
-                .map_err(|e| SourceError::Other(format!("DMA buffer: {e}")))?;
+        for r in [&ring, &raw_ring] {
+            for slot in 0..r.ring.slots {
+                r.ring
+                    .release_slot(&mut memory, slot)
+                    .map_err(|e| SourceError::Other(format!("DMA buffer: {e}")))?;
+            }
         }
         tracing::info!(
             info = ?fabric.info(),
@@ -435,6 +442,7 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
             settings,
             plan,
             ring,
+            raw_ring,
             stop,
         })
     }
@@ -453,31 +461,44 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
         self.stop.load(Ordering::Relaxed)
     }
 
-    /// Releases every slot: nothing of an abandoned capture can be read later.
+    /// Releases every slot of both rings: nothing of an abandoned capture can be read later.
     fn release_all(&mut self) {
-        for slot in 0..self.ring.ring.slots {
-            let _ = self.ring.ring.release_slot(&mut self.memory, slot);
+        for ring in [&self.ring, &self.raw_ring] {
+            for slot in 0..ring.ring.slots {
+                let _ = ring.ring.release_slot(&mut self.memory, slot);
+            }
         }
     }
 
-    fn take(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
-        self.configure()?;
-        if let Some(map) = &self.settings.map {
-            let hdr = map.hdr;
+    /// One capture: in map mode a map unless `raw`, else raw frames.
+    fn take(&mut self, at: DateTime<FixedOffset>, raw: bool) -> Result<CaptureSet, SourceError> {
+        let map = self.settings.map.clone().filter(|_| !raw);
+        let ring = match map {
+            Some(_) => self.ring,
+            None => self.raw_ring,
+        };
+        self.configure(&ring)?;
+        if let Some(map) = &map {
             let f = &mut self.fabric;
-            f.hdr_configure(&hdr, true)
+            f.hdr_configure(&map.hdr, true)
                 .and_then(|_| f.hdr_new_set())
+                .map_err(|e| other("hdr")(e.to_string()))?;
+        } else if self.settings.map.is_some() {
+            // A raw capture between maps: the capture path is raw, which the map needs not to
+            // be; disabled all the same, so no register state of map mode stays behind.
+            self.fabric
+                .hdr_configure(&HdrConfig::default(), false)
                 .map_err(|e| other("hdr")(e.to_string()))?;
         }
         self.run_openings()?;
         let faults = self.take_faults()?;
-        let (frames, frame_flags, fabric_map) = match self.settings.map.clone() {
+        let (frames, frame_flags, fabric_map) = match map {
             Some(map) => {
-                let (m, flags) = self.read_map(&faults, map.hdr)?;
+                let (m, flags) = self.read_map(&ring, &faults, map.hdr)?;
                 (vec![], vec![flags], Some(m))
             }
             None => {
-                let (frames, flags) = self.read_frames(&faults)?;
+                let (frames, flags) = self.read_frames(&ring, &faults)?;
                 (frames, flags, None)
             }
         };
@@ -492,8 +513,9 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
         })
     }
 
-    /// Sensor out of reset and configured for the first exposure, capture path and shield.
-    fn configure(&mut self) -> Result<(), SourceError> {
+    /// Sensor out of reset and configured for the first exposure, capture path (with `ring`)
+    /// and shield.
+    fn configure(&mut self, ring: &RingConfig) -> Result<(), SourceError> {
         let s = &self.settings;
         let f = &mut self.fabric;
         f.sensor_bus_setup(s.i2c)
@@ -513,7 +535,7 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
         };
         f.sensor_configure(&sensor)
             .map_err(|e| sensor_error(e, "sensor configuration"))?;
-        f.capture_configure(&self.ring)
+        f.capture_configure(ring)
             .map_err(|e| SourceError::Other(format!("capture path: {e}")))?;
         f.configure_shield(&s.shield)
             .map_err(|e| SourceError::Other(format!("shield: {e}")))?;
@@ -614,6 +636,7 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
     /// Every slot of the capture as a frame, with its flags.
     fn read_frames(
         &mut self,
+        ring: &RingConfig,
         faults: &CaptureFaults,
     ) -> Result<(Vec<RawFrame>, Vec<Vec<String>>), SourceError> {
         let expected = self.plan.slots.len();
@@ -630,8 +653,7 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
         let mut previous_frame_number: Option<u32> = None;
         for (k, index_in_opening) in order {
             let slot = k as u8;
-            let captured = self
-                .ring
+            let captured = ring
                 .ring
                 .read_slot(&mut self.memory, slot)
                 .map_err(|e| SourceError::Other(format!("slot {slot}: {e}")))?
@@ -664,11 +686,11 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
     /// size).
     fn read_map(
         &mut self,
+        ring: &RingConfig,
         faults: &CaptureFaults,
         hdr: HdrConfig,
     ) -> Result<(FabricMapCapture, Vec<String>), SourceError> {
-        let captured = self
-            .ring
+        let captured = ring
             .ring
             .read_slot(&mut self.memory, 0)
             .map_err(|e| SourceError::Other(format!("slot 0: {e}")))?
@@ -810,14 +832,19 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
     }
 }
 
-/// The ring: one raw slot per exposure, or in map mode one grouped slot for the map.
-fn ring_for(settings: &FabricSettings, plan: &ExposurePlan, base: u64) -> RingConfig {
-    let slots = match settings.map {
+/// The ring: one raw slot per exposure, or with `map` one grouped slot for the map.
+fn ring_for(
+    map: Option<&MapMode>,
+    settings: &FabricSettings,
+    plan: &ExposurePlan,
+    base: u64,
+) -> RingConfig {
+    let slots = match map {
         Some(_) => 1,
         None => settings.exposures_us.len() as u8,
     };
     let mut ring = RingConfig::fitted(plan.width_px, plan.height_px, base, slots);
-    match &settings.map {
+    match map {
         Some(map) => ring.grouping = map.grouping,
         None => {
             ring.grouping.raw = true;
@@ -852,12 +879,27 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> CaptureSource for FabricSource<
     }
 
     fn capture(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
+        self.capture_with(at, false)
+    }
+
+    fn capture_raw(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
+        self.capture_with(at, true)
+    }
+}
+
+impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
+    /// A capture, raw if `raw` (map mode otherwise makes a map).
+    fn capture_with(
+        &mut self,
+        at: DateTime<FixedOffset>,
+        raw: bool,
+    ) -> Result<CaptureSet, SourceError> {
         if self.stopped() {
             return Err(SourceError::Other(
                 "capture discarded: stop requested".into(),
             ));
         }
-        let result = self.take(at);
+        let result = self.take(at, raw);
         // Read or abandoned, no slot keeps a frame for the next capture.
         self.release_all();
         result
@@ -955,8 +997,10 @@ pub struct SimFabricSource {
 /// buffer just large enough for its ring (one raw slot per exposure).
 pub fn sim_fabric_plan(
     config: &crate::config::Config,
+    device: &skylux_hps::camera::DeviceConfig,
 ) -> Result<(FabricSettings, ExposurePlan, usize), SourceError> {
-    let settings = fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, true);
+    let settings =
+        fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, true).with_map(config, device);
     sim_plan_of(settings)
 }
 
@@ -966,8 +1010,8 @@ fn sim_plan_of(
 ) -> Result<(FabricSettings, ExposurePlan, usize), SourceError> {
     let plan =
         plan_exposures(&settings, skylux_regmap::SYS_CLOCK_HZ).map_err(SourceError::Other)?;
-    let ring = ring_for(&settings, &plan, 0);
-    let memory_bytes = ring.window_size_bytes as usize + 4096;
+    let bytes = |map| ring_for(map, &settings, &plan, 0).window_size_bytes as usize;
+    let memory_bytes = bytes(settings.map.as_ref()).max(bytes(None)) + 4096;
     Ok((settings, plan, memory_bytes))
 }
 
@@ -978,9 +1022,7 @@ pub fn sim_fabric_source(
     stop: Arc<AtomicBool>,
 ) -> Result<SimFabricSource, SourceError> {
     use skylux_sim::core_rig::{sim_core, CoreRigConfig};
-    let settings =
-        fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, true).with_map(config, device);
-    let (settings, _plan, memory_bytes) = sim_plan_of(settings)?;
+    let (settings, _plan, memory_bytes) = sim_fabric_plan(config, device)?;
     let world = crate::sim_stage::WorldStage::new(config, device)?;
     let sensor = skylux_sim::mt9p031::Mt9p031::new(world.pixel_source(), settings.pixclk_hz);
     // Back-pressure on the frame port as in tests/tests/core_system.rs.
@@ -1004,6 +1046,13 @@ impl CaptureSource for SimFabricSource {
     fn capture(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
         self.world.stage(at)?;
         let mut set = self.inner.capture(at)?;
+        self.world.attach_truth(&mut set, at)?;
+        Ok(set)
+    }
+
+    fn capture_raw(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
+        self.world.stage(at)?;
+        let mut set = self.inner.capture_raw(at)?;
         self.world.attach_truth(&mut set, at)?;
         Ok(set)
     }

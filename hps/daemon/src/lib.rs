@@ -7,7 +7,8 @@
 //! |---|---|
 //! | [`config`] | `skyluxd.toml`, validated (including which physical memory may be mapped) |
 //! | [`source`] | the capture source trait and the simulated source |
-//! | [`fabric_source`] | the fabric source (board and cycle-accurate simulation), raw frames |
+//! | [`fabric_source`] | the fabric source (board and cycle-accurate simulation): maps or raw frames |
+//! | [`raw_captures`] | when a capture is raw in map mode: the cadence and SIGUSR1 |
 //! | [`fabric_model_source`] | the fabric source over the behavioural fabric model, with hardware faults |
 //! | [`wait`] | waiting for frames: UIO interrupt or polling, with a timeout |
 //! | [`budget`] | `--bench-cycle`: the cycle budget by stage |
@@ -36,6 +37,7 @@ pub mod notify;
 pub mod output;
 pub mod plausibility;
 pub mod privilege;
+pub mod raw_captures;
 pub mod sim_stage;
 pub mod source;
 pub mod spawn;

@@ -118,6 +118,12 @@ pub trait CaptureSource {
     /// Takes one capture starting at `at` (the simulated clock in `--sim`, the wall clock on
     /// the board).
     fn capture(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError>;
+    /// Takes one capture of raw frames (kept in campaign format, merged on the HPS), whatever
+    /// the source's default: the fabric in map mode makes a map otherwise. Sources that only
+    /// make raw frames take their usual capture.
+    fn capture_raw(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
+        self.capture(at)
+    }
     /// A name for logs (`sim`, `fabric`).
     fn name(&self) -> &'static str;
 }

@@ -46,7 +46,8 @@ impl skylux_sim::mt9p031::PixelSource for Scene {
 type ModelSource = FabricSource<ModelRegisters, ModelMemory, PollWait>;
 
 /// `FabricSource` over the model with the core rig's access costs, the noon sky of the
-/// simulated world, and the configuration's seed (as `sim_fabric_source` builds the core).
+/// simulated world, and the configuration's seed (as `sim_fabric_source` builds the core);
+/// raw captures, whatever `[fabric] hdr` says.
 fn model_source(
     config: &Config,
 ) -> (
@@ -54,8 +55,25 @@ fn model_source(
     skylux_sim::fabric_model::SharedFabric,
     skylux_hps::camera::DeviceConfig,
 ) {
+    model_source_in(config, false, 1 << 20)
+}
+
+/// [`model_source`] in map mode if `map` (`[fabric] hdr` as configured), with a frame buffer
+/// of `memory_bytes`.
+fn model_source_in(
+    config: &Config,
+    map: bool,
+    memory_bytes: usize,
+) -> (
+    ModelSource,
+    skylux_sim::fabric_model::SharedFabric,
+    skylux_hps::camera::DeviceConfig,
+) {
     let (device, _) = skylux_hps::camera::DeviceConfig::read(&config.camera.device).unwrap();
-    let settings = fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, true);
+    let mut settings = fabric_settings(config, skylux_regmap::SYS_CLOCK_HZ, true);
+    if map {
+        settings = settings.with_map(config, &device);
+    }
     let at = chrono::DateTime::parse_from_rfc3339(NOON).unwrap();
     let site = skylux_hps::sun::Site {
         latitude_deg: config.site.latitude_deg,
@@ -70,7 +88,7 @@ fn model_source(
         small_sources: vec![],
     }));
     let sensor = Mt9p031::new(Box::new(Scene(scene)), settings.pixclk_hz);
-    let (shared, regs, memory) = fabric_model(sensor, FabricModelConfig::new(1 << 20));
+    let (shared, regs, memory) = fabric_model(sensor, FabricModelConfig::new(memory_bytes));
     let wait = PollWait {
         max_polls: 500_000,
         pause: Duration::ZERO,
@@ -278,6 +296,79 @@ proptest::proptest! {
     }
 }
 
+/// Map mode on the model (issue 22 items 1 and 3), at the full frame read with skip 8 (324 x
+/// 244 samples, 162 x 122 groups) and the example's five exposures in two shield openings:
+/// the map the source returns is the RTL golden models' selection over the frames the
+/// sensor sent, with groups from several exposures; a raw capture between two maps returns
+/// the sensor's samples, raw-mode descriptors and five frames; the map after it begins a new
+/// set (the golden selection of its own frames).
+#[test]
+fn model_map_is_the_golden_selection_and_raw_captures_come_between() {
+    let tmp = tempfile::tempdir().unwrap();
+    let path = config_with(
+        tmp.path(),
+        &[
+            ("source = \"sim\"", "source = \"fabric-model\""),
+            ("skip = 4 ", "skip = 8 "),
+            ("bin = 4 ", "bin = 1 "),
+        ],
+        "",
+    );
+    let config = Config::load(&path, &Overrides::default()).unwrap();
+    assert_eq!(
+        config.fabric.hdr,
+        skyluxd::config::HdrWhere::Fabric,
+        "the default"
+    );
+    let (mut source, shared, device) = model_source_in(&config, true, 4 << 20);
+    let at = chrono::DateTime::parse_from_rfc3339(NOON).unwrap();
+    let sent = |from: usize| shared.lock().unwrap().log.frames[from..].to_vec();
+    for (capture, raw) in [(0, false), (1, true), (2, false)] {
+        let began = Instant::now();
+        let set = if raw {
+            source.capture_raw(at).unwrap()
+        } else {
+            source.capture(at).unwrap()
+        };
+        eprintln!(
+            "capture {capture} (raw {raw}): {:.2} s",
+            began.elapsed().as_secs_f64()
+        );
+        let frames = sent(5 * capture);
+        assert_eq!(frames.len(), 5);
+        let e: Vec<f64> = set.config.exposure.iter().map(|e| e.exposure_us).collect();
+        assert!(e.windows(2).all(|p| p[0] > p[1]), "long to short: {e:?}");
+        if raw {
+            assert!(set.fabric_map.is_none());
+            assert!(
+                set.frame_flags.iter().all(Vec::is_empty),
+                "{:?}",
+                set.frame_flags
+            );
+            assert_eq!(set.frames, frames);
+            continue;
+        }
+        assert!(set.frames.is_empty(), "a map, not frames");
+        assert_eq!(set.frame_flags, vec![Vec::<String>::new()]);
+        let m = set.fabric_map.as_ref().expect("the fabric's map");
+        assert_eq!(
+            (m.map.width, m.map.height, m.raw_width, m.raw_height),
+            (162, 122, 324, 244)
+        );
+        assert_eq!(m.map.words, golden_map(&device, &m.hdr, &frames));
+        let mut per_exposure = [0usize; 8];
+        for &w in &m.map.words {
+            per_exposure[usize::from(skylux_regmap::words::hdr_map::exposure_index(w))] += 1;
+        }
+        eprintln!("groups per exposure: {per_exposure:?}");
+        assert!(
+            per_exposure.iter().filter(|&&n| n > 0).count() >= 2,
+            "{per_exposure:?}"
+        );
+    }
+    assert_eq!(shared.lock().unwrap().log.stuck_events, 0);
+}
+
 /// The model against the cycle-accurate core on tests/fabric_sim.rs's window: the same
 /// samples, and descriptors equal but for the timestamps (which depend on the I2C master's
 /// clock-level timing the model approximates; they agree within 1 %). In CI: 64-84 s here, the
@@ -336,41 +427,53 @@ fn model_and_cycle_accurate_core_give_the_same_frames_and_descriptors() {
     }
 }
 
-/// The example's ladder at its readout (full frame binned 4 x 4 at skip 4): the 186.9 ms frame
-/// ends the first opening and leaves `max(8, SW − H) + 1` rows of vertical blanking
+/// The example's ladder at its readout (full frame binned 4 x 4 at skip 4), in both orders:
+/// raw captures run it short to long, and the 186.9 ms frame ends the first opening; maps run
+/// it long to short, and the 0.5 s frame is the first opening alone. Either way the last frame
+/// of the first opening leaves `max(8, SW − H) + 1` rows of vertical blanking
 /// (hardware-facts.md §1.5), during which the sensor holds the next trigger. The plan waits it
-/// out with the shield closed before the second opening; started at once, the 0.5 s frame
-/// after it would meet the shield's 0.55 s limit (`the hardware closed the shield at its
-/// open-time limit`), as it did before the wait.
+/// out with the shield closed before the second opening; started at once, the second opening
+/// would meet the shield's 0.55 s limit (`the hardware closed the shield at its open-time
+/// limit`), as it did before the wait.
 #[test]
 fn the_plan_waits_out_the_blanking_between_openings() {
-    let tmp = tempfile::tempdir().unwrap();
-    let path = config_with(tmp.path(), &[], "");
-    let config = Config::load(&path, &Overrides::default()).unwrap();
-    let (settings, plan, _) = skyluxd::fabric_source::sim_fabric_plan(&config).unwrap();
-    assert_eq!(plan.openings, [0..4, 4..5]);
-    assert_eq!(plan.gains, [1.0, 1.0, 1.0, 1.0, 7.875]);
-    assert_eq!(plan.settle_before_us[0], 0.0);
-    let row_us = plan.row_pixclk as f64 / 96.0;
-    let sw = plan.slots[3].shutter_width_rows;
-    let blank_rows = (sw - plan.height_px + 1) as f64;
-    // The 0.5 s opening alone fits; with the blanking before it, it would not.
-    let limit_us = f64::from(skylux_regmap::seq::shield_limit::CYCLES.reset)
-        / f64::from(skylux_regmap::SYS_CLOCK_HZ)
-        * 1e6;
-    assert!(plan.open_time_us[1] < limit_us, "{plan:?}");
-    assert!(
-        plan.open_time_us[1] + blank_rows * row_us > limit_us,
-        "{plan:?}"
-    );
-    // Waited for, less the readout's own blanking (Vertical_Blank + 1 rows), which the
-    // opening's time already holds.
-    let own_rows = f64::from(settings.sensor.vertical_blank + 1);
-    let settle = plan.settle_before_us[1];
-    assert!(
-        (settle - (blank_rows - own_rows) * row_us).abs() < 1.0,
-        "{settle} µs for {blank_rows} - {own_rows} rows of {row_us} µs"
-    );
+    for (hdr, openings, gains) in [
+        ("hps", [0..4, 4..5], [1.0, 1.0, 1.0, 1.0, 7.875]),
+        ("fabric", [0..1, 1..5], [7.875, 1.0, 1.0, 1.0, 1.0]),
+    ] {
+        let tmp = tempfile::tempdir().unwrap();
+        let line = format!("hdr = \"{hdr}\" ");
+        let path = config_with(tmp.path(), &[("hdr = \"fabric\" ", &line)], "");
+        let config = Config::load(&path, &Overrides::default()).unwrap();
+        let device = skylux_hps::camera::DeviceConfig::read(&config.camera.device)
+            .unwrap()
+            .0;
+        let (settings, plan, _) =
+            skyluxd::fabric_source::sim_fabric_plan(&config, &device).unwrap();
+        assert_eq!(plan.openings, openings, "{hdr}");
+        assert_eq!(plan.gains, gains, "{hdr}");
+        assert_eq!(plan.settle_before_us[0], 0.0);
+        let row_us = plan.row_pixclk as f64 / 96.0;
+        let sw = plan.slots[openings[0].end - 1].shutter_width_rows;
+        let blank_rows = (sw - plan.height_px + 1) as f64;
+        // The second opening alone fits; with the blanking before it, it would not.
+        let limit_us = f64::from(skylux_regmap::seq::shield_limit::CYCLES.reset)
+            / f64::from(skylux_regmap::SYS_CLOCK_HZ)
+            * 1e6;
+        assert!(plan.open_time_us[1] < limit_us, "{hdr}: {plan:?}");
+        assert!(
+            plan.open_time_us[1] + blank_rows * row_us > limit_us,
+            "{hdr}: {plan:?}"
+        );
+        // Waited for, less the readout's own blanking (Vertical_Blank + 1 rows), which the
+        // opening's time already holds.
+        let own_rows = f64::from(settings.sensor.vertical_blank + 1);
+        let settle = plan.settle_before_us[1];
+        assert!(
+            (settle - (blank_rows - own_rows) * row_us).abs() < 1.0,
+            "{hdr}: {settle} µs for {blank_rows} - {own_rows} rows of {row_us} µs"
+        );
+    }
 }
 
 /// Outdoor horizontal illuminance through the fabric path against the world's (issue 24: 5 %).
@@ -448,7 +551,8 @@ fn daemon_day(sky: &str, cycles: u64, bin: u32, bare_sensor: bool) -> Vec<serde_
 
 /// Whole cycles through the real `FabricSource` on the model at the `[fabric]` window, full
 /// frame read binned 4 x 4 at skip 4 (648 x 486 samples), the example's five exposures (20 µs
-/// to 0.5 s, as the sensor makes them: whole rows). Under a clear and an overcast sky the
+/// to 0.5 s, as the sensor makes them: whole rows), in the example's map mode with its hourly
+/// raw capture: maps and raw captures alike. Under a clear and an overcast sky the
 /// outdoor value is the world's within 5 % in every cycle, the sun is extracted in every clear
 /// cycle, and the interior medians are within 5 % (issue 24, "with the fabric source";
 /// measured: outdoors −0.7 % to 0.0 % clear, −0.5 % overcast; inside −1.6 % to +0.1 % clear).
@@ -465,7 +569,12 @@ fn daemon_day(sky: &str, cycles: u64, bin: u32, bare_sensor: bool) -> Vec<serde_
 fn skyluxd_runs_daylight_cycles_on_the_fabric_model_at_full_frame() {
     for sky in ["clear", "overcast"] {
         let records = daemon_day(sky, 3, 4, false);
+        // The example's map mode with a raw capture an hour: the first cycle (at start) is a
+        // map, the next two (3 h apart) raw, each kept in campaign format; maps keep none.
+        let made: Vec<&str> = records.iter().map(|r| r["hdr"].as_str().unwrap()).collect();
+        assert_eq!(made, ["fabric", "hps", "hps"], "{sky}");
         for r in &records {
+            assert_eq!(r["capture"].is_null(), r["hdr"] == "fabric", "{r}");
             let measured = r["outdoor_horizontal_lux"].as_f64().unwrap();
             let truth = r["truth_outdoor_horizontal_lux"].as_f64().unwrap();
             assert!(
@@ -508,24 +617,37 @@ fn skyluxd_runs_daylight_cycles_on_the_fabric_model_at_full_frame() {
 }
 
 /// `skyluxd --sim` on the fabric model (full frame, skip 8: 324 x 244 samples) with the
-/// hardware fault `kind` made at capture attempt 2: the cycle fails, the log and
-/// `/v1/health` name the fault's kind and cause, the daemon survives, and the next attempt
-/// is a good cycle (two records, health `ok`).
+/// hardware fault `kind` made at capture attempt 2, every capture raw (`hdr = "hps"`): the
+/// cycle fails, the log and `/v1/health` name the fault's kind and cause, the daemon
+/// survives, and the next attempt is a good cycle (two records, health `ok`).
 fn fault_is_flagged_survived_and_followed_by_a_good_cycle(
     kind: &str,
     error_kind: &str,
     cause: &str,
 ) {
+    fault_in_mode(kind, error_kind, cause, "hps");
+}
+
+/// As [`fault_is_flagged_survived_and_followed_by_a_good_cycle`] with every capture a map
+/// made by the fabric (`hdr = "fabric"`, no raw cadence).
+fn fault_in_map_mode(kind: &str, error_kind: &str, cause: &str) {
+    fault_in_mode(kind, error_kind, cause, "fabric");
+}
+
+fn fault_in_mode(kind: &str, error_kind: &str, cause: &str, hdr: &str) {
     let tmp = tempfile::tempdir().unwrap();
     let out = tmp.path().join("out");
     let log = tmp.path().join("stderr.log");
     let extra = format!("[[sim.fault]]\nattempt = 2\nkind = \"{kind}\"\n");
+    let hdr_line = format!("hdr = \"{hdr}\" ");
     let config = config_with(
         tmp.path(),
         &[
             ("source = \"sim\"", "source = \"fabric-model\""),
             ("skip = 4 ", "skip = 8 "),
             ("bin = 4 ", "bin = 1 "),
+            ("hdr = \"fabric\" ", &hdr_line),
+            ("raw_every_s = 3600 ", "# raw_every_s = 3600 "),
         ],
         &extra,
     );
@@ -565,12 +687,16 @@ fn fault_is_flagged_survived_and_followed_by_a_good_cycle(
         (Some(2), Some(1)),
         "{h}"
     );
-    // The good cycle after the fault: its frames were clean (a record), one capture later.
-    let times: Vec<String> = complete_lines(&results)
+    // The good cycle after the fault: its frames were clean (a record), one capture later,
+    // its map made where the configuration says.
+    let records: Vec<serde_json::Value> = complete_lines(&results)
         .iter()
-        .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap()["time"].to_string())
+        .map(|l| serde_json::from_str(l).unwrap())
         .collect();
-    assert_eq!(times.len(), 2);
+    assert_eq!(records.len(), 2);
+    for r in &records {
+        assert_eq!(r["hdr"], hdr, "{r}");
+    }
 }
 
 #[test]
@@ -683,5 +809,38 @@ fn fault_dma_bus_timeout() {
         "dma_bus_timeout",
         "held waitrequest longer than dma.bus_timeout (1000000 system clocks); a port that \
          never accepts a burst is held in reset: fpgaportrst",
+    );
+}
+
+// Map mode (the default): the set's faults reach the HPS through the capture path's sticky
+// status and the DMA's, since the map's one descriptor is its last frame's. A word corrupted
+// on the port after the checksum is not found in map mode (the map has no payload checksum;
+// docs/hdr-fabric.md), nor can slots be swapped (one slot): those two stay raw-mode tests.
+
+#[test]
+fn fault_line_short_in_map_mode() {
+    fault_in_map_mode("line_short", "flagged_frame", "line_short: true");
+}
+
+#[test]
+fn fault_fifo_overflow_in_map_mode() {
+    fault_in_map_mode("fifo_overflow", "flagged_frame", "fifo_overflow: true");
+}
+
+#[test]
+fn fault_pixclk_stopped_in_map_mode() {
+    fault_in_map_mode(
+        "pixclk_stopped",
+        "source",
+        "the hardware closed the shield at its open-time limit after 1 frames",
+    );
+}
+
+#[test]
+fn fault_dma_bus_timeout_in_map_mode() {
+    fault_in_map_mode(
+        "dma_bus_timeout",
+        "dma_bus_timeout",
+        "held waitrequest longer than dma.bus_timeout (1000000 system clocks)",
     );
 }

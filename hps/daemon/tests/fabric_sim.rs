@@ -178,7 +178,7 @@ fn tiny_map_config(dir: &std::path::Path) -> std::path::PathBuf {
     let text = std::fs::read_to_string(&path).unwrap();
     assert!(
         text.contains("hdr = \"hps\" "),
-        "the example's [fabric] hdr line"
+        "tiny_fabric_config's [fabric] hdr line"
     );
     let text = text.replacen("hdr = \"hps\" ", "hdr = \"fabric\" ", 1);
     std::fs::write(&path, text).unwrap();
@@ -224,9 +224,6 @@ fn tiny_bare_camera_config(dir: &std::path::Path) -> std::path::PathBuf {
 #[test]
 #[ignore = "slow cycle-accurate simulation: run with --ignored"]
 fn the_fabric_map_is_the_golden_selection_of_the_sensor_frames() {
-    use skylux_rtl::bayer::golden::{expected_words, BayerConfig, Frame, Phase};
-    use skylux_rtl::hdr::golden::{select, SetFrame};
-    use skyluxd::fabric_source::MapMode;
     let tmp = tempfile::tempdir().unwrap();
     let config = Config::load(&tiny_map_config(tmp.path()), &Overrides::default()).unwrap();
     let (device, _) = skylux_hps::camera::DeviceConfig::read(&config.camera.device).unwrap();
@@ -247,39 +244,7 @@ fn the_fabric_map_is_the_golden_selection_of_the_sensor_frames() {
 
     let rig = source.rig.lock().unwrap();
     assert_eq!(rig.log.frames.len(), 2);
-    let g = MapMode::of_device(&device, skylux_hps::campaign::BayerPattern::GRBG).grouping;
-    let bayer = BayerConfig {
-        phase: Phase::from_register(g.phase),
-        black: g.black_level_dn as u16,
-        valid_min: g.valid_min_dn as u16,
-        valid_max: g.valid_max_dn as u16,
-        weight_r: g.weight_r_q2_14 as u16,
-        weight_g: g.weight_g_q2_14 as u16,
-        weight_b: g.weight_b_q2_14 as u16,
-        raw: false,
-    };
-    let grouped: Vec<Vec<u32>> = rig
-        .log
-        .frames
-        .iter()
-        .map(|f| {
-            let frame = Frame {
-                width: f.width,
-                height: f.height,
-                samples: f.samples_dn.clone(),
-            };
-            expected_words(&frame, &bayer)
-        })
-        .collect();
-    let frames: Vec<SetFrame> = grouped
-        .iter()
-        .enumerate()
-        .map(|(k, words)| SetFrame {
-            exposure_index: k as u8,
-            first_of_set: k == 0,
-            words,
-        })
-        .collect();
+    let golden = golden_map(&device, &m.hdr, &rig.log.frames);
     let summary: Vec<(u8, bool, bool, u32)> = m
         .map
         .words
@@ -295,7 +260,7 @@ fn the_fabric_map_is_the_golden_selection_of_the_sensor_frames() {
         })
         .collect();
     eprintln!("map words (exposure, under, over, luma_q11): {summary:?}");
-    assert_eq!(m.map.words, select(&m.hdr, &frames));
+    assert_eq!(m.map.words, golden);
     // The case exercises the selection: groups usable in the longest exposure, and groups
     // the set's last frame wrote.
     let from_longest = summary.iter().filter(|w| w.0 == 0).count();

@@ -5,15 +5,17 @@
 //! the words are formed (raw: two 12-bit samples per word, `skylux_regmap::words::raw`;
 //! grouped: the RTL's golden model `skylux_rtl::bayer::golden`), words that find the FIFOs
 //! full during a port stall are lost (`FIFO_OVERFLOW`), and the frame goes to the DMA with its
-//! checksum. Needed so the frames and the capture status the drivers read are the hardware's.
+//! checksum; with `hdr.ctrl.ENABLE` in grouped mode it opens as a map frame (`super::dma`).
+//! Needed so the frames and the capture status the drivers read are the hardware's.
 
 use super::{FabricModel, HardwareFault};
 use skylux_hps::campaign::RawFrame;
 use skylux_regmap::descriptor::flag;
-use skylux_regmap::{bayer, capture, dma, sys};
+use skylux_regmap::{bayer, capture, dma, hdr, sys};
 use skylux_rtl::bayer::golden::{expected_words, BayerConfig, Frame, Phase};
 use skylux_rtl::capture::fifo_entry::{DATA_FILL_LIMIT, END_MARKER_DELAY, FIFO_DEPTH};
 use skylux_rtl::dma::BEAT_FIFO_ADDRESS_BITS;
+use skylux_rtl::hdr::golden::HdrConfig;
 
 /// Words the two FIFOs hold before a stalled port makes the capture drop words: the
 /// clock-domain FIFO up to its data limit and the DMA's beat FIFO (two words a beat, less the
@@ -31,6 +33,8 @@ pub struct FrameRx {
     pub bayer: BayerConfig,
     /// The ingest takes the frame for the DMA (the engine was enabled at its start marker).
     pub dma_taken: bool,
+    /// Taken as a map frame (`hdr.ctrl.ENABLE`, grouped mode).
+    pub map: Option<super::dma::MapFrame>,
     pub tag_index: u32,
     pub tag_frame: u32,
     pub tag_time: u64,
@@ -82,6 +86,16 @@ impl FabricModel {
         let raw = capture::ctrl::RAW.get(ctrl) != 0;
         let bayer = self.bayer_config(raw);
         let dma_enabled = dma::ctrl::ENABLE.get(self.stored(dma::ctrl::REG.offset)) != 0;
+        // The ingest opens a map frame in grouped mode with `hdr.ctrl.ENABLE`, taking the
+        // set's next place (skylux_rtl::dma::ingest).
+        let map_enabled = hdr::ctrl::ENABLE.get(self.stored(hdr::ctrl::REG.offset)) != 0;
+        let map = (dma_enabled && map_enabled && !raw).then(|| {
+            let thresholds = HdrConfig {
+                min_q11: hdr::min::Q11.get(self.stored(hdr::min::REG.offset)),
+                max_q11: hdr::max::Q11.get(self.stored(hdr::max::REG.offset)),
+            };
+            self.dma.hdr.open(thresholds)
+        });
         let s = &self.seq;
         self.capture.current = Some(FrameRx {
             samples,
@@ -89,6 +103,7 @@ impl FabricModel {
             height: capture::window::HEIGHT.get(window),
             bayer,
             dma_taken: dma_enabled,
+            map,
             tag_index: s.tag_index,
             tag_frame: s.tag_frame,
             tag_time: s.tag_time,
@@ -223,6 +238,7 @@ impl FabricModel {
                 last_pixels: saturate12(last_pixels.into()),
                 lines: saturate12(lines.into()),
                 raw: rx.bayer.raw,
+                map: rx.map,
                 tag_index: rx.tag_index,
                 tag_frame: rx.tag_frame,
                 tag_time: rx.tag_time,
@@ -262,6 +278,7 @@ impl FabricModel {
                 last_pixels: 0,
                 lines: 0,
                 raw: rx.bayer.raw,
+                map: rx.map,
                 tag_index: rx.tag_index,
                 tag_frame: rx.tag_frame,
                 tag_time: rx.tag_time,

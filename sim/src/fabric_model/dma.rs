@@ -4,11 +4,18 @@
 //! `skylux_regmap::descriptor` with the checksum the ingest took before the port, then
 //! `FRAME_DONE`, `dma.frames_written` and the ring advances. Needed so the ring, the
 //! descriptors and the counters `FabricSource` and `PollWait` read are the hardware's.
+//!
+//! **Map frames** (`hdr.ctrl.ENABLE` in grouped mode, `skylux_rtl::hdr`, docs/hdr-fabric.md):
+//! each grouped word goes out as its map word, and only the groups not yet filled in the set
+//! are written (the byte enables), as the RTL's golden model
+//! [`skylux_rtl::hdr::golden::FilledMask`] decides; the descriptor marks the map and keeps the
+//! grouped words' checksum.
 
 use super::FabricModel;
 use skylux_regmap::descriptor::{self, flag, Descriptor};
 use skylux_regmap::{dma, sys};
 use skylux_rtl::dma::{DESCRIPTOR_BEATS, MAX_BURST_BEATS};
+use skylux_rtl::hdr::golden::{FilledMask, HdrConfig, SetFrame};
 
 /// A frame the ingest closed, on its way to memory.
 #[derive(Clone, Debug)]
@@ -19,6 +26,8 @@ pub struct FrameOut {
     pub last_pixels: u32,
     pub lines: u32,
     pub raw: bool,
+    /// A map frame: its place in the set and the thresholds, latched when it opened.
+    pub map: Option<MapFrame>,
     pub tag_index: u32,
     pub tag_frame: u32,
     pub tag_time: u64,
@@ -29,6 +38,44 @@ pub struct FrameOut {
     /// Injected: this frame and the next swap slots.
     pub swap: bool,
     pub bus_timeout: bool,
+}
+
+/// What a map frame carries from its opening (the ingest samples `hdr.*` there).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MapFrame {
+    /// The set's first frame: the mask's old bits do not count.
+    pub first_of_set: bool,
+    /// The frame's place in its set (0 to 7, saturating), the map words' exposure field.
+    pub exposure_index: u8,
+    pub thresholds: HdrConfig,
+}
+
+/// The HDR selection's state across frames (`hdr.*`): the filled mask (block RAM, kept
+/// across frames) and the set's frame count.
+#[derive(Clone, Debug, Default)]
+pub struct HdrState {
+    /// `hdr.ctrl.NEW_SET` was pulsed: the next map frame begins a set.
+    pub new_set_pending: bool,
+    /// The last map frame's place in its set.
+    pub ordinal: u8,
+    pub mask: FilledMask,
+}
+
+impl HdrState {
+    /// A map frame opens: its place in the set (0 after `NEW_SET`, then one up to 7).
+    pub fn open(&mut self, thresholds: HdrConfig) -> MapFrame {
+        let first_of_set = std::mem::take(&mut self.new_set_pending);
+        self.ordinal = if first_of_set {
+            0
+        } else {
+            (self.ordinal + 1).min(7)
+        };
+        MapFrame {
+            first_of_set,
+            exposure_index: self.ordinal,
+            thresholds,
+        }
+    }
 }
 
 /// A frame being written.
@@ -52,6 +99,8 @@ pub struct DmaEngine {
     restart_pending: bool,
     /// Injected slot swap: the slot the next frame goes to instead.
     swap_back: Option<u8>,
+    /// `hdr.*`: the filled mask and the set's count.
+    pub hdr: HdrState,
 }
 
 impl DmaEngine {
@@ -133,14 +182,25 @@ impl FabricModel {
             self.dma.swap_back = None;
             return;
         }
-        // Beats of two words: an odd count is padded with a zero word.
-        let mut payload = f.words.clone();
+        // Beats of two words: an odd count is padded with a zero word. A map frame's words
+        // are the map words, each with whether its group is written (its byte enables).
+        let mut payload: Vec<(u32, bool)> = match &f.map {
+            Some(m) => self.dma.hdr.mask.frame(
+                &m.thresholds,
+                &SetFrame {
+                    exposure_index: m.exposure_index,
+                    first_of_set: m.first_of_set,
+                    words: &f.words,
+                },
+            ),
+            None => f.words.iter().map(|&w| (w, true)).collect(),
+        };
         if payload.len() % 2 == 1 {
-            payload.push(0);
+            payload.push((0, true));
         }
         if let Some((i, xor)) = f.corrupt {
             if let Some(w) = payload.get_mut(i as usize) {
-                *w ^= xor;
+                w.0 ^= xor;
             }
         }
         let capacity_words = 2 * ((stride - u64::from(descriptor::PAYLOAD_OFFSET_BYTES)) / 8);
@@ -149,14 +209,23 @@ impl FabricModel {
             flags |= flag::TRUNCATED;
             payload.truncate(capacity_words as usize);
         }
-        let bytes: Vec<u8> = payload.iter().flat_map(|w| w.to_le_bytes()).collect();
-        self.memory_write(start + u64::from(descriptor::PAYLOAD_OFFSET_BYTES), &bytes);
+        let payload_at = start + u64::from(descriptor::PAYLOAD_OFFSET_BYTES);
+        if payload.iter().all(|&(_, write)| write) {
+            let bytes: Vec<u8> = payload.iter().flat_map(|w| w.0.to_le_bytes()).collect();
+            self.memory_write(payload_at, &bytes);
+        } else {
+            for (i, &(word, write)) in payload.iter().enumerate() {
+                if write {
+                    self.memory_write(payload_at + 4 * i as u64, &word.to_le_bytes());
+                }
+            }
+        }
         let d = Descriptor {
             frame_number: f.tag_frame,
             timestamp_cycles: f.tag_time,
             exposure_index: (f.tag_index & descriptor::EXPOSURE_INDEX_MASK) as u8,
             raw: f.raw,
-            hdr_map: false,
+            hdr_map: f.map.is_some(),
             flags,
             last_line_pixels: f.last_pixels as u16,
             lines: f.lines as u16,

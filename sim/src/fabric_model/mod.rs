@@ -20,8 +20,9 @@
 //! Blocks, one file each: [`i2c`] (the register-transaction master), [`sequencer`] (exposure
 //! sequencer and lens shield with its open-time interlock), [`sensor`] (the MT9P031's
 //! snapshot time line), [`capture`] (window checks, raw/grouped words, the clock-domain
-//! FIFO), [`dma`] (ring slots, payload, descriptor and checksum). Faults are injected at
-//! their source ([`HardwareFault`]): the drivers see only what the hardware would show.
+//! FIFO), [`dma`] (ring slots, payload, descriptor and checksum; the `hdr.*` map frames).
+//! Faults are injected at their source ([`HardwareFault`]): the drivers see only what the
+//! hardware would show.
 
 pub mod capture;
 pub mod dma;
@@ -266,7 +267,7 @@ impl FabricModel {
     }
 
     fn after_write(&mut self, offset: u32, value: u32, pulse: Option<(u32, u32)>) {
-        use skylux_regmap::{dma as d, i2c as i, seq as s};
+        use skylux_regmap::{dma as d, hdr as h, i2c as i, seq as s};
         if offset == i::sensor_pins::REG.offset {
             self.sensor_pins_written(i::sensor_pins::RESET_N.get(value) != 0);
         }
@@ -282,6 +283,8 @@ impl FabricModel {
             }
         } else if at == d::ctrl::REG.offset && d::ctrl::RESET.get(bits) != 0 {
             self.dma_restart();
+        } else if at == h::ctrl::REG.offset && h::ctrl::NEW_SET.get(bits) != 0 {
+            self.dma.hdr.new_set_pending = true;
         }
     }
 }

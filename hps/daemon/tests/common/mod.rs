@@ -265,7 +265,7 @@ pub fn interior_median_errors(records: &[serde_json::Value]) -> Vec<(String, f64
 /// axis read with skip 8, unbinned (16 x 12 samples), two exposures of 300 and 1000 µs at the
 /// highest analog gain (7.875) so that the sky near the horizon lands in the valid range, and
 /// `[sim] source = source` (`fabric`: the cycle-accurate core; `fabric-model`: the behavioural
-/// fabric).
+/// fabric), every capture raw (`hdr = "hps"`).
 pub fn tiny_fabric_config(dir: &Path, source: &str) -> PathBuf {
     config_with(
         dir,
@@ -283,6 +283,9 @@ pub fn tiny_fabric_config(dir: &Path, source: &str) -> PathBuf {
             ("skip = 4 ", "skip = 8 "),
             ("bin = 4 ", "bin = 1 "),
             ("frame_timeout_s = 2.0 ", "frame_timeout_s = 120.0 "),
+            // Raw frames, so the captures are kept and merged on the HPS (`tiny_map_config`
+            // in fabric_sim.rs makes maps).
+            ("hdr = \"fabric\" ", "hdr = \"hps\" "),
         ],
         "",
     )
@@ -317,4 +320,52 @@ pub fn sim_records(
         .iter()
         .map(|l| serde_json::from_str(l).unwrap())
         .collect()
+}
+
+/// The map the RTL's golden models make of `frames` (a set, long to short, as the sensor sent
+/// them) with the grouping map mode programs for `device`: the Bayer grouper's words
+/// (`skylux_rtl::bayer::golden`), then the HDR selection (`skylux_rtl::hdr::golden`).
+pub fn golden_map(
+    device: &skylux_hps::camera::DeviceConfig,
+    hdr: &skylux_regmap::hdr_values::HdrConfig,
+    frames: &[skylux_hps::campaign::RawFrame],
+) -> Vec<u32> {
+    use skylux_rtl::bayer::golden::{expected_words, BayerConfig, Frame, Phase};
+    use skylux_rtl::hdr::golden::{select, SetFrame};
+    let g = skyluxd::fabric_source::MapMode::of_device(
+        device,
+        skylux_hps::campaign::BayerPattern::GRBG,
+    )
+    .grouping;
+    let bayer = BayerConfig {
+        phase: Phase::from_register(g.phase),
+        black: g.black_level_dn as u16,
+        valid_min: g.valid_min_dn as u16,
+        valid_max: g.valid_max_dn as u16,
+        weight_r: g.weight_r_q2_14 as u16,
+        weight_g: g.weight_g_q2_14 as u16,
+        weight_b: g.weight_b_q2_14 as u16,
+        raw: false,
+    };
+    let grouped: Vec<Vec<u32>> = frames
+        .iter()
+        .map(|f| {
+            let frame = Frame {
+                width: f.width,
+                height: f.height,
+                samples: f.samples_dn.clone(),
+            };
+            expected_words(&frame, &bayer)
+        })
+        .collect();
+    let set: Vec<SetFrame> = grouped
+        .iter()
+        .enumerate()
+        .map(|(k, words)| SetFrame {
+            exposure_index: k as u8,
+            first_of_set: k == 0,
+            words,
+        })
+        .collect();
+    select(hdr, &set)
 }
