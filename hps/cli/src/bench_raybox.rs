@@ -49,6 +49,13 @@ pub struct RayboxBenchArgs {
     /// Skip the yosys synthesis (resources reported as null).
     #[arg(long)]
     no_synthesis: bool,
+    /// Paths per sensor of the illuminance runs whose traversals size the BVH unit's design
+    /// (`bvh_unit_design`; 0 leaves it out).
+    #[arg(long, default_value_t = 256)]
+    traversal_paths: u32,
+    /// Only the BVH unit's design (no simulation, synthesis or pairs).
+    #[arg(long)]
+    traversal_only: bool,
 }
 
 /// Cycles from START to DONE for a batch of `n` realistic items.
@@ -178,6 +185,14 @@ fn software_rate() -> f64 {
 }
 
 pub fn run(args: &RayboxBenchArgs) -> anyhow::Result<()> {
+    let design = match args.traversal_paths {
+        0 => serde_json::Value::Null,
+        n => crate::bench_raybox_traversal::run(n)?,
+    };
+    if args.traversal_only {
+        println!("{}", serde_json::to_string_pretty(&design)?);
+        return Ok(());
+    }
     let (tests, cycles) = simulate(args.items.max(1), args.stall.clamp(0.0, 0.99))?;
     let tests_per_cycle = tests as f64 / cycles as f64;
     let fit = if args.no_synthesis || !xcheck::require(&[Tool::Yosys]) {
@@ -220,6 +235,7 @@ pub fn run(args: &RayboxBenchArgs) -> anyhow::Result<()> {
         "late_entries": report.late_entries,
         "false_hits": report.false_hits,
         "fallbacks": report.fallbacks,
+        "bvh_unit_design": design,
     });
     if args.json {
         println!("{}", serde_json::to_string_pretty(&json)?);

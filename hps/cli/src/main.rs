@@ -6,6 +6,7 @@ mod bench_genbsdf;
 mod bench_illuminance;
 mod bench_loop;
 mod bench_raybox;
+mod bench_raybox_traversal;
 mod bench_render;
 mod calibrate;
 mod closure;

@@ -3,7 +3,7 @@
 //! Rendering*, 4th ed., §7.3), with every box test going through [`BoxTest`].
 
 use super::ray::{Ray, RayBoxQuery};
-use super::slab::{Aabb, BoxTest};
+use super::slab::{Aabb, BoxTest, TraversalKind};
 
 /// Most primitives in a leaf; a leaf is also made when splitting would cost more (SAH).
 const MAX_LEAF_PRIMITIVES: usize = 4;
@@ -22,16 +22,31 @@ struct Node {
     count: u32,
 }
 
+/// Counts of a tree's shape ([`Bvh::shape`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct BvhShape {
+    pub leaves: usize,
+    pub max_depth: usize,
+}
+
 /// A BVH over primitives given by their boxes.
 #[derive(Clone, Debug, Default)]
 pub struct Bvh {
     nodes: Vec<Node>,
     order: Vec<u32>,
+    /// Most primitives in a leaf.
+    max_leaf: usize,
 }
 
 impl Bvh {
     /// Builds the tree over `bounds[i]` for each primitive `i`.
     pub fn build(bounds: &[Aabb]) -> Self {
+        Self::build_with_leaf_size(bounds, MAX_LEAF_PRIMITIVES)
+    }
+
+    /// [`Bvh::build`] with at most `max_leaf` primitives a leaf (1: every leaf box is one
+    /// primitive's: the tree a ray unit would traverse to hand the HPS single candidates).
+    pub fn build_with_leaf_size(bounds: &[Aabb], max_leaf: usize) -> Self {
         let mut items: Vec<(u32, Aabb, glam::DVec3)> = bounds
             .iter()
             .enumerate()
@@ -40,6 +55,7 @@ impl Bvh {
         let mut bvh = Bvh {
             nodes: Vec::with_capacity(2 * bounds.len()),
             order: Vec::with_capacity(bounds.len()),
+            max_leaf: max_leaf.max(1),
         };
         if !items.is_empty() {
             bvh.build_node(&mut items);
@@ -54,6 +70,26 @@ impl Bvh {
 
     pub fn node_count(&self) -> usize {
         self.nodes.len()
+    }
+
+    /// Leaves, and the deepest leaf's depth (the root at depth 0): what a traversal in the
+    /// fabric must hold (its node memory and its per-ray stack).
+    pub fn shape(&self) -> BvhShape {
+        let mut shape = BvhShape::default();
+        let mut stack = vec![(0usize, 0usize)];
+        while let Some((n, depth)) = stack.pop() {
+            let Some(node) = self.nodes.get(n) else {
+                continue;
+            };
+            if node.count > 0 {
+                shape.leaves += 1;
+                shape.max_depth = shape.max_depth.max(depth);
+            } else {
+                stack.push((n + 1, depth + 1));
+                stack.push((node.offset as usize, depth + 1));
+            }
+        }
+        shape
     }
 
     fn build_node(&mut self, items: &mut [(u32, Aabb, glam::DVec3)]) -> usize {
@@ -84,7 +120,7 @@ impl Bvh {
         };
         if extent[axis].partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             // All centroids coincide: no split separates them.
-            if items.len() <= MAX_LEAF_PRIMITIVES {
+            if items.len() <= self.max_leaf {
                 return make_leaf(self, items);
             }
             let mid = items.len() / 2;
@@ -122,7 +158,7 @@ impl Bvh {
         }
         let area = bounds.surface_area_m2().max(f64::MIN_POSITIVE);
         let split_cost = TRAVERSAL_COST + best.0 / area;
-        if items.len() <= MAX_LEAF_PRIMITIVES && split_cost >= items.len() as f64 {
+        if items.len() <= self.max_leaf && split_cost >= items.len() as f64 {
             return make_leaf(self, items);
         }
         if best.0.is_infinite() {
@@ -169,6 +205,7 @@ impl Bvh {
         distance: impl Fn(&H) -> f64,
     ) -> Option<H> {
         let root = self.nodes.first()?;
+        boxes.traversal_begins(TraversalKind::Closest, ray, t_min_m, t_max_m);
         let mut query = RayBoxQuery::new(ray, t_min_m, t_max_m);
         let mut entry = [f64::INFINITY; 2];
         boxes.hits(&query, std::slice::from_ref(&root.bounds), &mut entry[..1]);
@@ -186,6 +223,7 @@ impl Bvh {
         loop {
             let node = self.nodes[current];
             if node.count > 0 {
+                boxes.leaf_reached(node.count as usize);
                 let start = node.offset as usize;
                 for &p in &self.order[start..start + node.count as usize] {
                     if let Some(h) = intersect(p, query.t_max_m) {
@@ -268,6 +306,7 @@ impl Bvh {
         let Some(root) = self.nodes.first() else {
             return;
         };
+        boxes.traversal_begins(TraversalKind::Crossed, ray, t_min_m, t_max_m);
         let query = RayBoxQuery::new(ray, t_min_m, t_max_m);
         let mut entry = [f64::INFINITY; 2];
         boxes.hits(&query, std::slice::from_ref(&root.bounds), &mut entry[..1]);
@@ -282,6 +321,7 @@ impl Bvh {
             let node = self.nodes[current];
             let mut next = None;
             if node.count > 0 {
+                boxes.leaf_reached(node.count as usize);
                 let start = node.offset as usize;
                 for &p in &self.order[start..start + node.count as usize] {
                     if !visit(p) {

@@ -42,6 +42,7 @@ pub mod shapes;
 pub mod sky;
 pub mod sky_sampling;
 pub mod slab;
+pub mod traversal_stats;
 pub mod virtual_sources;
 pub mod world;
 

@@ -4,7 +4,7 @@
 //! boxes sent to the fabric, entry distances read back) replaces [`SlabTest`] without touching
 //! the traversal.
 
-use super::ray::RayBoxQuery;
+use super::ray::{Ray, RayBoxQuery};
 use glam::DVec3;
 
 /// An axis-aligned box in metres. An empty box has `min > max`.
@@ -63,6 +63,25 @@ pub trait BoxTest: Sync {
     /// the query's interval), or `f64::INFINITY` if the ray misses it within
     /// `[t_min_m, t_max_m]`. `entry_m.len() == boxes.len()`.
     fn hits(&self, ray: &RayBoxQuery, boxes: &[Aabb], entry_m: &mut [f64]);
+
+    /// A traversal of `kind` begins for `ray` over `[t_min_m, t_max_m]`. Only a test that
+    /// counts the traversal's work (`engine::traversal_stats`, which sizes a ray unit that
+    /// traverses the tree itself) does anything here.
+    #[inline]
+    fn traversal_begins(&self, _kind: TraversalKind, _ray: &Ray, _t_min_m: f64, _t_max_m: f64) {}
+
+    /// The traversal reached a leaf holding `primitives` primitives, each of which it tests.
+    #[inline]
+    fn leaf_reached(&self, _primitives: usize) {}
+}
+
+/// The two traversals of the BVH.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum TraversalKind {
+    /// The closest hit: near child first, subtrees past the best hit pruned.
+    Closest,
+    /// Every primitive whose box the ray crosses (shadow rays), in no order.
+    Crossed,
 }
 
 /// The software slab test (Kay & Kajiya 1986; the robust form of Williams et al. 2005, "An

@@ -393,6 +393,31 @@ impl World {
     }
 
     /// Whether any surface (glass and invisible ones too) lies on `ray` nearer than
+    /// The tree over the primitives (its shape sizes a ray unit; `engine::traversal_stats`).
+    pub fn bvh(&self) -> &Bvh {
+        &self.bvh
+    }
+
+    /// Each primitive's box, as the tree is built over them.
+    pub fn primitive_bounds(&self) -> Vec<super::slab::Aabb> {
+        self.primitives.iter().map(|p| p.bounds()).collect()
+    }
+
+    /// The distance at which `ray` meets primitive `p` within `[t_min_m, t_max_m]`, if it does
+    /// (the exact test a ray unit's candidate is finished with).
+    pub fn primitive_distance_m(
+        &self,
+        p: u32,
+        ray: &Ray,
+        t_min_m: f64,
+        t_max_m: f64,
+    ) -> Option<f64> {
+        self.primitives
+            .get(p as usize)?
+            .intersect(ray, t_min_m, t_max_m)
+            .map(|h| h.t_m)
+    }
+
     /// `t_max_m`, not counting the flat surface `from`: whether a point that far along it is
     /// the ray's first hit. One unordered traversal that stops at the first surface found.
     pub fn blocked_within(&self, ray: &Ray, from: Option<u32>, t_max_m: f64) -> bool {
