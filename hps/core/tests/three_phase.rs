@@ -150,14 +150,54 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
     let Some(case) = case() else {
         return;
     };
+    check_view_and_daylight(&case, "window.rad", &case.window, 4, 262_144);
+}
+
+/// The Klems half and quarter bases (`h=kh`, `h=kq`; 77 and 41 patches a hemisphere): the
+/// same comparisons as for the full basis, on the same room, with V from two rfluxmtx runs at
+/// `-ad 65536` (the rows within 2 % or 4 of rfluxmtx's standard errors; the rows do not
+/// depend on the basis, the patch-wise distribution and D do).
+#[test]
+fn half_and_quarter_klems_bases_match_rfluxmtx() {
+    let Some(case) = case() else {
+        return;
+    };
+    for (code, name, patches) in [
+        ("kh", "LBNL/Klems Half", 77),
+        ("kq", "LBNL/Klems Quarter", 41),
+    ] {
+        let file = format!("window_{code}.rad");
+        std::fs::write(
+            case.path(&file),
+            WINDOW.replace("h=kf", &format!("h={code}")),
+        )
+        .unwrap();
+        let basis = skylux_hps::bsdf::AngleBasis::builtin(name).unwrap();
+        assert_eq!(basis.len(), patches);
+        let window = KlemsWindow::load(&case.path(&file), DVec3::Z, basis).unwrap();
+        println!("{name}:");
+        check_view_and_daylight(&case, &file, &window, 2, 65_536);
+    }
+}
+
+/// Our V and D for the window in `window_file` (a `#@rfluxmtx` receiver and sender) against
+/// rfluxmtx's: V from `v_runs` runs at `-ad v_ad` (ours at 262,144 paths), D at 8192 rays a
+/// patch (ours 65,536).
+fn check_view_and_daylight(
+    case: &Case,
+    window_file: &str,
+    window: &KlemsWindow,
+    v_runs: usize,
+    v_ad: u32,
+) {
     let oct = case.octree();
     let oct = oct.to_str().unwrap();
     // V: 6 sensors, 4 bounces; rfluxmtx's -ad rays at the first bounce, one ray on after.
-    // Four runs averaged (rcontrib seeds by the clock: each in its own second): one run's
-    // dimmest rows scatter by about 1.3 % from run to run.
-    const V_RUNS: usize = 4;
+    // Runs averaged (rcontrib seeds by the clock: each in its own second): one run's dimmest
+    // rows scatter by about 1.3 % from run to run at -ad 262144.
+    let v_ad_arg = v_ad.to_string();
     let start = std::time::Instant::now();
-    let runs: Vec<RadianceMatrix> = (0..V_RUNS)
+    let runs: Vec<RadianceMatrix> = (0..v_runs)
         .map(|k| {
             if k > 0 {
                 std::thread::sleep(std::time::Duration::from_millis(1100));
@@ -169,14 +209,14 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
                     "-ab",
                     "4",
                     "-ad",
-                    "262144",
+                    &v_ad_arg,
                     "-lw",
                     "3e-6",
                     "-faf",
                     "-y",
                     "6",
                     "-",
-                    "window.rad",
+                    window_file,
                     "-i",
                     oct,
                 ],
@@ -187,7 +227,7 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
         .collect();
     let mut v_ref = runs[0].clone();
     for (k, value) in v_ref.values.iter_mut().enumerate() {
-        *value = runs.iter().map(|r| r.values[k]).sum::<f64>() / V_RUNS as f64;
+        *value = runs.iter().map(|r| r.values[k]).sum::<f64>() / v_runs as f64;
     }
     let row_sums: Vec<Vec<f64>> = runs.iter().map(|r| r.row_sums(0)).collect();
     assert!(
@@ -205,7 +245,7 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
     let v = view_matrix(
         &case.world(&["room.rad"]),
         &case.sensors,
-        &case.window,
+        window,
         &settings,
         &|_, _| {},
     )
@@ -217,7 +257,7 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
     for (s, (a, b)) in ours.iter().zip(&theirs).enumerate() {
         let rel = a / b - 1.0;
         // rfluxmtx's standard error from its runs' spread.
-        let n = V_RUNS as f64;
+        let n = v_runs as f64;
         let spread = row_sums.iter().map(|r| (r[s] - b).powi(2)).sum::<f64>() / (n - 1.0);
         let se_rel = (spread / n).sqrt() / b;
         println!(
@@ -253,7 +293,7 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
             "1e-4",
             "-c",
             "8192",
-            "window.rad",
+            window_file,
             "skyglow.rad",
             "-i",
             oct,
@@ -274,7 +314,7 @@ fn view_and_daylight_matrices_match_rfluxmtx() {
     let start = std::time::Instant::now();
     let d = daylight_matrix(
         &case.world(&["room.rad", "outside.rad"]),
-        &case.window,
+        window,
         1,
         &settings,
         &|_, _| {},
