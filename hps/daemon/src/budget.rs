@@ -84,77 +84,18 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
     ];
     let a9_one_core_s: f64 = stages.iter().map(|(s, _)| s.seconds(1)).sum();
     let a9_processing_s: f64 = stages.iter().map(|(s, _)| s.seconds(a9::CORES)).sum();
-    // Map mode (`[fabric] hdr = "fabric"`, the default): the fabric's map replaces the five
-    // frames' read and the merge; modelled only (no x86 measurement of it here). The map is
-    // read through the mapping `[hardware]` names: uncached (`/dev/mem`, the example) or
-    // cached with explicit maintenance (`dma_device`, u-dma-buf).
-    let w = &processing.hdr_work;
-    let map_uncached = [
-        a9::hps_read_map(w.groups),
-        a9::hdr_fabric_map(w.groups, w.valid_groups),
-    ];
-    let map_cached = [
-        a9::hps_read_map_cached(w.groups),
-        a9::hdr_fabric_map(w.groups, w.valid_groups),
-    ];
-    let raw_s = |cores: u32| stages[0].0.seconds(cores) + stages[1].0.seconds(cores);
-    let sum = |m: &[Stage], cores: u32| m.iter().map(|s| s.seconds(cores)).sum::<f64>();
+    let capture_s = capture.capture_ms / 1e3;
+    let map = MapMode::model(&stages, &processing.hdr_work);
+    let a9_map_processing_s = map.processing_s(&map.uncached, a9::CORES);
+    let a9_map_one_core_s = map.processing_s(&map.uncached, 1);
+    let a9_map_cached_processing_s = map.processing_s(&map.cached, a9::CORES);
+    let a9_cycle_s = capture_s + a9_map_processing_s;
     let raw_processing_s = a9_processing_s;
     let raw_one_core_s = a9_one_core_s;
-    let map_processing = |m: &[Stage], cores: u32| {
-        let all = if cores == 1 {
-            raw_one_core_s
-        } else {
-            raw_processing_s
-        };
-        all - raw_s(cores) + sum(m, cores)
-    };
-    let a9_map_processing_s = map_processing(&map_uncached, a9::CORES);
-    let a9_map_one_core_s = map_processing(&map_uncached, 1);
-    let a9_map_cached_processing_s = map_processing(&map_cached, a9::CORES);
-    let capture_s = capture.capture_ms / 1e3;
-    let a9_cycle_s = capture_s + a9_map_processing_s;
-    let map_stage_json = |m: &[Stage]| {
-        m.iter()
-            .map(|s| {
-                serde_json::json!({
-                    "stage": s.name,
-                    "a9_memory_ms": s.memory_s() * 1e3,
-                    "a9_compute_one_core_ms": s.compute_s() * 1e3,
-                    "a9_one_core_ms": s.seconds(1) * 1e3,
-                    "passes": s.passes.iter().map(|p| serde_json::json!({
-                        "pass": p.name,
-                        "memory_ms": p.memory_s() * 1e3,
-                        "compute_one_core_ms": p.compute_s() * 1e3,
-                    })).collect::<Vec<_>>(),
-                })
-            })
-            .collect::<Vec<_>>()
-    };
-    let stage_json: Vec<serde_json::Value> = stages
-        .iter()
-        .map(|(stage, x86_ms)| {
-            serde_json::json!({
-                "stage": stage.name,
-                "x86_measured_ms": x86_ms,
-                "a9_memory_ms": stage.memory_s() * 1e3,
-                "a9_compute_one_core_ms": stage.compute_s() * 1e3,
-                "a9_one_core_ms": stage.seconds(1) * 1e3,
-                "a9_two_cores_ms": stage.seconds(a9::CORES) * 1e3,
-                "a9_no_overlap_ms": (stage.memory_s() + stage.compute_s()) * 1e3,
-                "x10_ms": x86_ms * OLD_X10,
-                "passes": stage.passes.iter().map(|p| serde_json::json!({
-                    "pass": p.name,
-                    "memory_ms": p.memory_s() * 1e3,
-                    "compute_one_core_ms": p.compute_s() * 1e3,
-                    "parallel": p.parallel,
-                })).collect::<Vec<_>>(),
-            })
-        })
-        .collect();
+    let stage_json = raw_stages_json(&stages);
     let map_mode_json = serde_json::json!({
-        "a9_stages": map_stage_json(&map_uncached),
-        "a9_stages_cached_read": map_stage_json(&map_cached),
+        "a9_stages": map_stages_json(&map.uncached),
+        "a9_stages_cached_read": map_stages_json(&map.cached),
         "replaces": ["hps_read", "hdr_merge"],
         "a9_processing_s": a9_map_processing_s,
         "a9_processing_one_core_s": a9_map_one_core_s,
@@ -262,6 +203,83 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
         );
     }
     Ok(())
+}
+
+/// Map mode (`[fabric] hdr = "fabric"`, the default): the fabric's map replaces the five raw
+/// frames' read and the merge; modelled only (no x86 measurement of it here). The map is read
+/// through the mapping `[hardware]` names: uncached (`/dev/mem`, the example) or cached with
+/// explicit maintenance (`dma_device`, u-dma-buf).
+struct MapMode {
+    /// The raw path's stages (read, merge, sun, coefficients), which the map's replace in part.
+    raw: Vec<Stage>,
+    uncached: [Stage; 2],
+    cached: [Stage; 2],
+}
+
+impl MapMode {
+    fn model(raw: &[(Stage, f64); 4], w: &HdrWork) -> Self {
+        MapMode {
+            raw: raw.iter().map(|(s, _)| s.clone()).collect(),
+            uncached: [
+                a9::hps_read_map(w.groups),
+                a9::hdr_fabric_map(w.groups, w.valid_groups),
+            ],
+            cached: [
+                a9::hps_read_map_cached(w.groups),
+                a9::hdr_fabric_map(w.groups, w.valid_groups),
+            ],
+        }
+    }
+
+    /// The processing with `map`'s stages instead of the raw read and the merge.
+    fn processing_s(&self, map: &[Stage], cores: u32) -> f64 {
+        let sum = |stages: &[Stage]| stages.iter().map(|s| s.seconds(cores)).sum::<f64>();
+        sum(&self.raw) - sum(&self.raw[..2]) + sum(map)
+    }
+}
+
+fn map_stages_json(stages: &[Stage]) -> Vec<serde_json::Value> {
+    stages
+        .iter()
+        .map(|s| {
+            serde_json::json!({
+                "stage": s.name,
+                "a9_memory_ms": s.memory_s() * 1e3,
+                "a9_compute_one_core_ms": s.compute_s() * 1e3,
+                "a9_one_core_ms": s.seconds(1) * 1e3,
+                "passes": s.passes.iter().map(|p| serde_json::json!({
+                    "pass": p.name,
+                    "memory_ms": p.memory_s() * 1e3,
+                    "compute_one_core_ms": p.compute_s() * 1e3,
+                })).collect::<Vec<_>>(),
+            })
+        })
+        .collect()
+}
+
+/// The raw path's stages: measured here, modelled on the A9, and the superseded x10.
+fn raw_stages_json(stages: &[(Stage, f64)]) -> Vec<serde_json::Value> {
+    stages
+        .iter()
+        .map(|(stage, x86_ms)| {
+            serde_json::json!({
+                "stage": stage.name,
+                "x86_measured_ms": x86_ms,
+                "a9_memory_ms": stage.memory_s() * 1e3,
+                "a9_compute_one_core_ms": stage.compute_s() * 1e3,
+                "a9_one_core_ms": stage.seconds(1) * 1e3,
+                "a9_two_cores_ms": stage.seconds(a9::CORES) * 1e3,
+                "a9_no_overlap_ms": (stage.memory_s() + stage.compute_s()) * 1e3,
+                "x10_ms": x86_ms * OLD_X10,
+                "passes": stage.passes.iter().map(|p| serde_json::json!({
+                    "pass": p.name,
+                    "memory_ms": p.memory_s() * 1e3,
+                    "compute_one_core_ms": p.compute_s() * 1e3,
+                    "parallel": p.parallel,
+                })).collect::<Vec<_>>(),
+            })
+        })
+        .collect()
 }
 
 fn sun_work_json(w: &SunWork) -> serde_json::Value {
