@@ -488,7 +488,7 @@ impl Daemon<'_> {
             tracing::info!("SIGUSR1: the next capture is raw");
             self.raw_schedule.request();
         }
-        let raw = self.raw_schedule.due(self.config.fabric.hdr, at);
+        let raw = self.raw_schedule.due(self.source.makes_maps(), at);
         if let Some(reason) = raw {
             tracing::info!(
                 ?reason,

@@ -138,6 +138,10 @@ impl CaptureSource for SimFabricModelSource {
     fn capture_raw(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
         self.capture_with(at, true)
     }
+
+    fn makes_maps(&self) -> bool {
+        self.inner.makes_maps()
+    }
 }
 
 impl SimFabricModelSource {

@@ -885,6 +885,10 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> CaptureSource for FabricSource<
     fn capture_raw(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
         self.capture_with(at, true)
     }
+
+    fn makes_maps(&self) -> bool {
+        self.settings.map.is_some()
+    }
 }
 
 impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
@@ -1055,5 +1059,9 @@ impl CaptureSource for SimFabricSource {
         let mut set = self.inner.capture_raw(at)?;
         self.world.attach_truth(&mut set, at)?;
         Ok(set)
+    }
+
+    fn makes_maps(&self) -> bool {
+        self.inner.makes_maps()
     }
 }

@@ -5,7 +5,6 @@
 //! is raw on a cadence (`[fabric] raw_every_s`, in capture time) or on request (SIGUSR1,
 //! which asks for the next one), and a request stays pending until a raw capture succeeds.
 
-use crate::config::HdrWhere;
 use chrono::{DateTime, FixedOffset};
 
 /// The raw-capture schedule of one daemon run.
@@ -46,12 +45,13 @@ impl RawSchedule {
         self.requested = true;
     }
 
-    /// Whether the capture at `at` is to be raw, and why (`None`: a map). With `hdr =
-    /// "hps"` every capture is raw anyway and nothing is scheduled. A clock that stepped back
+    /// Whether the capture at `at` is to be raw, and why (`None`: a map). When the source
+    /// makes no maps (`hdr = "hps"`, or the simulated camera) every capture is raw anyway and
+    /// nothing is scheduled. A clock that stepped back
     /// before the anchor restarts the cadence there, so a wrong clock cannot hold raw
     /// captures back for longer than one cadence after it is right again.
-    pub fn due(&mut self, hdr: HdrWhere, at: DateTime<FixedOffset>) -> Option<RawReason> {
-        if hdr == HdrWhere::Hps {
+    pub fn due(&mut self, makes_maps: bool, at: DateTime<FixedOffset>) -> Option<RawReason> {
+        if !makes_maps {
             return None;
         }
         let anchor = *self.anchor.get_or_insert(at);
@@ -87,7 +87,7 @@ mod tests {
         let mut s = RawSchedule::new(Some(3600.0));
         let due: Vec<bool> = (0..=130)
             .map(|m| {
-                let r = s.due(HdrWhere::Fabric, t(m));
+                let r = s.due(true, t(m));
                 if r.is_some() {
                     s.taken(t(m));
                 }
@@ -101,26 +101,26 @@ mod tests {
     #[test]
     fn a_request_waits_for_a_successful_raw_capture() {
         let mut s = RawSchedule::new(None);
-        assert_eq!(s.due(HdrWhere::Fabric, t(0)), None, "no cadence: maps only");
+        assert_eq!(s.due(true, t(0)), None, "no cadence: maps only");
         s.request();
-        assert_eq!(s.due(HdrWhere::Fabric, t(1)), Some(RawReason::Request));
+        assert_eq!(s.due(true, t(1)), Some(RawReason::Request));
         // The raw capture failed: still pending.
-        assert_eq!(s.due(HdrWhere::Fabric, t(2)), Some(RawReason::Request));
+        assert_eq!(s.due(true, t(2)), Some(RawReason::Request));
         s.taken(t(2));
-        assert_eq!(s.due(HdrWhere::Fabric, t(3)), None);
-        assert_eq!(s.due(HdrWhere::Fabric, t(10_000)), None);
+        assert_eq!(s.due(true, t(3)), None);
+        assert_eq!(s.due(true, t(10_000)), None);
     }
 
     #[test]
-    fn hps_mode_schedules_nothing_and_a_clock_step_back_restarts_the_cadence() {
+    fn no_maps_schedule_nothing_and_a_clock_step_back_restarts_the_cadence() {
         let mut s = RawSchedule::new(Some(600.0));
         s.request();
-        assert_eq!(s.due(HdrWhere::Hps, t(0)), None);
+        assert_eq!(s.due(false, t(0)), None);
         let mut s = RawSchedule::new(Some(600.0));
-        assert_eq!(s.due(HdrWhere::Fabric, t(120)), None);
+        assert_eq!(s.due(true, t(120)), None);
         // Two hours back: the cadence counts from there.
-        assert_eq!(s.due(HdrWhere::Fabric, t(0)), None);
-        assert_eq!(s.due(HdrWhere::Fabric, t(9)), None);
-        assert_eq!(s.due(HdrWhere::Fabric, t(10)), Some(RawReason::Cadence));
+        assert_eq!(s.due(true, t(0)), None);
+        assert_eq!(s.due(true, t(9)), None);
+        assert_eq!(s.due(true, t(10)), Some(RawReason::Cadence));
     }
 }

@@ -124,6 +124,11 @@ pub trait CaptureSource {
     fn capture_raw(&mut self, at: DateTime<FixedOffset>) -> Result<CaptureSet, SourceError> {
         self.capture(at)
     }
+    /// Whether [`CaptureSource::capture`] makes maps (the fabric in map mode), so that raw
+    /// captures are worth scheduling.
+    fn makes_maps(&self) -> bool {
+        false
+    }
     /// A name for logs (`sim`, `fabric`).
     fn name(&self) -> &'static str;
 }
