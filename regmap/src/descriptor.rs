@@ -60,7 +60,8 @@ pub const EXPOSURE_INDEX_MASK: u32 = 0x7;
 /// [`word::INFO`]: the payload holds raw samples (`capture.ctrl.RAW`), not grouped words.
 pub const RAW_MODE: u32 = 1 << 8;
 /// [`word::INFO`]: the payload is an HDR map (`hdr.ctrl.ENABLE`, `crate::words::hdr_map`), the
-/// set's frames up to this one merged; the checksum is that of the frame's grouped words.
+/// set's frames up to this one merged; the checksum is the set's so far as
+/// `crate::hdr_values::HdrConfig::map_checksum` defines it (the usable words).
 pub const HDR_MAP: u32 = 1 << 9;
 /// Position of the last line's pixel count in [`word::GEOMETRY`].
 pub const PIXELS_LSB: u32 = 0;

@@ -43,6 +43,18 @@ impl HdrConfig {
             && l >= self.min_q11
             && l <= self.max_q11
     }
+
+    /// The checksum a map's descriptor carries: the wrapping sum of its usable words. The
+    /// fabric adds each word as it settles (written while its group was not filled, and
+    /// usable), which is the word the map keeps for good, so the HPS can recompute it from
+    /// the map alone; a word corrupted on its way to memory changes it, unless the word
+    /// stays unusable (then its group is not measured anyway).
+    pub fn map_checksum(&self, map_words: &[u32]) -> u32 {
+        map_words
+            .iter()
+            .filter(|&&w| self.usable_map_word(w))
+            .fold(0u32, |sum, &w| sum.wrapping_add(w))
+    }
 }
 
 #[cfg(test)]
@@ -66,5 +78,19 @@ mod tests {
         assert!(!c.usable(grouped::pack(799, false, false)));
         assert!(c.usable(grouped::pack(1607, false, false)));
         assert!(!c.usable(grouped::pack(1608, false, false)));
+    }
+
+    #[test]
+    fn the_map_checksum_sums_the_usable_words_wrapping() {
+        let c = HdrConfig::default();
+        let ok = |l| hdr_map::from_grouped(grouped::pack(l, false, false), 0);
+        let over = hdr_map::from_grouped(grouped::pack(5, false, true), 1);
+        assert_eq!(c.map_checksum(&[ok(8), over, ok(16)]), ok(8) + ok(16));
+        let big =
+            hdr_map::from_grouped(grouped::pack(grouped::LUMA_MAX_Q14 as u32, false, false), 7);
+        assert_eq!(
+            c.map_checksum(&[big, big, big]),
+            big.wrapping_add(big).wrapping_add(big)
+        );
     }
 }

@@ -173,7 +173,11 @@ fn run_set(WIDTH: u32, HEIGHT: u32, split: bool) {
     // The last frame's own tag: its index in its sequence.
     let last_tag = sequences.last().map_or(0, |r| r.len() - 1);
     assert_eq!((usize::from(d.exposure_index), d.flags), (last_tag, 0));
-    assert_eq!(got.checksum_ok(), None, "a map has no payload checksum");
+    assert_eq!(
+        got.checksum_ok(),
+        None,
+        "a map's checksum is not a payload sum"
+    );
 
     // The golden model over the frames the sensor sent.
     let rig = shared.lock().unwrap();
@@ -219,6 +223,9 @@ fn run_set(WIDTH: u32, HEIGHT: u32, split: bool) {
         differing, 0,
         "the map differs from the golden model in {differing} groups"
     );
+    // The set's checksum: the sum of the usable words, as the HPS recomputes it.
+    assert_eq!(d.checksum, config.map_checksum(&golden));
+    assert_eq!(got.map_checksum_ok(&config), Some(true));
 
     // The case exercises the selection: groups from every exposure, groups no exposure covers
     // both ways, and writes masked after a group was filled.

@@ -5138,6 +5138,7 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
     reg  [26:0] hdr$max_q11;
     wire  [31:0] hdr$map_word;
     wire  hdr$map_write;
+    wire  hdr$map_settles;
     reg  [1:0] state$d;
     wire  [1:0] state$q;
     reg  state$clock;
@@ -5207,6 +5208,9 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
     reg  [2:0] set_ordinal$d;
     wire  [2:0] set_ordinal$q;
     reg  set_ordinal$clock;
+    reg  [31:0] set_sum$d;
+    wire  [31:0] set_sum$q;
+    reg  set_sum$clock;
     reg  [7:0] high_water$d;
     wire  [7:0] high_water$q;
     reg  high_water$clock;
@@ -5248,7 +5252,8 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         .min_q11(hdr$min_q11),
         .max_q11(hdr$max_q11),
         .map_word(hdr$map_word),
-        .map_write(hdr$map_write)
+        .map_write(hdr$map_write),
+        .map_settles(hdr$map_settles)
     );
     skylux_core$capture$ingest$state state(
         .d(state$d),
@@ -5365,6 +5370,11 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         .q(set_ordinal$q),
         .clock(set_ordinal$clock)
     );
+    skylux_core$capture$ingest$set_sum set_sum(
+        .d(set_sum$d),
+        .q(set_sum$q),
+        .clock(set_sum$clock)
+    );
     skylux_core$capture$ingest$high_water high_water(
         .d(high_water$d),
         .q(high_water$q),
@@ -5416,6 +5426,7 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         hdr_frame$clock = clock;
         new_set_pending$clock = clock;
         set_ordinal$clock = clock;
+        set_sum$clock = clock;
         high_water$clock = clock;
         last_high_water$clock = clock;
         last_pixels$clock = clock;
@@ -5444,6 +5455,7 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         hdr_frame$d = hdr_frame$q;
         new_set_pending$d = new_set_pending$q;
         set_ordinal$d = set_ordinal$q;
+        set_sum$d = set_sum$q;
         high_water$d = high_water$q;
         last_high_water$d = last_high_water$q;
         last_pixels$d = last_pixels$q;
@@ -5567,6 +5579,9 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
                             if (hdr_enable & ~raw) begin
                                 set_ordinal$d = next_ordinal;
                                 new_set_pending$d = 1'b0;
+                                if (new_set_pending$q) begin
+                                    set_sum$d = 32'h0;
+                                end
                             end
                             state$d = IngestState$Frame;
                         end
@@ -5637,6 +5652,12 @@ module skylux_core$capture$ingest(clock,fifo_data,fifo_empty,fifo_fill,fifo_read
         desc_geometry = geometry$q;
         desc_words = words$q;
         desc_checksum = checksum$q;
+        if (hdr_frame$q) begin
+            desc_checksum = set_sum$q;
+        end
+        if (hdr_frame$q & hdr$map_settles) begin
+            set_sum$d = set_sum$q + hdr$map_word;
+        end
     end
     
 endmodule // skylux_core$capture$ingest
@@ -5889,7 +5910,7 @@ module skylux_core$capture$ingest$hb_sync(d,q,clock);
 endmodule // skylux_core$capture$ingest$hb_sync
 
 
-module skylux_core$capture$ingest$hdr(clock,restart,first_of_set,exposure_index,take,word,min_q11,max_q11,map_word,map_write);
+module skylux_core$capture$ingest$hdr(clock,restart,first_of_set,exposure_index,take,word,min_q11,max_q11,map_word,map_write,map_settles);
     
     // Module arguments
     input wire  clock;
@@ -5902,6 +5923,7 @@ module skylux_core$capture$ingest$hdr(clock,restart,first_of_set,exposure_index,
     input wire  [26:0] max_q11;
     output reg  [31:0] map_word;
     output reg  map_write;
+    output reg  map_settles;
     
     // Stub signals
     reg  [19:0] mask_low$read_address;
@@ -6012,6 +6034,7 @@ module skylux_core$capture$ingest$hdr(clock,restart,first_of_set,exposure_index,
         mask_high$write_enable = take & pos$q[32'h14];
         map_word = (((word[(32'h1e)+:(2)]) & 32'hffffffff) << 32'h1e) | (((index$q) & 32'hffffffff) << 32'h1b) | ((luma) & 32'hffffffff);
         map_write = take & ~filled;
+        map_settles = take & ~filled & usable;
     end
     
 endmodule // skylux_core$capture$ingest$hdr
@@ -6339,6 +6362,25 @@ module skylux_core$capture$ingest$set_ordinal(d,q,clock);
     end
           
 endmodule // skylux_core$capture$ingest$set_ordinal
+
+
+module skylux_core$capture$ingest$set_sum(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // skylux_core$capture$ingest$set_sum
 
 
 module skylux_core$capture$ingest$since_heartbeat(d,q,clock);

@@ -707,14 +707,19 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
         if !d.hdr_map {
             flags.push("NOT_MAP".into());
         }
+        // The set's checksum: the sum of the usable words, which the map keeps for good.
+        if captured.map_checksum_ok(&hdr) == Some(false) {
+            flags.push("CHECKSUM".into());
+        }
         if usize::from(d.lines) != h || usize::from(d.last_line_pixels) != w {
             flags.push(format!(
                 "SIZE {}x{} (expected {w}x{h})",
                 d.last_line_pixels, d.lines
             ));
         }
-        if faults.any() && flags.is_empty() {
-            flags.push(format!("CAPTURE_STATUS {faults:?}"));
+        // Sticky faults first: they name the cause a bad checksum would only show.
+        if faults.any() {
+            flags.insert(0, format!("CAPTURE_STATUS {faults:?}"));
         }
         let (gw, gh) = (w / 2, h / 2);
         if flags.is_empty() && captured.words.len() != gw * gh {

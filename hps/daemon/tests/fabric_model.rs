@@ -813,9 +813,14 @@ fn fault_dma_bus_timeout() {
 }
 
 // Map mode (the default): the set's faults reach the HPS through the capture path's sticky
-// status and the DMA's, since the map's one descriptor is its last frame's. A word corrupted
-// on the port after the checksum is not found in map mode (the map has no payload checksum;
-// docs/hdr-fabric.md), nor can slots be swapped (one slot): those two stay raw-mode tests.
+// status and the DMA's, since the map's one descriptor is its last frame's, and a word
+// corrupted on its way to memory through the set's checksum (the sum of the usable words);
+// slots cannot be swapped (one slot), so that stays a raw-mode test.
+
+#[test]
+fn fault_bad_checksum_in_map_mode() {
+    fault_in_map_mode("bad_checksum", "flagged_frame", "[\"CHECKSUM\"]");
+}
 
 #[test]
 fn fault_line_short_in_map_mode() {

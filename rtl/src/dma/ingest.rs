@@ -43,7 +43,8 @@ const _: () = assert!(descriptor::HDR_MAP == 1 << 9);
 /// End markers update the capture status in every state, so `capture.*` works with the DMA
 /// disabled. In HDR mode (`hdr_enable`, sampled when a frame opens, grouped mode only) each
 /// taken word goes out as its map word through [`HdrSelect`], with byte enables clear for
-/// groups already filled; the checksum stays that of the grouped words. A map frame after
+/// groups already filled; a map frame's descriptor checksum is its set's so far, the sum of
+/// the map words that settled (`HdrConfig::map_checksum`). A map frame after
 /// `hdr_new_set` begins a set and is its exposure 0; the others count up from their set's
 /// first, so a set may span sequences whose exposure tags restart.
 #[derive(LogicBlock, Default)]
@@ -132,6 +133,9 @@ pub struct FrameIngest {
     new_set_pending: DFF<Bit>,
     /// The current map frame's place in its set (the map words' exposure field).
     set_ordinal: DFF<Bits<3>>,
+    /// The set's checksum so far: the wrapping sum of the map words that settled
+    /// (`HdrConfig::map_checksum`), a map frame's descriptor checksum.
+    set_sum: DFF<Bits<32>>,
     high_water: DFF<Bits<{ entry::FILL_BITS }>>,
     last_high_water: DFF<Bits<{ entry::FILL_BITS }>>,
     last_pixels: DFF<Bits<12>>,
@@ -183,6 +187,7 @@ impl Logic for FrameIngest {
             hdr_frame,
             new_set_pending,
             set_ordinal,
+            set_sum,
             high_water,
             last_high_water,
             last_pixels,
@@ -340,6 +345,9 @@ impl Logic for FrameIngest {
                         if self.hdr_enable.val() & !self.raw.val() {
                             self.set_ordinal.d.next = self.next_ordinal.val();
                             self.new_set_pending.d.next = false;
+                            if self.new_set_pending.q.val() {
+                                self.set_sum.d.next = 0.into();
+                            }
                         }
                         self.state.d.next = IngestState::Frame;
                     }
@@ -409,5 +417,13 @@ impl Logic for FrameIngest {
         self.desc_geometry.next = self.geometry.q.val();
         self.desc_words.next = self.words.q.val();
         self.desc_checksum.next = self.checksum.q.val();
+        if self.hdr_frame.q.val() {
+            self.desc_checksum.next = self.set_sum.q.val();
+        }
+        // A word that settles is taken in a frame's cycle, never in the cycle that opens one
+        // (which clears the sum at a set's start).
+        if self.hdr_frame.q.val() & self.hdr.map_settles.val() {
+            self.set_sum.d.next = self.set_sum.q.val() + self.hdr.map_word.val();
+        }
     }
 }

@@ -42,6 +42,9 @@ pub struct HdrSelect {
     /// With `take`: write the word, its group is not filled yet. Low without `take` (so the
     /// mask's power-up contents, undefined in Verilog, never reach it between frames).
     pub map_write: Signal<Out, Bit>,
+    /// With `take`: the word written is usable, so the map keeps it for good (what the set's
+    /// checksum sums: `HdrConfig::map_checksum`).
+    pub map_settles: Signal<Out, Bit>,
 
     mask_low: RAM<Bit, MASK_LOW_BITS>,
     mask_high: RAM<Bit, MASK_HIGH_BITS>,
@@ -106,5 +109,6 @@ impl Logic for HdrSelect {
             | (bit_cast::<32, 3>(self.index.q.val()) << 27)
             | bit_cast::<32, 27>(self.luma.val());
         self.map_write.next = self.take.val() & !self.filled.val();
+        self.map_settles.next = self.take.val() & !self.filled.val() & self.usable.val();
     }
 }

@@ -8,8 +8,8 @@
 //! **Map frames** (`hdr.ctrl.ENABLE` in grouped mode, `skylux_rtl::hdr`, docs/hdr-fabric.md):
 //! each grouped word goes out as its map word, and only the groups not yet filled in the set
 //! are written (the byte enables), as the RTL's golden model
-//! [`skylux_rtl::hdr::golden::FilledMask`] decides; the descriptor marks the map and keeps the
-//! grouped words' checksum.
+//! [`skylux_rtl::hdr::golden::FilledMask`] decides; the descriptor marks the map and carries
+//! the set's checksum so far (the sum of the words that settled, written and usable).
 
 use super::FabricModel;
 use skylux_regmap::descriptor::{self, flag, Descriptor};
@@ -59,6 +59,8 @@ pub struct HdrState {
     /// The last map frame's place in its set.
     pub ordinal: u8,
     pub mask: FilledMask,
+    /// The set's checksum so far (`HdrConfig::map_checksum` of the words that settled).
+    pub set_sum: u32,
 }
 
 impl HdrState {
@@ -185,14 +187,26 @@ impl FabricModel {
         // Beats of two words: an odd count is padded with a zero word. A map frame's words
         // are the map words, each with whether its group is written (its byte enables).
         let mut payload: Vec<(u32, bool)> = match &f.map {
-            Some(m) => self.dma.hdr.mask.frame(
-                &m.thresholds,
-                &SetFrame {
-                    exposure_index: m.exposure_index,
-                    first_of_set: m.first_of_set,
-                    words: &f.words,
-                },
-            ),
+            Some(m) => {
+                let writes = self.dma.hdr.mask.frame(
+                    &m.thresholds,
+                    &SetFrame {
+                        exposure_index: m.exposure_index,
+                        first_of_set: m.first_of_set,
+                        words: &f.words,
+                    },
+                );
+                let hdr = &mut self.dma.hdr;
+                if m.first_of_set {
+                    hdr.set_sum = 0;
+                }
+                for &(word, write) in &writes {
+                    if write && m.thresholds.usable_map_word(word) {
+                        hdr.set_sum = hdr.set_sum.wrapping_add(word);
+                    }
+                }
+                writes
+            }
             None => f.words.iter().map(|&w| (w, true)).collect(),
         };
         if payload.len() % 2 == 1 {
@@ -230,7 +244,10 @@ impl FabricModel {
             last_line_pixels: f.last_pixels as u16,
             lines: f.lines as u16,
             payload_words: f.words.len() as u32,
-            checksum: descriptor::checksum(&f.words),
+            checksum: match f.map {
+                Some(_) => self.dma.hdr.set_sum,
+                None => descriptor::checksum(&f.words),
+            },
         };
         let bytes: Vec<u8> = d.encode().iter().flat_map(|w| w.to_le_bytes()).collect();
         self.memory_write(start, &bytes);

@@ -47,8 +47,8 @@ pub struct CapturedFrame {
 
 impl CapturedFrame {
     /// Whether the payload's sum equals the descriptor's checksum. `None` when the payload is
-    /// incomplete in memory (`TRUNCATED`), or an HDR map (the checksum is that of the frame's
-    /// grouped words, which the map only partly holds), so no sum can be compared.
+    /// incomplete in memory (`TRUNCATED`), or an HDR map (whose checksum sums its usable words
+    /// only: [`CapturedFrame::map_checksum_ok`]).
     pub fn checksum_ok(&self) -> Option<bool> {
         if self.descriptor.flags & flag::TRUNCATED != 0 || self.descriptor.hdr_map {
             return None;
@@ -56,6 +56,16 @@ impl CapturedFrame {
         // A9 cost (timing::a9::ring::CHECKSUM_PER_WORD): `ldr`, `subs`, `add`, `bne` a word,
         // memory-bound on the board (4n bytes streamed from the DDR3).
         Some(descriptor::checksum(&self.words) == self.descriptor.checksum)
+    }
+
+    /// For an HDR map, whether the descriptor's checksum is the sum of the map's usable words
+    /// under `hdr`, the thresholds the set ran with (`HdrConfig::map_checksum`). `None` when
+    /// the payload is incomplete in memory or not a map.
+    pub fn map_checksum_ok(&self, hdr: &skylux_regmap::hdr_values::HdrConfig) -> Option<bool> {
+        if self.descriptor.flags & flag::TRUNCATED != 0 || !self.descriptor.hdr_map {
+            return None;
+        }
+        Some(hdr.map_checksum(&self.words) == self.descriptor.checksum)
     }
 
     /// Whether the frame can be used as is: no flag, and the checksum matches.
