@@ -8,6 +8,7 @@ use super::merge::Merger;
 use super::{GroupGeometry, HdrError, LuminanceMap, MapFlag};
 use crate::camera::DeviceConfig;
 use crate::campaign::BayerPattern;
+use rayon::prelude::*;
 use skylux_regmap::hdr_values::HdrConfig;
 use skylux_regmap::words::hdr_map;
 
@@ -79,25 +80,30 @@ pub fn fabric_map(
         flags: vec![MapFlag::UnderRange; n],
         relative_sigma: vec![f32::NAN; n],
     };
-    for (i, (&word, &inv_v)) in map
-        .words
-        .iter()
-        .zip(&geometry.inverse_vignetting)
-        .enumerate()
-    {
-        let k = usize::from(hdr_map::exposure_index(word));
-        let single = (config.usable_map_word(word) && inv_v != 0.0)
-            .then(|| merger.single(k, hdr_map::luma(word), inv_v))
-            .flatten();
-        match single {
-            Some((luminance, sigma)) => {
-                out.luminance_cd_m2[i] = luminance;
-                out.relative_sigma[i] = sigma;
-                out.flags[i] = MapFlag::Valid;
+    // Rows in parallel (the daemon's two cores; `timing::a9::hdr_fabric_map`).
+    let width = map.width.max(1);
+    out.luminance_cd_m2
+        .par_chunks_mut(width)
+        .zip(out.relative_sigma.par_chunks_mut(width))
+        .zip(out.flags.par_chunks_mut(width))
+        .zip(map.words.par_chunks(width))
+        .zip(geometry.inverse_vignetting.par_chunks(width))
+        .for_each(|((((luminance, sigma), flags), words), inv_vs)| {
+            for (i, (&word, &inv_v)) in words.iter().zip(inv_vs).enumerate() {
+                let k = usize::from(hdr_map::exposure_index(word));
+                let single = (config.usable_map_word(word) && inv_v != 0.0)
+                    .then(|| merger.single(k, hdr_map::luma(word), inv_v))
+                    .flatten();
+                match single {
+                    Some((l, s)) => {
+                        luminance[i] = l;
+                        sigma[i] = s;
+                        flags[i] = MapFlag::Valid;
+                    }
+                    None if hdr_map::over(word) => flags[i] = MapFlag::OverRange,
+                    None => {}
+                }
             }
-            None if hdr_map::over(word) => out.flags[i] = MapFlag::OverRange,
-            None => {}
-        }
-    }
+        });
     Ok(out)
 }

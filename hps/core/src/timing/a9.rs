@@ -454,7 +454,8 @@ pub fn hdr_fabric_map(groups: f64, valid_groups: f64) -> Stage {
                 },
                 cycles: valid_groups * fabric_map::VALID_GROUP.cycles()
                     + (groups - valid_groups) * fabric_map::FLAGGED_GROUP.cycles(),
-                parallel: false,
+                // Rows in parallel (rayon).
+                parallel: true,
             },
         ],
     }
