@@ -31,12 +31,13 @@
 
 use super::error::EngineError;
 use super::integrator::{
-    irradiance_sample, irradiance_sample_shared, sensor_direction_pdf, Settings, SharedVertex,
+    irradiance_sample_shared_with, irradiance_sample_with, SensorDirections, Settings, SharedVertex,
 };
 use super::material::bright;
 use super::qmc::Randomisation;
 use super::ray::Ray;
 use super::rng::Rng;
+use super::window_sun::SensorWindowLight;
 use super::world::World;
 use crate::scene::Sensor;
 use glam::DVec3;
@@ -148,6 +149,8 @@ struct Run<'a> {
     replicates: u32,
     /// One randomisation per sensor and replicate (stratified only).
     randomisations: Vec<Randomisation>,
+    /// Per sensor, its directions towards the `BSDF` windows' sun light (None: none).
+    tables: Vec<Option<SensorWindowLight>>,
 }
 
 impl<'a> Run<'a> {
@@ -172,6 +175,18 @@ impl<'a> Run<'a> {
         } else {
             Vec::new()
         };
+        // Drawn up for each sensor once: each traces many paths.
+        let sun = settings
+            .bsdf_window_sampling
+            .then(|| world.sun_through_bsdf_windows())
+            .flatten();
+        let tables = match sun {
+            Some(sun) => sensors
+                .par_iter()
+                .map(|s| SensorWindowLight::new(sun, s.position_m, s.direction))
+                .collect(),
+            None => Vec::new(),
+        };
         Self {
             world,
             sensors,
@@ -179,6 +194,7 @@ impl<'a> Run<'a> {
             n,
             replicates,
             randomisations,
+            tables,
         }
     }
 
@@ -187,6 +203,18 @@ impl<'a> Run<'a> {
     fn batch(&self, group: &[usize], b: u32) -> Vec<Sums> {
         let (world, settings, replicates) = (self.world, self.settings, self.replicates);
         let members: Vec<&Sensor> = group.iter().map(|&s| &self.sensors[s]).collect();
+        let tables: Vec<Option<&SensorWindowLight>> = group
+            .iter()
+            .map(|&s| self.tables.get(s).and_then(Option::as_ref))
+            .collect();
+        let directions: Vec<SensorDirections> = members
+            .iter()
+            .zip(&tables)
+            .map(|(sensor, &table)| {
+                let normal = sensor.direction.normalize_or_zero();
+                SensorDirections::new(world, settings, sensor.position_m, normal, table)
+            })
+            .collect();
         let reuse = members.len() > 1;
         let mut rngs: Vec<Rng> = group
             .iter()
@@ -210,19 +238,32 @@ impl<'a> Run<'a> {
                 }
                 let (position, normal) = (sensor.position_m, sensor.direction);
                 if reuse {
-                    let (own, vertex) =
-                        irradiance_sample_shared(world, position, normal, settings, rng);
+                    let (own, vertex) = irradiance_sample_shared_with(
+                        world,
+                        position,
+                        normal,
+                        tables[local],
+                        settings,
+                        rng,
+                    );
                     e[local] += own;
                     if let Some(v) = vertex {
                         shared.push((local, v));
                     }
                 } else {
-                    e[local] += irradiance_sample(world, position, normal, settings, rng);
+                    e[local] += irradiance_sample_with(
+                        world,
+                        position,
+                        normal,
+                        tables[local],
+                        settings,
+                        rng,
+                    );
                 }
                 rng.clear_prefix();
             }
             for (from, v) in &shared {
-                share_vertex(world, settings, &members, *from, v, &mut e);
+                share_vertex(world, &members, &directions, *from, v, &mut e);
             }
             for (a, x) in acc.iter_mut().zip(&e) {
                 let lux = lux_from_irradiance(*x);
@@ -305,14 +346,14 @@ fn reuse_groups(sensors: &[Sensor], size: usize) -> Vec<Vec<usize>> {
 /// of the group that sees it directly from the same side: sensor j's irradiance sample `e[j]`
 /// gains L G_j / Σ_k p_k, where G_j = cos θ_j cos θ_v / d_j² and p_k = p_k(ω_k) cos θ_v / d_k²
 /// is the area density at the vertex of sensor k's first direction (its cosine lobe,
-/// p = cos θ_k / π, so that j gains π L p_j / Σ p_k, or that mixed with the `BSDF` windows:
-/// `integrator::sensor_direction_pdf`; 0 where the vertex is not k's first hit). Over the
+/// p = cos θ_k / π, so that j gains π L p_j / Σ p_k, or that mixed with the `BSDF` windows
+/// and the sensor's table of their light: `integrator::SensorDirections`; 0 where the vertex is not k's first hit). Over the
 /// group's paths this counts the light of the Lambertian first vertices once for each sensor
 /// in expectation (balance heuristic).
 fn share_vertex(
     world: &World,
-    settings: &Settings,
     group: &[&Sensor],
+    directions: &[SensorDirections],
     from: usize,
     v: &SharedVertex,
     e: &mut [DVec3],
@@ -344,7 +385,7 @@ fn share_vertex(
         {
             continue;
         }
-        let pdf_sr = sensor_direction_pdf(world, settings, sensor.position_m, normal, w);
+        let pdf_sr = directions[k].pdf_sr(w);
         density[k] = pdf_sr * cos_v / d2;
         geometry[k] = cos_k * cos_v / d2;
         total += density[k];

@@ -44,6 +44,7 @@ pub mod sky_sampling;
 pub mod slab;
 pub mod traversal_stats;
 pub mod virtual_sources;
+pub mod window_sun;
 pub mod world;
 
 pub use daylight_coefficients::{daylight_coefficients, sun_coefficients, DaylightCoefficients};

@@ -15,6 +15,7 @@ use super::shapes::{PreparedCone, PreparedPolygon, Primitive, ShapeHit};
 use super::sky::{source_seen, DistantEmitter, DistantKind, SkyFunction};
 use super::sky_sampling::SkyDistribution;
 use super::slab::{BoxTest, SlabTest};
+use super::window_sun::SunThroughWindows;
 use crate::scene::{DistantSource, Modifier, ModifierKind, Scene, Shape, Surface};
 use glam::DVec3;
 
@@ -67,6 +68,8 @@ pub struct World {
     /// directions towards them are mixed into the continuation at Lambertian vertices
     /// (`integrator::Continuation`), since no next-event strategy reaches the light they pass.
     bsdf_windows: Portals,
+    /// The polygons of `bsdf_windows` (primitive, vertices).
+    bsdf_window_polygons: Vec<(u32, Vec<DVec3>)>,
     /// Plane mirrors (primitive, normal, reflectance), for virtual sources: listed once, not
     /// found by a scan of every primitive at every vertex.
     mirrors: Vec<(u32, DVec3, VirtualSourceReflectance)>,
@@ -78,6 +81,9 @@ pub struct World {
     /// The radiance-proportional distribution of escape directions, built on first use and
     /// dropped whenever the sources or the environment change.
     sky_distribution: std::sync::OnceLock<Option<SkyDistribution>>,
+    /// What the `BSDF` windows send into the room per direction under the distant `light`s
+    /// and the sky, built when first asked for (reset with the sources and the environment).
+    sun_through_windows: std::sync::OnceLock<Option<SunThroughWindows>>,
 }
 
 /// Radiance per direction of everything beyond the scene that no distant source covers.
@@ -176,10 +182,12 @@ impl World {
             portal_candidates: Vec::new(),
             portals: Portals::default(),
             bsdf_windows: Portals::default(),
+            bsdf_window_polygons: Vec::new(),
             mirrors: Vec::new(),
             source_crossings: false,
             antimatter,
             sky_distribution: std::sync::OnceLock::new(),
+            sun_through_windows: std::sync::OnceLock::new(),
         };
         world.source_crossings = world.materials.iter().any(Material::has_source_crossing);
         world.mirrors = (0..world.primitives.len() as u32)
@@ -199,6 +207,7 @@ impl World {
             .cloned()
             .collect();
         world.bsdf_windows = Portals::new(&bsdf_windows);
+        world.bsdf_window_polygons = bsdf_windows;
         world.portal_candidates = polygon_vertices
             .into_iter()
             .filter(|(p, _)| world.material(*p).is_clear())
@@ -249,6 +258,33 @@ impl World {
     /// The `BSDF` windows open to the outside, as an area distribution (empty if none).
     pub fn bsdf_windows(&self) -> &Portals {
         &self.bsdf_windows
+    }
+
+    /// The radiance the `BSDF` windows send into the room per direction under the distant
+    /// `light`s and the sky ([`SunThroughWindows`]); None without windows or `light`s.
+    pub fn sun_through_bsdf_windows(&self) -> Option<&SunThroughWindows> {
+        self.sun_through_windows
+            .get_or_init(|| {
+                if self.bsdf_windows.is_empty() {
+                    None
+                } else {
+                    SunThroughWindows::new(self)
+                }
+            })
+            .as_ref()
+    }
+
+    /// The polygons of [`World::bsdf_windows`]: (primitive, vertices).
+    pub fn bsdf_window_polygons(&self) -> &[(u32, Vec<DVec3>)] {
+        &self.bsdf_window_polygons
+    }
+
+    /// The plane's unit normal of a polygon primitive (None for other shapes).
+    pub fn polygon_normal(&self, primitive: u32) -> Option<DVec3> {
+        match self.primitives.get(primitive as usize)? {
+            Primitive::Polygon(p) => Some(p.normal),
+            _ => None,
+        }
     }
 
     /// Adds openings (holes in the room's envelope, `super::openings` finds them) to the
@@ -332,12 +368,14 @@ impl World {
     /// Adds a distant source (e.g. the sun extracted from a sky map, as a `light`).
     pub fn add_distant(&mut self, source: DistantEmitter) {
         self.sky_distribution = std::sync::OnceLock::new();
+        self.sun_through_windows = std::sync::OnceLock::new();
         self.distant.push(source);
     }
 
     /// Removes every distant source.
     pub fn clear_distant(&mut self) {
         self.sky_distribution = std::sync::OnceLock::new();
+        self.sun_through_windows = std::sync::OnceLock::new();
         self.distant.clear();
     }
 
@@ -350,6 +388,7 @@ impl World {
     /// precedence, as a scene's `source`s are found first.
     pub fn set_environment(&mut self, environment: Option<Environment>) {
         self.sky_distribution = std::sync::OnceLock::new();
+        self.sun_through_windows = std::sync::OnceLock::new();
         self.environment = environment;
     }
 
@@ -362,6 +401,31 @@ impl World {
             Some(_) => DVec3::ZERO,
             None => self.environment.as_ref().map_or(DVec3::ZERO, |env| env(d)),
         }
+    }
+
+    /// The tree over the primitives (its shape sizes a ray unit; `engine::traversal_stats`).
+    pub fn bvh(&self) -> &Bvh {
+        &self.bvh
+    }
+
+    /// Each primitive's box, as the tree is built over them.
+    pub fn primitive_bounds(&self) -> Vec<super::slab::Aabb> {
+        self.primitives.iter().map(|p| p.bounds()).collect()
+    }
+
+    /// The distance at which `ray` meets primitive `p` within `[t_min_m, t_max_m]`, if it does
+    /// (the exact test a ray unit's candidate is finished with).
+    pub fn primitive_distance_m(
+        &self,
+        p: u32,
+        ray: &Ray,
+        t_min_m: f64,
+        t_max_m: f64,
+    ) -> Option<f64> {
+        self.primitives
+            .get(p as usize)?
+            .intersect(ray, t_min_m, t_max_m)
+            .map(|h| h.t_m)
     }
 
     pub fn primitive_count(&self) -> usize {
@@ -393,31 +457,6 @@ impl World {
     }
 
     /// Whether any surface (glass and invisible ones too) lies on `ray` nearer than
-    /// The tree over the primitives (its shape sizes a ray unit; `engine::traversal_stats`).
-    pub fn bvh(&self) -> &Bvh {
-        &self.bvh
-    }
-
-    /// Each primitive's box, as the tree is built over them.
-    pub fn primitive_bounds(&self) -> Vec<super::slab::Aabb> {
-        self.primitives.iter().map(|p| p.bounds()).collect()
-    }
-
-    /// The distance at which `ray` meets primitive `p` within `[t_min_m, t_max_m]`, if it does
-    /// (the exact test a ray unit's candidate is finished with).
-    pub fn primitive_distance_m(
-        &self,
-        p: u32,
-        ray: &Ray,
-        t_min_m: f64,
-        t_max_m: f64,
-    ) -> Option<f64> {
-        self.primitives
-            .get(p as usize)?
-            .intersect(ray, t_min_m, t_max_m)
-            .map(|h| h.t_m)
-    }
-
     /// `t_max_m`, not counting the flat surface `from`: whether a point that far along it is
     /// the ray's first hit. One unordered traversal that stops at the first surface found.
     pub fn blocked_within(&self, ray: &Ray, from: Option<u32>, t_max_m: f64) -> bool {

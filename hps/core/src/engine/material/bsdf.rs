@@ -91,6 +91,26 @@ impl BsdfMaterial {
         self.thickness_m != 0.0
     }
 
+    /// The BSDF's frame (x, y, z) on a surface of front normal `normal`; None when the up
+    /// vector is parallel to it.
+    pub fn frame_axes(&self, normal: DVec3) -> Option<[DVec3; 3]> {
+        Frame::new(normal, self.up).map(|f| [f.x, f.y, f.z])
+    }
+
+    /// f per steradian, the extra Lambertian parts included, of light from `source_local`
+    /// leaving towards `view_local` (both unit, in the BSDF's frame; the brightness of the
+    /// extra colours), as [`BsdfShading::source_coefficient`] weights a source without the
+    /// `aBSDF` peak's exception: what `engine::window_sun` tabulates for the sun.
+    pub fn sun_radiance_factor(&self, view_local: DVec3, source_local: DVec3) -> f64 {
+        let reflected = (view_local.z > 0.0) == (source_local.z > 0.0);
+        let extra = match (reflected, view_local.z > 0.0) {
+            (true, true) => self.extra_reflectance_front_rgb,
+            (true, false) => self.extra_reflectance_back_rgb,
+            (false, _) => self.extra_transmittance_rgb,
+        };
+        self.data.eval(view_local, source_local) + bright(extra) / PI
+    }
+
     /// The shading of a ray along unit `d` hitting a surface of front normal `normal`; None
     /// when the up vector is parallel to the normal (RADIANCE: "Illegal orientation vector",
     /// the ray gets nothing).
