@@ -85,7 +85,8 @@ fn box_room_text_under_every_sky(label: &str, room_text: &str, sensors: &str, ef
 /// a sun 45° up through the blinds, its six sensors facing up and the same six facing away
 /// from the window, with and without: within 4 combined standard errors of each other, and
 /// at equal paths at most half the relative standard error on average (measured: 0.46; 0.41
-/// before the sensors' own tables and the vertices' share of 0.3, which gain more in the LBNL room).
+/// before the sensors' own tables and the vertices' share of 0.3, which gain more in the
+/// LBNL room).
 #[test]
 fn sampling_towards_bsdf_windows_changes_the_noise_not_the_answer() {
     let xml = corpus().join("bsdf/sariths-matrix-tutorial/room/blinds/blinds.xml");
