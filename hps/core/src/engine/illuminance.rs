@@ -37,7 +37,7 @@ use super::material::bright;
 use super::qmc::Randomisation;
 use super::ray::Ray;
 use super::rng::Rng;
-use super::window_sun::SensorWindowLight;
+use super::window_sun::{SensorWindowLight, SunThroughWindows};
 use super::world::World;
 use crate::scene::Sensor;
 use glam::DVec3;
@@ -175,12 +175,12 @@ impl<'a> Run<'a> {
         } else {
             Vec::new()
         };
-        // Drawn up for each sensor once: each traces many paths.
-        let sun = settings
-            .bsdf_window_sampling
-            .then(|| world.sun_through_bsdf_windows())
+        // Drawn up for each sensor once: each traces many paths. The windows' table is built
+        // here, once a run, for the world's sources as they are now.
+        let sun = (settings.bsdf_window_sampling && !world.bsdf_windows().is_empty())
+            .then(|| SunThroughWindows::new(world))
             .flatten();
-        let tables = match sun {
+        let tables = match &sun {
             Some(sun) => sensors
                 .par_iter()
                 .map(|s| SensorWindowLight::new(sun, s.position_m, s.direction))

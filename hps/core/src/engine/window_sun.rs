@@ -402,11 +402,9 @@ mod tests {
     #[test]
     fn a_sensor_table_draws_what_its_density_says() {
         let world = blinds_room();
-        let sun = world
-            .sun_through_bsdf_windows()
-            .expect("a table of the blinds");
+        let sun = SunThroughWindows::new(&world).expect("a table of the blinds");
         let (at, n) = (DVec3::new(2.0, 0.6, 0.8), DVec3::Z);
-        let table = SensorWindowLight::new(sun, at, n).expect("the sensor sees the window");
+        let table = SensorWindowLight::new(&sun, at, n).expect("the sensor sees the window");
         let h = |d: DVec3| d.dot(n).max(0.0) * (1.0 + d.x);
         let m = 400_000;
         let mut rng = Rng::for_stream(7, 1);
@@ -462,9 +460,7 @@ mod tests {
     #[test]
     fn the_sensor_table_changes_the_noise_not_the_answer() {
         let world = blinds_room();
-        let sun = world
-            .sun_through_bsdf_windows()
-            .expect("a table of the blinds");
+        let sun = SunThroughWindows::new(&world).expect("a table of the blinds");
         let n = 40_000u64;
         // Towards the sun, the first sensor sees the window at (2.37, 0, 1.66): in the beam.
         let beam = DVec3::new(2.0, 0.8, 0.8);
@@ -476,7 +472,7 @@ mod tests {
                 ambient_bounces: bounces,
                 ..Settings::default()
             };
-            let table = SensorWindowLight::new(sun, at, DVec3::Z).expect("a table");
+            let table = SensorWindowLight::new(&sun, at, DVec3::Z).expect("a table");
             let stats = |with: Option<&SensorWindowLight>, seed: u64| {
                 let (mut s1, mut s2) = (0.0, 0.0);
                 for i in 0..n {

@@ -15,7 +15,6 @@ use super::shapes::{PreparedCone, PreparedPolygon, Primitive, ShapeHit};
 use super::sky::{source_seen, DistantEmitter, DistantKind, SkyFunction};
 use super::sky_sampling::SkyDistribution;
 use super::slab::{BoxTest, SlabTest};
-use super::window_sun::SunThroughWindows;
 use crate::scene::{DistantSource, Modifier, ModifierKind, Scene, Shape, Surface};
 use glam::DVec3;
 
@@ -81,9 +80,6 @@ pub struct World {
     /// The radiance-proportional distribution of escape directions, built on first use and
     /// dropped whenever the sources or the environment change.
     sky_distribution: std::sync::OnceLock<Option<SkyDistribution>>,
-    /// What the `BSDF` windows send into the room per direction under the distant `light`s
-    /// and the sky, built when first asked for (reset with the sources and the environment).
-    sun_through_windows: std::sync::OnceLock<Option<SunThroughWindows>>,
 }
 
 /// Radiance per direction of everything beyond the scene that no distant source covers.
@@ -187,7 +183,6 @@ impl World {
             source_crossings: false,
             antimatter,
             sky_distribution: std::sync::OnceLock::new(),
-            sun_through_windows: std::sync::OnceLock::new(),
         };
         world.source_crossings = world.materials.iter().any(Material::has_source_crossing);
         world.mirrors = (0..world.primitives.len() as u32)
@@ -258,20 +253,6 @@ impl World {
     /// The `BSDF` windows open to the outside, as an area distribution (empty if none).
     pub fn bsdf_windows(&self) -> &Portals {
         &self.bsdf_windows
-    }
-
-    /// The radiance the `BSDF` windows send into the room per direction under the distant
-    /// `light`s and the sky ([`SunThroughWindows`]); None without windows or `light`s.
-    pub fn sun_through_bsdf_windows(&self) -> Option<&SunThroughWindows> {
-        self.sun_through_windows
-            .get_or_init(|| {
-                if self.bsdf_windows.is_empty() {
-                    None
-                } else {
-                    SunThroughWindows::new(self)
-                }
-            })
-            .as_ref()
     }
 
     /// The polygons of [`World::bsdf_windows`]: (primitive, vertices).
@@ -368,14 +349,12 @@ impl World {
     /// Adds a distant source (e.g. the sun extracted from a sky map, as a `light`).
     pub fn add_distant(&mut self, source: DistantEmitter) {
         self.sky_distribution = std::sync::OnceLock::new();
-        self.sun_through_windows = std::sync::OnceLock::new();
         self.distant.push(source);
     }
 
     /// Removes every distant source.
     pub fn clear_distant(&mut self) {
         self.sky_distribution = std::sync::OnceLock::new();
-        self.sun_through_windows = std::sync::OnceLock::new();
         self.distant.clear();
     }
 
@@ -388,7 +367,6 @@ impl World {
     /// precedence, as a scene's `source`s are found first.
     pub fn set_environment(&mut self, environment: Option<Environment>) {
         self.sky_distribution = std::sync::OnceLock::new();
-        self.sun_through_windows = std::sync::OnceLock::new();
         self.environment = environment;
     }
 
