@@ -18,6 +18,7 @@
 
 extern crate alloc;
 
+pub mod bvh_format;
 pub mod descriptor;
 pub mod hdr_values;
 mod map;

@@ -72,6 +72,24 @@ impl Bvh {
         self.nodes.len()
     }
 
+    /// Node `i` as (bounds, offset, count): an interior node (count 0) has its first child
+    /// at `i + 1` and its second at `offset`; a leaf holds `count` primitives from `offset`
+    /// of [`Bvh::primitive_order`]. For building a ray unit's copy of the tree.
+    pub fn node_parts(&self, i: usize) -> Option<(Aabb, u32, u32)> {
+        self.nodes.get(i).map(|n| (n.bounds, n.offset, n.count))
+    }
+
+    /// The primitives of leaf node `i` (none for an interior node or an index past the end).
+    pub fn leaf_primitives(&self, i: usize) -> &[u32] {
+        match self.nodes.get(i) {
+            Some(n) if n.count > 0 => self
+                .order
+                .get(n.offset as usize..(n.offset + n.count) as usize)
+                .unwrap_or(&[]),
+            _ => &[],
+        }
+    }
+
     /// Leaves, and the deepest leaf's depth (the root at depth 0): what a traversal in the
     /// fabric must hold (its node memory and its per-ray stack).
     pub fn shape(&self) -> BvhShape {

@@ -22,6 +22,7 @@
 pub mod accel;
 pub mod antimatter;
 pub mod bvh;
+pub mod bvh_unit;
 pub mod daylight_coefficients;
 mod error;
 pub mod function;

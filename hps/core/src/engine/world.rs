@@ -2,6 +2,7 @@
 
 use super::antimatter::Antimatter;
 use super::bvh::Bvh;
+use super::bvh_unit::{BvhUnit, UnitTreeError};
 use super::error::EngineError;
 use super::function::build::{self, resolve};
 use super::function::loader::FunctionLoader;
@@ -15,6 +16,7 @@ use super::shapes::{PreparedCone, PreparedPolygon, Primitive, ShapeHit};
 use super::sky::{source_seen, DistantEmitter, DistantKind, SkyFunction};
 use super::sky_sampling::SkyDistribution;
 use super::slab::{BoxTest, SlabTest};
+use crate::fpga::bvh_unit::BvhUnitBackend;
 use crate::scene::{DistantSource, Modifier, ModifierKind, Scene, Shape, Surface};
 use glam::DVec3;
 
@@ -56,6 +58,8 @@ pub struct World {
     box_test: Box<dyn BoxTest + Send>,
     /// The box test is the software [`SlabTest`]: traversal then calls it directly.
     software_box_test: bool,
+    /// The BVH ray unit (or its model), when attached: it traverses, the HPS finishes.
+    bvh_unit: Option<BvhUnit>,
     distant: Vec<DistantEmitter>,
     environment: Option<Environment>,
     /// Surface names, per primitive (for naming portals).
@@ -172,6 +176,7 @@ impl World {
             materials,
             box_test,
             software_box_test: false,
+            bvh_unit: None,
             distant,
             environment: None,
             names,
@@ -386,6 +391,21 @@ impl World {
         &self.bvh
     }
 
+    /// Traverses with the BVH ray unit behind `backend` from now on (the tree loaded into
+    /// it); the answers stay the software traversal's, bit for bit (`engine::bvh_unit`).
+    pub fn attach_bvh_unit(
+        &mut self,
+        backend: Box<dyn BvhUnitBackend>,
+    ) -> Result<(), UnitTreeError> {
+        self.bvh_unit = Some(BvhUnit::load(&self.bvh, backend)?);
+        Ok(())
+    }
+
+    /// The attached BVH ray unit, with its counts.
+    pub fn bvh_unit(&self) -> Option<&BvhUnit> {
+        self.bvh_unit.as_ref()
+    }
+
     /// Each primitive's box, as the tree is built over them.
     pub fn primitive_bounds(&self) -> Vec<super::slab::Aabb> {
         self.primitives.iter().map(|p| p.bounds()).collect()
@@ -458,7 +478,9 @@ impl World {
     /// Every primitive whose box `ray` crosses nearer than `t_max_m`, in no order, handed to
     /// `visit` until it returns false ([`Bvh::visit_crossed`] with this world's box test).
     fn visit_crossed(&self, ray: &Ray, t_max_m: f64, visit: impl FnMut(u32) -> bool) {
-        if self.software_box_test {
+        if let Some(unit) = &self.bvh_unit {
+            unit.visit_crossed(&self.bvh, ray, 0.0, t_max_m, visit);
+        } else if self.software_box_test {
             self.bvh.visit_crossed(&SlabTest, ray, 0.0, t_max_m, visit);
         } else {
             self.bvh
@@ -566,7 +588,9 @@ impl World {
                     primitive: p,
                 })
         };
-        if self.software_box_test {
+        if let Some(unit) = &self.bvh_unit {
+            unit.closest(&self.bvh, ray, 0.0, t_max_m, primitive_hit, |h| h.t_m)
+        } else if self.software_box_test {
             self.bvh
                 .closest(&SlabTest, ray, 0.0, t_max_m, primitive_hit, |h| h.t_m)
         } else {

@@ -1,6 +1,7 @@
 //! Drivers for the Skylux fabric, written against the bus traits only.
 
 mod bringup;
+pub mod bvh_unit;
 pub mod capture;
 mod exposure;
 pub mod frames;

@@ -1,0 +1,147 @@
+//! The BVH ray unit's backends (issue 22 item 4; formats and golden model in
+//! `skylux_regmap::bvh_format`): the node memory loaded once per room, then one ray's words
+//! in and its candidates out.
+//!
+//! [`BvhUnitBackend`] is what the engine's unit traversal (`engine::bvh_unit`) calls; the
+//! golden model ([`GoldenBvhUnit`]) answers bit for bit as the unit does.
+
+use skylux_regmap::bvh_format::{
+    result_words, Order, UnitNode, MAX_NODES, NODE_WORDS, RAY_WORDS, RESULT_END_BIT,
+};
+
+/// One node's memory words.
+pub type NodeWords = [u64; NODE_WORDS];
+/// One ray's words.
+pub type RayWords = [u64; RAY_WORDS];
+
+/// Why the unit could not be loaded or did not answer. Every variant names what is concerned.
+#[derive(Debug, thiserror::Error, PartialEq, Eq)]
+pub enum BvhUnitError {
+    #[error("node {index} of the BVH unit's memory has a wrong magic byte")]
+    BadNode { index: usize },
+    #[error("{nodes} nodes do not fit the BVH unit's memory of {MAX_NODES}")]
+    TooManyNodes { nodes: usize },
+    #[error("the BVH unit holds no tree (bvh.node_count is 0)")]
+    Empty,
+    #[error("the BVH unit's answer for a ray ended without its end word ({words} words)")]
+    NoEnd { words: usize },
+    #[error("the BVH unit's end word counts {counted} candidates, {written} were written")]
+    CountMismatch { counted: u32, written: usize },
+    #[error("BVH unit fault: {0}")]
+    Fault(String),
+}
+
+/// Traverses rays on a loaded tree.
+pub trait BvhUnitBackend: Send + Sync {
+    /// Loads the node memory (node 0 first).
+    fn load(&mut self, nodes: &[NodeWords]) -> Result<(), BvhUnitError>;
+    /// Appends the unit's result words for one ray (its candidates, then its end word).
+    fn traverse(
+        &self,
+        order: Order,
+        ray: &RayWords,
+        results: &mut Vec<u64>,
+    ) -> Result<(), BvhUnitError>;
+}
+
+/// The golden model as a backend.
+#[derive(Clone, Debug, Default)]
+pub struct GoldenBvhUnit {
+    nodes: Vec<UnitNode>,
+}
+
+impl BvhUnitBackend for GoldenBvhUnit {
+    fn load(&mut self, nodes: &[NodeWords]) -> Result<(), BvhUnitError> {
+        if nodes.is_empty() {
+            return Err(BvhUnitError::Empty);
+        }
+        if nodes.len() > MAX_NODES {
+            return Err(BvhUnitError::TooManyNodes { nodes: nodes.len() });
+        }
+        self.nodes = nodes
+            .iter()
+            .enumerate()
+            .map(|(index, w)| UnitNode::unpack(w).ok_or(BvhUnitError::BadNode { index }))
+            .collect::<Result<_, _>>()?;
+        Ok(())
+    }
+
+    fn traverse(
+        &self,
+        order: Order,
+        ray: &RayWords,
+        results: &mut Vec<u64>,
+    ) -> Result<(), BvhUnitError> {
+        if self.nodes.is_empty() {
+            return Err(BvhUnitError::Empty);
+        }
+        results.extend(result_words(&self.nodes, ray, order));
+        Ok(())
+    }
+}
+
+/// Checks that `words` is one ray's complete answer: candidates, then an end word counting
+/// them. Returns the end word.
+pub fn check_answer(words: &[u64]) -> Result<u64, BvhUnitError> {
+    let Some((&end, candidates)) = words.split_last() else {
+        return Err(BvhUnitError::NoEnd { words: 0 });
+    };
+    let is_end = |w: u64| w >> RESULT_END_BIT == 1;
+    if !is_end(end) || candidates.iter().any(|&w| is_end(w)) {
+        return Err(BvhUnitError::NoEnd { words: words.len() });
+    }
+    let counted = end as u32;
+    let refused = (end >> 32) as u8 != 0;
+    if !refused && counted as usize != candidates.len() {
+        return Err(BvhUnitError::CountMismatch {
+            counted,
+            written: candidates.len(),
+        });
+    }
+    Ok(end)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use skylux_regmap::bvh_format::{pack_candidate, pack_end, Candidate};
+
+    #[test]
+    fn load_refuses_bad_memories() {
+        let mut g = GoldenBvhUnit::default();
+        assert_eq!(g.load(&[]), Err(BvhUnitError::Empty));
+        let good = UnitNode::default().pack();
+        let mut bad = good;
+        bad[4] = 0;
+        assert_eq!(
+            g.load(&[good, bad]),
+            Err(BvhUnitError::BadNode { index: 1 })
+        );
+        assert_eq!(
+            g.load(&vec![good; MAX_NODES + 1]),
+            Err(BvhUnitError::TooManyNodes {
+                nodes: MAX_NODES + 1
+            })
+        );
+        let mut out = vec![];
+        assert_eq!(
+            GoldenBvhUnit::default().traverse(Order::NearFirst, &[0; RAY_WORDS], &mut out),
+            Err(BvhUnitError::Empty)
+        );
+    }
+
+    #[test]
+    fn answers_are_checked() {
+        let c = pack_candidate(Candidate { leaf: 3, t_near: 9 });
+        assert!(check_answer(&[c, pack_end(1, None)]).is_ok());
+        assert_eq!(
+            check_answer(&[c, c, pack_end(1, None)]),
+            Err(BvhUnitError::CountMismatch {
+                counted: 1,
+                written: 2
+            })
+        );
+        assert_eq!(check_answer(&[c]), Err(BvhUnitError::NoEnd { words: 1 }));
+        assert_eq!(check_answer(&[]), Err(BvhUnitError::NoEnd { words: 0 }));
+    }
+}
