@@ -438,15 +438,26 @@ pub fn traverse(
     words: &[u64; RAY_WORDS],
     order: Order,
 ) -> Result<Vec<Candidate>, Refusal> {
+    traverse_counting(nodes, words, order, &mut 0)
+}
+
+/// [`traverse`], adding the node visits (pair tests) it made to `visits`: the unit's work,
+/// for sizing it.
+pub fn traverse_counting(
+    nodes: &[UnitNode],
+    words: &[u64; RAY_WORDS],
+    order: Order,
+    visits: &mut usize,
+) -> Result<Vec<Candidate>, Refusal> {
     let ray = grid_ray(words).ok_or(Refusal::Unrepresentable)?;
     let mut out = Vec::new();
     let mut stack: Vec<(u16, i32)> = Vec::with_capacity(STACK_DEPTH);
     let mut current = 0usize;
-    let mut visits = 0usize;
+    let start = *visits;
     loop {
         let node = nodes.get(current).ok_or(Refusal::BadReference)?;
-        visits += 1;
-        if visits > nodes.len() {
+        *visits += 1;
+        if *visits - start > nodes.len() {
             return Err(Refusal::Runaway);
         }
         let mut hits = [(0u16, 0i32); 2];

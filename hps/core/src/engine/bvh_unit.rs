@@ -37,7 +37,7 @@ const MIN_DIRECTION_LENGTH: f64 = 0.5;
 pub enum UnitTreeError {
     #[error("the scene has no primitive: no tree to load")]
     Empty,
-    #[error("the tree has {nodes} nodes: the unit's memory holds {MAX_NODES} interior nodes and leaf numbers below 16384")]
+    #[error("the tree of {nodes} nodes needs more than the unit's {MAX_NODES} nodes (or 16384 primitives)")]
     TooLarge { nodes: usize },
     #[error("node {node}'s box reaches beyond the unit's ±256 m grid (or is empty)")]
     OutOfRange { node: usize },
@@ -61,49 +61,104 @@ pub fn quantise_box(b: &Aabb) -> Option<([i32; 3], [i32; 3])> {
     Some((lower, upper))
 }
 
-/// The unit's node memory for `bvh`: node 0 holds the root as its child 0; each interior
-/// node of the engine's tree becomes one unit node; a leaf is referred to by its engine node
-/// index, which the unit hands back.
-pub fn unit_nodes(bvh: &Bvh) -> Result<Vec<NodeWords>, UnitTreeError> {
-    let n = bvh.node_count();
-    if n == 0 {
-        return Err(UnitTreeError::Empty);
+/// A child as the unit holds it: box on the grid and reference.
+type UnitChild = ([i32; 3], [i32; 3], u16);
+
+/// The unit's copy of the engine's tree, each leaf of several primitives expanded into a
+/// small subtree of one primitive a leaf, so that the unit hands back single primitives
+/// (the HPS then tests only those not past its best hit) and the depth-first child order
+/// still meets them in [`Bvh::primitive_order`], the software traversal's order.
+struct UnitTreeBuilder<'a> {
+    bvh: &'a Bvh,
+    primitive_bounds: &'a [Aabb],
+    nodes: Vec<UnitNode>,
+}
+
+impl UnitTreeBuilder<'_> {
+    fn allocate(&mut self) -> Result<usize, UnitTreeError> {
+        if self.nodes.len() == MAX_NODES {
+            return Err(UnitTreeError::TooLarge {
+                nodes: self.bvh.node_count(),
+            });
+        }
+        self.nodes.push(UnitNode::default());
+        Ok(self.nodes.len() - 1)
     }
-    let interior: Vec<usize> = (0..n)
-        .filter(|&i| bvh.node_parts(i).is_some_and(|p| p.2 == 0))
-        .collect();
-    if interior.len() + 1 > MAX_NODES || n > REF_INDEX_MASK as usize + 1 {
-        return Err(UnitTreeError::TooLarge { nodes: n });
+
+    fn set(&mut self, index: usize, a: UnitChild, b: UnitChild) {
+        self.nodes[index] = UnitNode {
+            lower: [a.0, b.0],
+            upper: [a.1, b.1],
+            reference: [a.2, b.2],
+        };
     }
-    let mut unit_index = vec![0u16; n];
-    for (k, &i) in interior.iter().enumerate() {
-        unit_index[i] = k as u16 + 1;
-    }
-    let child = |i: usize| -> Result<([i32; 3], [i32; 3], u16), UnitTreeError> {
-        let (bounds, _, count) = bvh
+
+    /// Engine node `i` as a child of a unit node.
+    fn engine_child(&mut self, i: usize) -> Result<UnitChild, UnitTreeError> {
+        let (bounds, offset, count) = self
+            .bvh
             .node_parts(i)
             .ok_or(UnitTreeError::OutOfRange { node: i })?;
+        if count > 0 {
+            return self.primitives(i, offset as usize, count as usize);
+        }
         let (lo, hi) = quantise_box(&bounds).ok_or(UnitTreeError::OutOfRange { node: i })?;
-        let reference = if count > 0 {
-            REF_VALID | REF_LEAF | i as u16
-        } else {
-            REF_VALID | unit_index[i]
-        };
-        Ok((lo, hi, reference))
-    };
-    let node = |a: ([i32; 3], [i32; 3], u16), b: ([i32; 3], [i32; 3], u16)| UnitNode {
-        lower: [a.0, b.0],
-        upper: [a.1, b.1],
-        reference: [a.2, b.2],
-    };
-    let absent = ([0; 3], [0; 3], 0u16);
-    let mut nodes = Vec::with_capacity(interior.len() + 1);
-    nodes.push(node(child(0)?, absent).pack());
-    for &i in &interior {
-        let second = bvh.node_parts(i).map_or(0, |p| p.1 as usize);
-        nodes.push(node(child(i + 1)?, child(second)?).pack());
+        let index = self.allocate()?;
+        let first = self.engine_child(i + 1)?;
+        let second = self.engine_child(offset as usize)?;
+        self.set(index, first, second);
+        Ok((lo, hi, REF_VALID | index as u16))
     }
-    Ok(nodes)
+
+    /// Positions `start..start + count` of the primitive order (in engine leaf `leaf`).
+    fn primitives(
+        &mut self,
+        leaf: usize,
+        start: usize,
+        count: usize,
+    ) -> Result<UnitChild, UnitTreeError> {
+        if count == 1 {
+            let bounds = self
+                .bvh
+                .primitive_order()
+                .get(start)
+                .and_then(|&p| self.primitive_bounds.get(p as usize))
+                .ok_or(UnitTreeError::OutOfRange { node: leaf })?;
+            let (lo, hi) = quantise_box(bounds).ok_or(UnitTreeError::OutOfRange { node: leaf })?;
+            if start > REF_INDEX_MASK as usize {
+                return Err(UnitTreeError::TooLarge {
+                    nodes: self.bvh.node_count(),
+                });
+            }
+            return Ok((lo, hi, REF_VALID | REF_LEAF | start as u16));
+        }
+        let index = self.allocate()?;
+        let half = count / 2;
+        let a = self.primitives(leaf, start, half)?;
+        let b = self.primitives(leaf, start + half, count - half)?;
+        self.set(index, a, b);
+        let lo = std::array::from_fn(|k| a.0[k].min(b.0[k]));
+        let hi = std::array::from_fn(|k| a.1[k].max(b.1[k]));
+        Ok((lo, hi, REF_VALID | index as u16))
+    }
+}
+
+/// The unit's node memory for `bvh` over primitives whose boxes are `primitive_bounds`:
+/// node 0 holds the root as its child 0; a leaf refers to a position in
+/// [`Bvh::primitive_order`], which the unit hands back.
+pub fn unit_nodes(bvh: &Bvh, primitive_bounds: &[Aabb]) -> Result<Vec<NodeWords>, UnitTreeError> {
+    if bvh.node_count() == 0 {
+        return Err(UnitTreeError::Empty);
+    }
+    let mut builder = UnitTreeBuilder {
+        bvh,
+        primitive_bounds,
+        nodes: Vec::new(),
+    };
+    let root = builder.allocate()?;
+    let child = builder.engine_child(0)?;
+    builder.set(root, child, ([0; 3], [0; 3], 0));
+    Ok(builder.nodes.iter().map(UnitNode::pack).collect())
 }
 
 /// A ray's words for the unit (f32: the fabric quantises); `None` for a ray the unit's error
@@ -142,6 +197,8 @@ pub struct BvhUnitStats {
     pub refused: AtomicU64,
     /// Rays whose answer failed (backend error, malformed answer): software answered.
     pub failed: AtomicU64,
+    /// Primitives the HPS tested exactly for the rays the unit answered.
+    pub primitives: AtomicU64,
 }
 
 /// The unit with its loaded tree.
@@ -161,9 +218,13 @@ impl std::fmt::Debug for BvhUnit {
 }
 
 impl BvhUnit {
-    /// Loads `bvh` into `backend`.
-    pub fn load(bvh: &Bvh, mut backend: Box<dyn BvhUnitBackend>) -> Result<Self, UnitTreeError> {
-        backend.load(&unit_nodes(bvh)?)?;
+    /// Loads `bvh` (over primitives whose boxes are `primitive_bounds`) into `backend`.
+    pub fn load(
+        bvh: &Bvh,
+        primitive_bounds: &[Aabb],
+        mut backend: Box<dyn BvhUnitBackend>,
+    ) -> Result<Self, UnitTreeError> {
+        backend.load(&unit_nodes(bvh, primitive_bounds)?)?;
         Ok(Self {
             backend,
             stats: BvhUnitStats::default(),
@@ -171,7 +232,8 @@ impl BvhUnit {
         })
     }
 
-    /// The unit's candidates for one ray as (engine leaf node, entry distance in metres), or
+    /// The unit's candidates for one ray as (position in the primitive order, entry distance
+    /// in metres), or
     /// `None` when software must answer it.
     fn candidates(
         &self,
@@ -238,20 +300,25 @@ impl BvhUnit {
         };
         let mut best: Option<H> = None;
         let mut best_t = t_max_m;
-        for (leaf, entry_m) in candidates {
+        let mut tested = 0;
+        let order = bvh.primitive_order();
+        for (position, entry_m) in candidates {
             if entry_m > best_t {
                 continue;
             }
-            for &p in bvh.leaf_primitives(leaf) {
-                if let Some(h) = intersect(p, best_t) {
-                    let t = distance(&h);
-                    if t < best_t {
-                        best_t = t;
-                        best = Some(h);
-                    }
+            let Some(&p) = order.get(position) else {
+                continue;
+            };
+            tested += 1;
+            if let Some(h) = intersect(p, best_t) {
+                let t = distance(&h);
+                if t < best_t {
+                    best_t = t;
+                    best = Some(h);
                 }
             }
         }
+        self.stats.primitives.fetch_add(tested, Ordering::Relaxed);
         best
     }
 
@@ -267,13 +334,18 @@ impl BvhUnit {
         let Some(candidates) = self.candidates(ray, t_min_m, t_max_m, Order::ChildOrder) else {
             return bvh.visit_crossed(&SlabTest, ray, t_min_m, t_max_m, visit);
         };
-        for (leaf, _) in candidates {
-            for &p in bvh.leaf_primitives(leaf) {
-                if !visit(p) {
-                    return;
-                }
+        let mut tested = 0;
+        let order = bvh.primitive_order();
+        for (position, _) in candidates {
+            let Some(&p) = order.get(position) else {
+                continue;
+            };
+            tested += 1;
+            if !visit(p) {
+                break;
             }
         }
+        self.stats.primitives.fetch_add(tested, Ordering::Relaxed);
     }
 }
 
@@ -396,7 +468,7 @@ mod tests {
         let mut rng = Rng::for_stream(22, 5);
         let boxes = random_boxes(&mut rng, 300);
         let bvh = Bvh::build(&boxes);
-        let unit = BvhUnit::load(&bvh, Box::<GoldenBvhUnit>::default()).unwrap();
+        let unit = BvhUnit::load(&bvh, &boxes, Box::<GoldenBvhUnit>::default()).unwrap();
         for _ in 0..3000 {
             let o = DVec3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 14.0 - 2.0;
             let ray = Ray::new(o, random_direction(&mut rng));
@@ -445,13 +517,14 @@ mod tests {
             min_m: DVec3::splat(300.0),
             max_m: DVec3::splat(301.0),
         }];
-        let e = BvhUnit::load(&Bvh::build(&far), Box::<GoldenBvhUnit>::default()).unwrap_err();
+        let e =
+            BvhUnit::load(&Bvh::build(&far), &far, Box::<GoldenBvhUnit>::default()).unwrap_err();
         assert_eq!(e, UnitTreeError::OutOfRange { node: 0 });
-        assert_eq!(unit_nodes(&Bvh::build(&[])), Err(UnitTreeError::Empty));
+        assert_eq!(unit_nodes(&Bvh::build(&[]), &[]), Err(UnitTreeError::Empty));
         let mut rng = Rng::for_stream(22, 6);
         let many = random_boxes(&mut rng, 2000);
         assert!(matches!(
-            unit_nodes(&Bvh::build(&many)),
+            unit_nodes(&Bvh::build(&many), &many),
             Err(UnitTreeError::TooLarge { .. })
         ));
     }
@@ -477,7 +550,7 @@ mod tests {
         let mut rng = Rng::for_stream(22, 7);
         let boxes = random_boxes(&mut rng, 20);
         let bvh = Bvh::build(&boxes);
-        let unit = BvhUnit::load(&bvh, Box::new(Garbage)).unwrap();
+        let unit = BvhUnit::load(&bvh, &boxes, Box::new(Garbage)).unwrap();
         let ray = Ray::new(DVec3::splat(-1.0), DVec3::ONE.normalize());
         let q = RayBoxQuery::new(&ray, 0.0, 1e9);
         let hit = |p: u32, tmax: f64| {

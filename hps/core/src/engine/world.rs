@@ -397,7 +397,7 @@ impl World {
         &mut self,
         backend: Box<dyn BvhUnitBackend>,
     ) -> Result<(), UnitTreeError> {
-        self.bvh_unit = Some(BvhUnit::load(&self.bvh, backend)?);
+        self.bvh_unit = Some(BvhUnit::load(&self.bvh, &self.primitive_bounds(), backend)?);
         Ok(())
     }
 

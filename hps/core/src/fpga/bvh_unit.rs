@@ -6,8 +6,10 @@
 //! golden model ([`GoldenBvhUnit`]) answers bit for bit as the unit does.
 
 use skylux_regmap::bvh_format::{
-    result_words, Order, UnitNode, MAX_NODES, NODE_WORDS, RAY_WORDS, RESULT_END_BIT,
+    pack_candidate, pack_end, traverse_counting, Order, UnitNode, MAX_NODES, NODE_WORDS, RAY_WORDS,
+    RESULT_END_BIT,
 };
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// One node's memory words.
 pub type NodeWords = [u64; NODE_WORDS];
@@ -45,9 +47,11 @@ pub trait BvhUnitBackend: Send + Sync {
 }
 
 /// The golden model as a backend.
-#[derive(Clone, Debug, Default)]
+#[derive(Debug, Default)]
 pub struct GoldenBvhUnit {
     nodes: Vec<UnitNode>,
+    /// Node visits (pair tests) over every ray traversed: the unit's work.
+    pub node_visits: AtomicU64,
 }
 
 impl BvhUnitBackend for GoldenBvhUnit {
@@ -75,7 +79,15 @@ impl BvhUnitBackend for GoldenBvhUnit {
         if self.nodes.is_empty() {
             return Err(BvhUnitError::Empty);
         }
-        results.extend(result_words(&self.nodes, ray, order));
+        let mut visits = 0;
+        match traverse_counting(&self.nodes, ray, order, &mut visits) {
+            Ok(c) => {
+                results.extend(c.iter().map(|&c| pack_candidate(c)));
+                results.push(pack_end(c.len() as u32, None));
+            }
+            Err(r) => results.push(pack_end(0, Some(r))),
+        }
+        self.node_visits.fetch_add(visits as u64, Ordering::Relaxed);
         Ok(())
     }
 }
