@@ -57,6 +57,10 @@ pub const BLOCKS: &[ExportedBlock] = &[
         name: "raybox_unit",
         verilog: fresh::<skylux_rtl::raybox::RayBoxUnit<{ skylux_rtl::raybox::DEFAULT_LANES }>>,
     },
+    ExportedBlock {
+        name: "bvh_traversal",
+        verilog: fresh::<skylux_rtl::bvh::BvhTraversal>,
+    },
 ];
 
 /// The checked-in copy of the whole core that the Quartus project compiles

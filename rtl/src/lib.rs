@@ -5,6 +5,7 @@
 
 pub mod avalon;
 pub mod bayer;
+pub mod bvh;
 pub mod capture;
 pub mod core;
 pub mod dma;

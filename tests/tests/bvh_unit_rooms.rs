@@ -98,10 +98,13 @@ fn check_room(
     let stats = &unit.bvh_unit().unwrap().stats;
     let rays = stats.rays.load(Ordering::Relaxed);
     println!(
-        "unit rays {rays}, candidates {}, refused {}, failed {}",
+        "unit rays {rays}, candidates {}, refused {}, failed {}, primitives {}, closest rays {} primitives {}",
         stats.candidates.load(Ordering::Relaxed),
         stats.refused.load(Ordering::Relaxed),
-        stats.failed.load(Ordering::Relaxed)
+        stats.failed.load(Ordering::Relaxed),
+        stats.primitives.load(Ordering::Relaxed),
+        stats.closest_rays.load(Ordering::Relaxed),
+        stats.closest_primitives.load(Ordering::Relaxed),
     );
     assert!(rays > min_unit_rays, "{rays}");
     assert_eq!(stats.refused.load(Ordering::Relaxed), 0);

@@ -15,9 +15,9 @@ use skylux_regmap::raybox_format::COORD_BITS;
 use std::path::{Path, PathBuf};
 
 /// Clock of the fabric (`sys.clock_hz`) and of the Cortex-A9 (hardware-facts.md §2).
-const FABRIC_HZ: f64 = skylux_regmap::SYS_CLOCK_HZ as f64;
-const A9_HZ: f64 = 925e6;
-const A9_CORES: f64 = 2.0;
+pub(crate) const FABRIC_HZ: f64 = skylux_regmap::SYS_CLOCK_HZ as f64;
+pub(crate) const A9_HZ: f64 = 925e6;
+pub(crate) const A9_CORES: f64 = 2.0;
 /// Cortex-A9 cycles per f64 slab test (`bench_raybox::A9_CYCLES_PER_TEST`, an estimate from
 /// the operation mix).
 const A9_CYCLES_PER_BOX: f64 = 60.0;
@@ -30,7 +30,7 @@ const A9_CYCLES_PER_LEAF: f64 = 10.0;
 /// **Estimate**: one exact primitive test in f64 (a polygon: plane distance, one VDIV.F64 of
 /// 20 held cycles, and an inside test over its edges; about 40 VFP operations, which the
 /// A9's single VFP issue slot takes at one to two cycles each: `timing::a9`).
-const A9_CYCLES_PER_PRIMITIVE: f64 = 120.0;
+pub(crate) const A9_CYCLES_PER_PRIMITIVE: f64 = 120.0;
 /// How the HPS hands a query to the unit.
 #[derive(Copy, Clone, Debug)]
 enum RayInterface {
@@ -67,10 +67,10 @@ impl RayInterface {
 
 /// **Estimate**: the HPS's part of reading back one candidate (decode, compare its entry with
 /// the best hit).
-const A9_CYCLES_PER_CANDIDATE_READ: f64 = 10.0;
+pub(crate) const A9_CYCLES_PER_CANDIDATE_READ: f64 = 10.0;
 /// Cached streaming over the DMA buffer, bytes per second (`timing::a9::DRAM_STREAM_BYTES_PER_S`,
 /// the udmabuf mapping with explicit maintenance, bitstream/README.md).
-const A9_STREAM_BYTES_PER_S: f64 = skylux_hps::timing::a9::DRAM_STREAM_BYTES_PER_S;
+pub(crate) const A9_STREAM_BYTES_PER_S: f64 = skylux_hps::timing::a9::DRAM_STREAM_BYTES_PER_S;
 /// Port beats (64-bit, one a clock for reads and writes together on f2sdram, hardware-facts.md
 /// §3.2) per query: the ray ([`RayInterface::beats`]) and an end marker; one beat per
 /// candidate (primitive index, conservative entry distance).
@@ -97,14 +97,14 @@ const LANE_ALM_BUDGET: f64 = 0.6 * 32_070.0 - 5_464.0 - 1_757.0;
 const LANE_DSP_BUDGET: u64 = 87 - 7;
 
 /// One room of the comparison: where it is, its scene files, its points.
-struct BenchRoom {
-    name: &'static str,
+pub(crate) struct BenchRoom {
+    pub(crate) name: &'static str,
     dir: PathBuf,
     scene: &'static [&'static str],
     points: &'static str,
 }
 
-fn rooms() -> Vec<BenchRoom> {
+pub(crate) fn bench_rooms() -> Vec<BenchRoom> {
     let shared = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared");
     vec![
         BenchRoom {
@@ -120,6 +120,22 @@ fn rooms() -> Vec<BenchRoom> {
             points: "points.txt",
         },
     ]
+}
+
+/// A bench room's scene (with [`SKY`]) and its sensors.
+pub(crate) fn load_room(room: &BenchRoom) -> anyhow::Result<(scene::Scene, Vec<scene::Sensor>)> {
+    let options = scene::LoadOptions {
+        working_directory: Some(room.dir.clone()),
+        ..Default::default()
+    };
+    let mut s = scene::Scene::new();
+    for f in room.scene {
+        s.add_file_with(room.dir.join(f), &options)
+            .with_context(|| format!("{}: {f}", room.name))?;
+    }
+    s.add_bytes("sky.rad", SKY.as_bytes())?;
+    let sensors = scene::load_sensors(room.dir.join(room.points))?;
+    Ok((s, sensors))
 }
 
 /// The sky of the counts: a sun 50° up in the south-east and uniform sky and ground glows.
@@ -196,7 +212,7 @@ fn per_query(c: &TraversalCounts) -> (f64, f64, f64, f64) {
 }
 
 /// A9 software cycles per query of `c` (the engine's tree).
-fn a9_cycles(c: &TraversalCounts) -> f64 {
+pub(crate) fn a9_cycles(c: &TraversalCounts) -> f64 {
     let (root, pairs, leaves, prims) = per_query(c);
     root * A9_CYCLES_PER_BOX
         + pairs * (2.0 * A9_CYCLES_PER_BOX + A9_CYCLES_PER_NODE)
@@ -278,18 +294,8 @@ fn project(s: &TraversalStats, interface: RayInterface) -> Projection {
 /// The counts and the projection for every bench room, `paths` paths a sensor.
 pub fn run(paths: u32) -> anyhow::Result<serde_json::Value> {
     let mut out = Vec::new();
-    for room in rooms() {
-        let options = scene::LoadOptions {
-            working_directory: Some(room.dir.clone()),
-            ..Default::default()
-        };
-        let mut s = scene::Scene::new();
-        for f in room.scene {
-            s.add_file_with(room.dir.join(f), &options)
-                .with_context(|| format!("{}: {f}", room.name))?;
-        }
-        s.add_bytes("sky.rad", SKY.as_bytes())?;
-        let sensors = scene::load_sensors(room.dir.join(room.points))?;
+    for room in bench_rooms() {
+        let (s, sensors) = load_room(&room)?;
         let settings = Settings {
             samples_per_sensor: paths,
             ..Settings::default()

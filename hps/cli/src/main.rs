@@ -7,6 +7,7 @@ mod bench_illuminance;
 mod bench_loop;
 mod bench_raybox;
 mod bench_raybox_traversal;
+mod bench_raybox_unit;
 mod bench_render;
 mod calibrate;
 mod closure;

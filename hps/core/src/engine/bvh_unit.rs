@@ -199,6 +199,9 @@ pub struct BvhUnitStats {
     pub failed: AtomicU64,
     /// Primitives the HPS tested exactly for the rays the unit answered.
     pub primitives: AtomicU64,
+    /// Of those: closest-hit rays, and the primitives tested for them.
+    pub closest_rays: AtomicU64,
+    pub closest_primitives: AtomicU64,
 }
 
 /// The unit with its loaded tree.
@@ -319,6 +322,10 @@ impl BvhUnit {
             }
         }
         self.stats.primitives.fetch_add(tested, Ordering::Relaxed);
+        self.stats.closest_rays.fetch_add(1, Ordering::Relaxed);
+        self.stats
+            .closest_primitives
+            .fetch_add(tested, Ordering::Relaxed);
         best
     }
 

@@ -133,6 +133,8 @@ struct Counter {
     crossed_seen: AtomicU64,
     closest_samples: Mutex<Vec<Sample>>,
     crossed_samples: Mutex<Vec<Sample>>,
+    /// Off while the openings are searched: only the illuminance run's traversals count.
+    counting: std::sync::atomic::AtomicBool,
 }
 
 impl Counter {
@@ -158,6 +160,9 @@ struct CountingBoxTest(Arc<Counter>);
 impl BoxTest for CountingBoxTest {
     fn hits(&self, ray: &RayBoxQuery, boxes: &[Aabb], entry_m: &mut [f64]) {
         SlabTest.hits(ray, boxes, entry_m);
+        if !self.0.counting.load(Ordering::Relaxed) {
+            return;
+        }
         let (tally, sampled) = self.0.tallies();
         for t in std::iter::once(tally).chain(sampled) {
             match boxes.len() {
@@ -169,6 +174,9 @@ impl BoxTest for CountingBoxTest {
 
     fn traversal_begins(&self, kind: TraversalKind, ray: &Ray, t_min_m: f64, t_max_m: f64) {
         let c = &self.0;
+        if !c.counting.load(Ordering::Relaxed) {
+            return;
+        }
         let (tally, seen, samples, sampled_tally) = match kind {
             TraversalKind::Closest => (
                 &c.closest,
@@ -197,6 +205,9 @@ impl BoxTest for CountingBoxTest {
     }
 
     fn leaf_reached(&self, primitives: usize) {
+        if !self.0.counting.load(Ordering::Relaxed) {
+            return;
+        }
         let (tally, sampled) = self.0.tallies();
         for t in std::iter::once(tally).chain(sampled) {
             t.leaves.fetch_add(1, Ordering::Relaxed);
@@ -217,6 +228,7 @@ pub fn measure(
     let mut world = World::with_box_test(scene, Box::new(CountingBoxTest(counter.clone())))?;
     let points: Vec<_> = sensors.iter().map(|s| s.position_m).collect();
     super::openings::add_openings(&mut world, &points);
+    counter.counting.store(true, Ordering::Relaxed);
     super::illuminance(&world, sensors, settings, &|_, _| {})?;
     let unit_tree = Bvh::build_with_leaf_size(&world.primitive_bounds(), 1);
     let unit = Arc::new(Counter::default());
