@@ -27,6 +27,11 @@ pub struct ApiState {
     /// Successful cycles per place their HDR map was made (`fabric`: the fabric's map;
     /// `hps`: raw frames merged on the HPS).
     pub cycles_by_hdr: std::collections::BTreeMap<String, u64>,
+    /// Successful cycles per place their sun came from (`fabric`: the accumulators; `hps`:
+    /// the scan of the map).
+    pub cycles_by_sun_source: std::collections::BTreeMap<String, u64>,
+    /// Map-mode cycles whose sun fell back to the scan, per reason (`SunFallback::tag`).
+    pub sun_fallbacks_by_reason: std::collections::BTreeMap<String, u64>,
     /// Failures per kind (`sensor_absent`, `output`, ...).
     pub failures_by_kind: std::collections::BTreeMap<String, u64>,
     /// Successful cycles whose record carried each plausibility flag.
@@ -177,6 +182,27 @@ fn metrics(s: &ApiState) -> String {
         s.cycles_by_hdr
             .iter()
             .map(|(k, v)| (format!("{{hdr=\"{k}\"}}"), *v as f64))
+            .collect(),
+    );
+    put(
+        "skyluxd_sun_source_total",
+        "counter",
+        "Successful cycles by where their sun came from (fabric: the fabric's accumulators; \
+         hps: the HPS's scan of the map).",
+        s.cycles_by_sun_source
+            .iter()
+            .map(|(k, v)| (format!("{{source=\"{k}\"}}"), *v as f64))
+            .collect(),
+    );
+    put(
+        "skyluxd_sun_fabric_fallbacks_total",
+        "counter",
+        "Map-mode cycles whose sun came from the HPS's scan instead of the accumulators, by \
+         reason (not_armed, none, saturated, undersampled, scattered, not_measurable; faults: \
+         bus, unsettled, stale, inconsistent).",
+        s.sun_fallbacks_by_reason
+            .iter()
+            .map(|(k, v)| (format!("{{reason=\"{k}\"}}"), *v as f64))
             .collect(),
     );
     put(

@@ -21,15 +21,27 @@
 //!   data (valid exposures per group, the sun's components and boxes) are taken from the same
 //!   case the measurement runs. One core, and the daemon's two (rayon spreads the merge and
 //!   the coefficient update). Nothing here ran on the board.
+//!
+//! Map mode (the default) replaces three stages of the raw path: the read of five raw frames,
+//! the merge, and the HPS's scan of the map for the sun, which becomes the accumulators'
+//! registers and the arithmetic on their sums (`timing::a9::sun_fabric`; the arithmetic and
+//! the background's ring are also measured here on a representative disk, the bridge accesses
+//! cannot be). The scan stays in the output as the figure of a cycle whose accumulators gave
+//! nothing to believe (`sun_fallback`: no sun in the window, a saturated disk, a fault).
 
 use skylux_bus::{BusError, DmaMemory};
 use skylux_hps::campaign::BayerPattern;
 use skylux_hps::fpga::frames::RingLayout;
 use skylux_hps::fpga::sensor::SensorConfig;
 use skylux_hps::hdr::{merge, ExposureFrame, GroupParams, MapFlag};
+use skylux_hps::sun::{
+    check_sums, fabric_background_cd_m2, sun_from_fabric, FabricSunSearch, SunExposure,
+    SOLAR_DISK_SR,
+};
 use skylux_hps::timing::a9::{self, HdrWork, Stage, SunWork};
 use skylux_hps::timing::median_ms;
 use skylux_regmap::descriptor::{self, Descriptor};
+use skylux_regmap::sun_values::{SunConfig, SunSums};
 use skylux_regmap::words::raw;
 use skylux_sim::hdr_case::{HdrCase, EXPOSURES_S, HEIGHT_PX, WIDTH_PX};
 
@@ -85,26 +97,44 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
     let a9_one_core_s: f64 = stages.iter().map(|(s, _)| s.seconds(1)).sum();
     let a9_processing_s: f64 = stages.iter().map(|(s, _)| s.seconds(a9::CORES)).sum();
     let capture_s = capture.capture_ms / 1e3;
-    let map = MapMode::model(&stages, &processing.hdr_work);
+    let fabric_sun = &processing.sun_fabric;
+    let map = MapMode::model(
+        &stages,
+        &processing.hdr_work,
+        a9::sun_fabric(
+            fabric_sun.ring_box_groups,
+            fabric_sun.ring_values,
+            fabric_sun.limb_groups,
+        ),
+    );
     let a9_map_processing_s = map.processing_s(&map.uncached, a9::CORES);
     let a9_map_one_core_s = map.processing_s(&map.uncached, 1);
     let a9_map_cached_processing_s = map.processing_s(&map.cached, a9::CORES);
     let a9_cycle_s = capture_s + a9_map_processing_s;
+    // A map-mode cycle whose sun falls back to the HPS's scan.
+    let a9_map_scan_processing_s = map.processing_with_scan_s(&map.uncached, a9::CORES);
+    let a9_sun_fabric_ms = map.uncached[2].seconds(a9::CORES) * 1e3;
+    let a9_sun_hps_scan_ms = stages[2].0.seconds(a9::CORES) * 1e3;
     let raw_processing_s = a9_processing_s;
     let raw_one_core_s = a9_one_core_s;
     let stage_json = raw_stages_json(&stages);
     let map_mode_json = serde_json::json!({
         "a9_stages": map_stages_json(&map.uncached),
         "a9_stages_cached_read": map_stages_json(&map.cached),
-        "replaces": ["hps_read", "hdr_merge"],
+        "replaces": ["hps_read", "hdr_merge", "sun_extraction"],
+        "a9_sun_fabric_ms": a9_sun_fabric_ms,
+        "a9_sun_hps_scan_ms": a9_sun_hps_scan_ms,
+        "a9_processing_hps_sun_scan_s": a9_map_scan_processing_s,
+        "a9_cycle_hps_sun_scan_s": capture_s + a9_map_scan_processing_s,
         "a9_processing_s": a9_map_processing_s,
         "a9_processing_one_core_s": a9_map_one_core_s,
         "a9_cycle_s": a9_cycle_s,
         "a9_processing_cached_read_s": a9_map_cached_processing_s,
         "a9_cycle_cached_read_s": capture_s + a9_map_cached_processing_s,
         "provenance": "modelled: skylux_hps::timing::a9 (hps_read_map, hps_read_map_cached, \
-                       hdr_fabric_map; the latter's per-group costs and the invalidation \
-                       estimated), not measured",
+                       hdr_fabric_map, sun_fabric; hdr_fabric_map's per-group costs, the \
+                       invalidation, sun_fabric's bridge accesses and arithmetic estimated), \
+                       not measured",
     });
     // Raw captures (`hdr = "hps"`, or a raw capture on its cadence): five raw frames read
     // and merged on the HPS; the stages measured here and modelled.
@@ -124,6 +154,14 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
             "valid_groups": processing.hdr_work.valid_groups,
         },
         "sun_extraction": sun_work_json(&processing.sun_work),
+        "sun_fabric": {
+            "disk_box_groups": [fabric_sun.side, fabric_sun.side],
+            "ring_box_groups": fabric_sun.ring_box_groups,
+            "ring_values": fabric_sun.ring_values,
+            "limb_groups": fabric_sun.limb_groups,
+            "register_accesses": a9::sun_fabric::REGISTER_ACCESSES,
+            "lw_bridge_access_s_estimate": a9::LW_BRIDGE_ACCESS_S,
+        },
         "dc_update": {"sensors": processing.dc_sensors, "bins": processing.dc_bins},
     });
     let a9_machine_json = serde_json::json!({
@@ -162,6 +200,9 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
         "hps_read_5_frames_ms": read.ms,
         "hdr_5_frames_one_core_ms": processing.hdr_ms,
         "sun_extraction_ms": processing.sun_ms,
+        // The sun from the accumulators' sums: the arithmetic and the background's ring
+        // (the bridge accesses are the A9 model's only).
+        "sun_fabric_here_ms": fabric_sun.ms,
         "dc_update_400_sensors_sky_and_ground_ms": processing.dc_ms,
         "dc_update_400_sensors_sky_only_ms": processing.dc_sky_ms,
         "sky_patches": processing.sky_patches,
@@ -174,6 +215,11 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
         "a9_cycle_s": a9_cycle_s,
         "a9_cycle_one_core_s": capture_s + a9_map_one_core_s,
         "a9_cycle_cached_read_s": capture_s + a9_map_cached_processing_s,
+        // The sun stage of the default design (the accumulators) and of a cycle that falls
+        // back to the HPS's scan of the map, and that cycle.
+        "a9_sun_ms": a9_sun_fabric_ms,
+        "a9_sun_hps_scan_ms": a9_sun_hps_scan_ms,
+        "a9_cycle_hps_sun_scan_s": capture_s + a9_map_scan_processing_s,
         "target_cycle_s": TARGET_CYCLE_S,
         "fabric_map_mode": map_mode_json,
         "raw_mode": raw_mode_json,
@@ -195,46 +241,62 @@ pub fn run(json: bool, repeat: usize) -> anyhow::Result<()> {
         print_table(&capture, &stages, measured, a9_one_core_s, a9_processing_s);
         eprintln!(
             "map mode (the default), A9 two cores: processing {:.0} ms, cycle {:.0} ms with the \
-             map read uncached; {:.0} ms and {:.0} ms read cached (u-dma-buf)",
+             map read uncached; {:.0} ms and {:.0} ms read cached (u-dma-buf); the sun {:.2} \
+             ms from the accumulators ({:.3} ms of it here), {:.0} ms when the HPS scans the \
+             map (cycle {:.0} ms)",
             a9_map_processing_s * 1e3,
             a9_cycle_s * 1e3,
             a9_map_cached_processing_s * 1e3,
-            (capture_s + a9_map_cached_processing_s) * 1e3
+            (capture_s + a9_map_cached_processing_s) * 1e3,
+            a9_sun_fabric_ms,
+            fabric_sun.ms,
+            a9_sun_hps_scan_ms,
+            (capture_s + a9_map_scan_processing_s) * 1e3
         );
     }
     Ok(())
 }
 
 /// Map mode (`[fabric] hdr = "fabric"`, the default): the fabric's map replaces the five raw
-/// frames' read and the merge; modelled only (no x86 measurement of it here). The map is read
-/// through the mapping `[hardware]` names: uncached (`/dev/mem`, the example) or cached with
-/// explicit maintenance (`dma_device`, u-dma-buf).
+/// frames' read and the merge, and its sun accumulators the scan of the map; modelled only
+/// (but for the sun's arithmetic, no x86 measurement of it here). The map is read through the
+/// mapping `[hardware]` names: uncached (`/dev/mem`, the example) or cached with explicit
+/// maintenance (`dma_device`, u-dma-buf).
 struct MapMode {
     /// The raw path's stages (read, merge, sun, coefficients), which the map's replace in part.
     raw: Vec<Stage>,
-    uncached: [Stage; 2],
-    cached: [Stage; 2],
+    /// The map's read, its conversion, the sun from the accumulators.
+    uncached: [Stage; 3],
+    cached: [Stage; 3],
 }
 
 impl MapMode {
-    fn model(raw: &[(Stage, f64); 4], w: &HdrWork) -> Self {
+    fn model(raw: &[(Stage, f64); 4], w: &HdrWork, sun: Stage) -> Self {
         MapMode {
             raw: raw.iter().map(|(s, _)| s.clone()).collect(),
             uncached: [
                 a9::hps_read_map(w.groups),
                 a9::hdr_fabric_map(w.groups, w.valid_groups),
+                sun.clone(),
             ],
             cached: [
                 a9::hps_read_map_cached(w.groups),
                 a9::hdr_fabric_map(w.groups, w.valid_groups),
+                sun,
             ],
         }
     }
 
-    /// The processing with `map`'s stages instead of the raw read and the merge.
+    /// The processing with `map`'s stages instead of the raw read, the merge and the scan.
     fn processing_s(&self, map: &[Stage], cores: u32) -> f64 {
         let sum = |stages: &[Stage]| stages.iter().map(|s| s.seconds(cores)).sum::<f64>();
-        sum(&self.raw) - sum(&self.raw[..2]) + sum(map)
+        sum(&self.raw[3..]) + sum(map)
+    }
+
+    /// The same with the HPS's scan for the sun instead of the accumulators.
+    fn processing_with_scan_s(&self, map: &[Stage], cores: u32) -> f64 {
+        let sum = |stages: &[Stage]| stages.iter().map(|s| s.seconds(cores)).sum::<f64>();
+        sum(&self.raw[2..]) + sum(&map[..2])
     }
 }
 
@@ -386,6 +448,7 @@ impl CaptureModel {
             poll_pause: std::time::Duration::from_millis(1),
             active_origin: (16, 54),
             map: None,
+            sun: None,
         };
         let exposure_ms: Vec<f64> = exposures_us
             .iter()
@@ -484,8 +547,125 @@ struct Processing {
     sky_patches: usize,
     hdr_work: HdrWork,
     sun_work: SunWork,
+    sun_fabric: FabricSunCase,
     dc_sensors: usize,
     dc_bins: usize,
+}
+
+/// The sun from the accumulators on the bench's map: a disk at the lens's centre, as many
+/// groups wide as the solar disk covers there plus one group of blur on either side, at a
+/// hundred times the threshold, summed as the fabric would sum it; the background from the
+/// ring around it in the merged map. The log-ramp map has no disk of its own (its bright end
+/// is a third of the frame), and the work depends on the box's size, not on the values.
+struct FabricSunCase {
+    search: FabricSunSearch,
+    exposure: SunExposure,
+    config: SunConfig,
+    sums: SunSums,
+    /// Groups per side of the box.
+    side: usize,
+    /// The work of `fabric_background_cd_m2` (as `extraction_work` counts its ring).
+    ring_box_groups: f64,
+    ring_values: f64,
+    /// The groups `FabricSun::with_limb` walks: the box dilated by two, less the box.
+    limb_groups: f64,
+    /// Measured here: the source's search and settings, the check, the background, the sun
+    /// and its limb.
+    ms: f64,
+}
+
+impl FabricSunCase {
+    fn new(case: &HdrCase, map: &skylux_hps::hdr::LuminanceMap) -> anyhow::Result<Self> {
+        let g = &case.geometry;
+        let (w, h) = (g.width, g.height);
+        let (cx, cy) = (w / 2, h / 2);
+        let centre = g.direction[cy * w + cx].as_dvec3();
+        let group_sr = f64::from(g.solid_angle_sr[cy * w + cx]);
+        let side = (SOLAR_DISK_SR / group_sr).sqrt().ceil() as usize + 2;
+        let exposure = SunExposure {
+            exposure_s: EXPOSURES_S[0],
+            gain: 1.0,
+        };
+        let search = FabricSunSearch::around(
+            centre,
+            skylux_hps::model::SUN_MAX_OFFSET_DEG,
+            &case.camera,
+            &case.readout,
+        )
+        .ok_or_else(|| anyhow::anyhow!("the lens's centre is outside the lens"))?;
+        let config = search.config(&case.camera, &case.readout, (w, h), &exposure)?;
+        let l = 100 * config.threshold_q14;
+        let (x0, y0) = (cx - side / 2, cy - side / 2);
+        let (x1, y1) = (x0 + side - 1, y0 + side - 1);
+        let mut sums = SunSums {
+            max_l: l,
+            min_x: x0 as u16,
+            max_x: x1 as u16,
+            min_y: y0 as u16,
+            max_y: y1 as u16,
+            ..SunSums::default()
+        };
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                sums.count += 1;
+                sums.sum_l += u64::from(l);
+                sums.sum_xl += x as u64 * u64::from(l);
+                sums.sum_yl += y as u64 * u64::from(l);
+            }
+        }
+        check_sums(&config, &sums).map_err(|e| anyhow::anyhow!("the bench's sums: {e}"))?;
+        // The ring `fabric_background_cd_m2` takes: 2 to 5 groups outside the box.
+        let (mut ring_box_groups, mut ring_values) = (0.0, 0.0);
+        for y in y0.saturating_sub(5)..=(y1 + 5).min(h - 1) {
+            for x in x0.saturating_sub(5)..=(x1 + 5).min(w - 1) {
+                ring_box_groups += 1.0;
+                let i = y * w + x;
+                let outside = x + 2 < x0 || x > x1 + 2 || y + 2 < y0 || y > y1 + 2;
+                if outside && g.direction[i].is_finite() && map.flags[i] == MapFlag::Valid {
+                    ring_values += 1.0;
+                }
+            }
+        }
+        let dilated =
+            |lo: usize, hi: usize, n: usize| (hi + 2).min(n - 1) - lo.saturating_sub(2) + 1;
+        let limb_groups = (dilated(x0, x1, w) * dilated(y0, y1, h) - side * side) as f64;
+        Ok(Self {
+            search,
+            exposure,
+            config,
+            sums,
+            side,
+            ring_box_groups,
+            ring_values,
+            limb_groups,
+            ms: 0.0,
+        })
+    }
+
+    /// What the source and the cycle compute for one capture.
+    fn run(&self, case: &HdrCase, map: &skylux_hps::hdr::LuminanceMap) -> f64 {
+        let (w, h) = (case.geometry.width, case.geometry.height);
+        let search = FabricSunSearch::around(
+            self.search.predicted_direction,
+            skylux_hps::model::SUN_MAX_OFFSET_DEG,
+            &case.camera,
+            &case.readout,
+        );
+        let config = search.map(|s| s.config(&case.camera, &case.readout, (w, h), &self.exposure));
+        let checked = check_sums(&self.config, &self.sums).is_ok();
+        let background = fabric_background_cd_m2(map, &case.geometry, &self.sums);
+        let sun = sun_from_fabric(
+            &self.sums,
+            &self.search,
+            &case.camera,
+            &case.readout,
+            &self.exposure,
+            background,
+        )
+        .map(|s| s.with_limb(map, &case.geometry, &self.sums));
+        std::hint::black_box((config, checked));
+        sun.map_or(f64::NAN, |s| s.direct_normal_illuminance_lux)
+    }
 }
 
 fn processing(repeat: usize) -> anyhow::Result<Processing> {
@@ -511,6 +691,13 @@ fn processing(repeat: usize) -> anyhow::Result<Processing> {
     });
     let sun_work = skylux_hps::sun::extraction_work(&map, &case.geometry, &search);
 
+    // The sun from the accumulators' sums, on the same map.
+    let mut sun_fabric = FabricSunCase::new(&case, &map)?;
+    let fabric_ms = median_ms(repeat.max(11), || {
+        std::hint::black_box(sun_fabric.run(&case, &map));
+    });
+    sun_fabric.ms = fabric_ms;
+
     // Daylight-coefficient update, 400 sensors, MF4.
     let case = skylux_sim::dc_case::DcCase::new();
     let (dc, lum) = (&case.dc, &case.luminance_cd_m2);
@@ -527,6 +714,7 @@ fn processing(repeat: usize) -> anyhow::Result<Processing> {
         sky_patches: case.sky_patches,
         hdr_work,
         sun_work,
+        sun_fabric,
         dc_sensors: dc.sensors.len(),
         dc_bins: dc.bins,
     })

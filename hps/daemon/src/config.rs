@@ -543,6 +543,12 @@ pub enum FaultKind {
     /// The f2sdram port holds waitrequest during the first frame longer than the driver's
     /// `dma.bus_timeout`: the DMA's sticky `BUS_TIMEOUT`.
     DmaBusTimeout,
+    /// The sun accumulators' result registers read all ones (map mode: the cycle must not
+    /// believe them, and scans the map for the sun).
+    SunGarbage,
+    /// The sun accumulators do not count the capture's frames: their sums are the last
+    /// capture's (map mode: caught by `sun.frames`, the map is scanned instead).
+    SunStale,
 }
 
 /// How far a `clock_back` fault steps the simulated clock back, seconds.
@@ -567,6 +573,8 @@ impl FaultKind {
             Self::BadChecksum => "bad_checksum",
             Self::OutOfOrder => "out_of_order",
             Self::DmaBusTimeout => "dma_bus_timeout",
+            Self::SunGarbage => "sun_garbage",
+            Self::SunStale => "sun_stale",
         }
     }
 

@@ -12,11 +12,18 @@
 //! as read back from that file (float32), so a cache hit and a fresh computation give
 //! bit-identical results.
 //!
+//! In map mode the sun comes from the fabric's accumulators when they measured it
+//! (`sun::sun_from_fabric`, the background from a ring of the map around their box, the
+//! blurred limb below their threshold from the map's groups just around it,
+//! `FabricSun::with_limb`): the model takes it as found instead of scanning the map. When they did not (not armed, no
+//! group at the threshold, a saturated disk, a fault on `sun.*`) the model scans the map as
+//! for a raw capture, and the record says which (`sun_source`, `sun_fallback`).
+//!
 //! With `[[views]]` declared, the cycle also reports glare at each occupant view under the
 //! same measured sky (`views.rs`), within the cycle's time budget.
 
 use crate::config::Config;
-use crate::source::CaptureSet;
+use crate::source::{CaptureSet, SunFallback};
 use crate::views::{evaluate_views, RenderRates, ViewGlare, ViewRequest, ViewsOutcome};
 use crate::window_states::{WindowStateRecord, WindowStates};
 use chrono::{Datelike, Utc};
@@ -31,11 +38,21 @@ use skylux_hps::model::{
 };
 use skylux_hps::numerics::fnv::{fnv1a, FNV1A_OFFSET};
 use skylux_hps::picture::Picture;
-use skylux_hps::sun::{solar_position, Site};
+use skylux_hps::sun::{
+    fabric_background_cd_m2, solar_position, sun_from_fabric, ExtractedSun, NoSun, Site, SunFlag,
+    SOLAR_DISK_SR,
+};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
+
+/// The accumulators' box may span this many solar-disk diameters plus
+/// [`SCATTER_MARGIN_GROUPS`] before its groups are taken for scattered noise rather than the
+/// disk and its limb: the lens blur widens the disk by about a group on each side
+/// (`SunSearch::dilation_groups`, two, covers it with a margin).
+const SCATTER_LIMIT_DISKS: f64 = 2.0;
+const SCATTER_MARGIN_GROUPS: f64 = 4.0;
 
 /// Held while a daylight-coefficient matrix is written to the cache and renamed into place.
 static DC_WRITE: Mutex<()> = Mutex::new(());
@@ -155,12 +172,31 @@ pub struct SunRecord {
     pub missing_reason: Option<String>,
 }
 
+/// Why a map-mode cycle's sun is the HPS's scan, not the accumulators'.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct SunFallbackRecord {
+    /// A short stable tag (`SunFallback::tag`): `not_armed`, `bus`, `unsettled`, `stale`,
+    /// `inconsistent`, `none`, `saturated`, `undersampled`, `scattered`, `not_measurable`.
+    pub reason: String,
+    pub detail: String,
+}
+
+impl From<&SunFallback> for SunFallbackRecord {
+    fn from(f: &SunFallback) -> Self {
+        Self {
+            reason: f.tag.to_string(),
+            detail: f.detail.clone(),
+        }
+    }
+}
+
 /// How long each stage took, milliseconds.
 #[derive(Clone, Debug, Default, Serialize, Deserialize, PartialEq)]
 pub struct StageDurations {
     pub capture_ms: f64,
     pub hdr_ms: f64,
-    /// SPA position.
+    /// SPA position, and in map mode the sun from the fabric's accumulators (the scan of the
+    /// map, when there is one, is in `terms_ms`).
     pub sun_ms: f64,
     /// Sun extraction, sky and ground patches times daylight coefficients, sun coefficients.
     pub terms_ms: f64,
@@ -189,6 +225,14 @@ pub struct CycleRecord {
     /// `hps` (raw frames merged here; the capture can be kept in campaign format).
     #[serde(default = "hdr_hps")]
     pub hdr: String,
+    /// Where the sun came from: `fabric` (the fabric's accumulators, map mode) or `hps` (the
+    /// HPS's scan of the map: every raw capture, and a map whose accumulators gave nothing
+    /// to believe, `sun_fallback`).
+    #[serde(default = "hdr_hps")]
+    pub sun_source: String,
+    /// Map mode with the sun from the HPS's scan: why not from the accumulators.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sun_fallback: Option<SunFallbackRecord>,
     pub sun: SunRecord,
     /// Illuminance per sensor through the daylight coefficients, lux.
     pub illuminance: Vec<SensorLux>,
@@ -239,6 +283,8 @@ impl CycleRecord {
             sequence: 1,
             source: source.into(),
             hdr: hdr_hps(),
+            sun_source: hdr_hps(),
+            sun_fallback: None,
             sun: SunRecord {
                 spa_altitude_deg: 40.0,
                 spa_azimuth_deg: 180.0,
@@ -479,6 +525,28 @@ impl Pipeline {
         let t = Instant::now();
         let spa = solar_position(set.time.with_timezone(&Utc), &self.site, None)
             .map_err(|e| CycleError::Sun(e.to_string()))?;
+        // Map mode: the sun the accumulators measured, if it can be believed.
+        let fabric_sun = set
+            .fabric_map
+            .as_ref()
+            .map(|m| self.fabric_sun(set, m, &map));
+        let sun_fallback = match &fabric_sun {
+            Some(Err(f)) => {
+                if matches!(f.tag, "bus" | "unsettled" | "stale" | "inconsistent") {
+                    tracing::warn!(reason = f.tag, detail = %f.detail, "sun accumulators: fault, the HPS scans the map");
+                } else {
+                    tracing::debug!(reason = f.tag, detail = %f.detail, "sun accumulators: the HPS scans the map");
+                }
+                Some(SunFallbackRecord::from(f))
+            }
+            _ => None,
+        };
+        let measured_sun = fabric_sun.and_then(Result::ok);
+        let sun_source = if measured_sun.is_some() {
+            "fabric"
+        } else {
+            "hps"
+        };
         let sun_ms = ms(t);
 
         // Terms and prediction: the offline pipeline's functions.
@@ -490,6 +558,7 @@ impl Pipeline {
             raw_width,
             raw_height,
             spa_sun: spa.direction(),
+            sun: measured_sun,
         }];
         let terms = capture_terms(&mut self.room, &data, &self.device, &|_, _| {})
             .map_err(|e| CycleError::Model(e.to_string()))?;
@@ -550,6 +619,8 @@ impl Pipeline {
             } else {
                 hdr_hps()
             },
+            sun_source: sun_source.into(),
+            sun_fallback,
             sun: sun_record(&spa, &terms),
             illuminance: sensor_lux(&self.room.sensors, &lux),
             monte_carlo,
@@ -604,6 +675,93 @@ impl Pipeline {
             view_pictures: outcome.pictures,
             state_view_pictures,
         })
+    }
+
+    /// The sun from the accumulators' sums of a map-mode capture, with the circumsolar
+    /// background from the map, as the model takes an extracted one; or why not.
+    fn fabric_sun(
+        &self,
+        set: &CaptureSet,
+        capture: &crate::source::FabricMapCapture,
+        map: &LuminanceMap,
+    ) -> Result<ExtractedSun, SunFallback> {
+        let reading = capture.sun.as_ref().map_err(Clone::clone)?;
+        let Some((_, geometry)) = &self.geometry else {
+            return Err(SunFallback::new("not_measurable", "no group geometry"));
+        };
+        let sums = &reading.sums;
+        if let Some((cx, cy)) = sums.centroid() {
+            let (x, y) = (cx.round() as usize, cy.round() as usize);
+            let group_sr = geometry
+                .solid_angle_sr
+                .get(y * map.width + x)
+                .map_or(f64::NAN, |&w| f64::from(w));
+            // As `extract_sun` refuses a disk a skipping readout cannot measure.
+            let coarse = group_sr.is_nan() || group_sr > SOLAR_DISK_SR / 4.0;
+            if geometry.fill_factor < 1.0 && coarse {
+                return Err(SunFallback::new(
+                    "undersampled",
+                    format!(
+                        "the readout integrates {:.0} % of each group's cell and the cells are \
+                         not much smaller than the solar disk",
+                        100.0 * geometry.fill_factor
+                    ),
+                ));
+            }
+            // The disk and its blurred limb span a few groups; groups counted far beyond them
+            // are noise or another source in the window, and would move the centroid.
+            let disk_groups = (SOLAR_DISK_SR / group_sr).sqrt().max(1.0);
+            let extent = sums
+                .max_x
+                .saturating_sub(sums.min_x)
+                .max(sums.max_y.saturating_sub(sums.min_y))
+                + 1;
+            // (NaN, from a centroid off the geometry, is not within.)
+            let within =
+                f64::from(extent) <= SCATTER_LIMIT_DISKS * disk_groups + SCATTER_MARGIN_GROUPS;
+            if !within {
+                return Err(SunFallback::new(
+                    "scattered",
+                    format!(
+                        "{} groups counted over {extent} groups, the disk spans {disk_groups:.1}",
+                        sums.count
+                    ),
+                ));
+            }
+        }
+        let background = fabric_background_cd_m2(map, geometry, &reading.sums);
+        let sun = sun_from_fabric(
+            &reading.sums,
+            &reading.search,
+            &self.camera,
+            &set.config.readout,
+            &reading.exposure,
+            background,
+        )
+        .map_err(|e| match e {
+            NoSun::BelowThreshold { .. } => SunFallback::new("none", e.to_string()),
+            e => SunFallback::new("not_measurable", e.to_string()),
+        })?
+        .with_limb(map, geometry, sums);
+        if sun.flags.contains(&SunFlag::Saturated) {
+            return Err(SunFallback::new(
+                "saturated",
+                format!(
+                    "{} of {} groups over-range in the shortest exposure",
+                    reading.sums.over_count, reading.sums.count
+                ),
+            ));
+        }
+        if !(sun.direct_normal_illuminance_lux.is_finite() && sun.direction.is_finite()) {
+            return Err(SunFallback::new(
+                "not_measurable",
+                format!(
+                    "direct-normal illuminance {} lx",
+                    sun.direct_normal_illuminance_lux
+                ),
+            ));
+        }
+        Ok(sun.into_extracted(&reading.sums, map.width, map.height))
     }
 
     /// The capture's luminance map: the fabric's map through the merge's calibration, or the

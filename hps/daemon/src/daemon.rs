@@ -612,6 +612,7 @@ impl Daemon<'_> {
             sun_altitude_deg = record.sun.spa_altitude_deg,
             sun_extracted = record.sun.extracted,
             sun_flags = ?record.sun.flags,
+            sun_source = %record.sun_source,
             plausibility = ?record.plausibility,
             sensors = record.illuminance.len(),
             first_lux = record.illuminance.first().map_or(f64::NAN, |s| s.lux),
@@ -628,6 +629,14 @@ impl Daemon<'_> {
             let mut s = self.state.lock().unwrap_or_else(|p| p.into_inner());
             s.cycles_ok += 1;
             *s.cycles_by_hdr.entry(record.hdr.clone()).or_default() += 1;
+            *s.cycles_by_sun_source
+                .entry(record.sun_source.clone())
+                .or_default() += 1;
+            if let Some(f) = &record.sun_fallback {
+                *s.sun_fallbacks_by_reason
+                    .entry(f.reason.clone())
+                    .or_default() += 1;
+            }
             s.consecutive_failures = 0;
             s.last_durations = Some(record.durations_ms.clone());
             s.last_output_ms = output_ms;
@@ -762,10 +771,9 @@ fn run_cycle(
             &products.view_pictures,
             &products.state_view_pictures,
             &pipeline.device,
-            // A fabric map has no raw frames to keep.
-            set.fabric_map
-                .is_none()
-                .then_some((&set.config, set.frames.as_slice())),
+            // A fabric map has no raw frames to keep, but its readout goes into the map's EXR
+            // (without it the map's groups would be placed as a skip-1 readout's).
+            Some((&set.config, set.frames.as_slice())),
             &mut faults,
         )
         .map_err(|e| {

@@ -4,7 +4,8 @@
 //! It exists so the daemon's real fabric path runs whole cycles at a realistic window, and so
 //! `[[sim.fault]]` can make hardware faults at their source (an absent sensor, a stuck bus,
 //! a stopped PIXCLK, malformed frames, FIFO overflow, a DMA bus timeout, a corrupted word,
-//! frames out of order) which the drivers must find by themselves.
+//! frames out of order, sun accumulators that answer garbage or miss the capture) which the
+//! drivers must find by themselves.
 
 use crate::config::{Config, FaultKind};
 use crate::fabric_source::FabricSource;
@@ -78,6 +79,8 @@ pub fn hardware_fault(kind: FaultKind, lines: u32) -> Option<HardwareFault> {
         FaultKind::DmaBusTimeout => HardwareFault::PortStall {
             cycles: DMA_BUS_TIMEOUT_STALL_CYCLES,
         },
+        FaultKind::SunGarbage => HardwareFault::SunGarbage,
+        FaultKind::SunStale => HardwareFault::SunStale,
         FaultKind::DiskFull | FaultKind::ClockBack => return None,
     })
 }

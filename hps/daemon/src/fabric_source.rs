@@ -16,6 +16,17 @@
 //! returns that map ([`FabricMapCapture`]) instead of frames, and the cycle reads it into its
 //! luminance map with the merge's calibration. One map read instead of five frames.
 //!
+//! **The sun in map mode** (issue 22 item 2). Before the openings the source arms the sun
+//! accumulators (`sun.*`) for the set's shortest exposure, with a window around SPA's sun
+//! through the declared camera and the threshold of `sun::fabric`; after them it reads the
+//! sums back, checks that exactly the armed frames were counted and that the sums are ones a
+//! frame can give (`sun::check_sums`), and hands them over with the map
+//! ([`FabricSunReading`]), so the cycle has the sun without a scan of the map. Anything else
+//! (the sun below the horizon or outside the lens, a bus error, sums that changed under the
+//! read, a count that did not move, garbage) is handed over as a [`SunFallback`]: the cycle
+//! then scans the map as for a raw capture, and says so. A fault there never fails the
+//! capture: the map is good without it.
+//!
 //! **Raw captures** ([`CaptureSource::capture_raw`]; every capture with `hdr = "hps"`): the
 //! capture path runs raw (samples unchanged, two per word) into one slot per exposure, and the
 //! source returns [`RawFrame`]s, which the daemon merges on the HPS and keeps in campaign
@@ -29,7 +40,9 @@
 //! A slot is released (its format identifier cleared) after it is read, so a frame that did
 //! not arrive can never be mistaken for an earlier one.
 
-use crate::source::{CaptureSet, CaptureSource, FabricMapCapture, SourceError};
+use crate::source::{
+    CaptureSet, CaptureSource, FabricMapCapture, FabricSunReading, SourceError, SunFallback,
+};
 use crate::wait::{FrameWait, PollWait, WaitError};
 use chrono::{DateTime, FixedOffset};
 use skylux_bus::{DmaMemory, RegisterBus};
@@ -38,11 +51,14 @@ use skylux_hps::fpga::frames::CapturedFrame;
 use skylux_hps::fpga::sensor::{reg, I2cTiming, SensorConfig, SensorError};
 use skylux_hps::fpga::sequence::{SequenceError, ShieldConfig};
 use skylux_hps::fpga::shield_plan::{plan_openings_with_gaps, OpeningCost};
+use skylux_hps::fpga::SunReadError;
 use skylux_hps::fpga::{
     CaptureConfig as RingConfig, CaptureFaults, ExposureSlot, Fabric, GroupingConfig, MAX_EXPOSURES,
 };
 use skylux_hps::hdr::FabricMap;
+use skylux_hps::sun::{check_sums, solar_position, FabricSunSearch, Site, SunExposure};
 use skylux_regmap::hdr_values::HdrConfig;
+use skylux_regmap::sun_values::SunConfig;
 use skylux_regmap::words::raw;
 use skylux_regmap::words::WEIGHT_ONE;
 use std::ops::Range;
@@ -95,6 +111,31 @@ pub struct FabricSettings {
     pub active_origin: (u32, u32),
     /// Map mode: the fabric makes the HDR map (`[fabric] hdr = "fabric"`).
     pub map: Option<MapMode>,
+    /// Map mode: where the sun should be, to arm the sun accumulators (`None`: not armed).
+    pub sun: Option<SunArming>,
+}
+
+/// What the source needs to aim the sun accumulators: the site (SPA's sun at the capture's
+/// time), the declared camera (where that sun lands, and the luminance per DN there) and how
+/// far from the prediction to look.
+#[derive(Clone, Debug)]
+pub struct SunArming {
+    pub site: Site,
+    pub camera: skylux_hps::camera::CameraModel,
+    /// As far as the cycle's own search looks (`model::SUN_MAX_OFFSET_DEG`), degrees.
+    pub max_offset_deg: f64,
+}
+
+/// The accumulators as armed for one capture, and what to expect back.
+struct SunArmed {
+    search: FabricSunSearch,
+    exposure: SunExposure,
+    config: SunConfig,
+    /// The exposure's index within its opening, which the block matches.
+    index: u8,
+    /// `sun.frames` before the capture, and the armed frames it must count.
+    frames_before: u16,
+    frames_expected: u16,
 }
 
 /// What map mode programs: the grouping the map's words are made with and the selection's
@@ -155,6 +196,15 @@ impl FabricSettings {
         pairs.sort_by(|a, b| (b.0 * b.1).total_cmp(&(a.0 * a.1)));
         (self.exposures_us, self.gains) = pairs.into_iter().unzip();
         self.map = Some(MapMode::of_device(device, bayer_of(&self.sensor)));
+        self.sun = Some(SunArming {
+            site: Site {
+                latitude_deg: config.site.latitude_deg,
+                longitude_deg: config.site.longitude_deg,
+                elevation_m: config.site.elevation_m,
+            },
+            camera: skylux_hps::camera::CameraModel::new(device.clone()),
+            max_offset_deg: skylux_hps::model::SUN_MAX_OFFSET_DEG,
+        });
         self
     }
 }
@@ -490,11 +540,15 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                 .hdr_configure(&HdrConfig::default(), false)
                 .map_err(|e| other("hdr")(e.to_string()))?;
         }
+        let sun = map.as_ref().map(|_| self.arm_sun(at));
         self.run_openings()?;
         let faults = self.take_faults()?;
         let (frames, frame_flags, fabric_map) = match map {
             Some(map) => {
-                let (m, flags) = self.read_map(&ring, &faults, map.hdr)?;
+                let (mut m, flags) = self.read_map(&ring, &faults, map.hdr)?;
+                if let Some(armed) = sun {
+                    m.sun = self.read_sun(armed);
+                }
                 (vec![], vec![flags], Some(m))
             }
             None => {
@@ -741,9 +795,134 @@ impl<B: RegisterBus, M: DmaMemory, W: FrameWait> FabricSource<B, M, W> {
                 hdr,
                 raw_width: w,
                 raw_height: h,
+                sun: Err(SunFallback::new(
+                    "not_armed",
+                    "the accumulators were not armed",
+                )),
             },
             flags,
         ))
+    }
+
+    /// Arms the sun accumulators for the capture's shortest exposure (by exposure times gain:
+    /// the one whose disk is least likely over-range), or disarms them and says why not.
+    fn arm_sun(&mut self, at: DateTime<FixedOffset>) -> Result<SunArmed, SunFallback> {
+        use skylux_bus::RegisterAccess;
+        use skylux_regmap::sun;
+        let mut armed = match self.sun_setup(at) {
+            Ok(armed) => armed,
+            Err(why) => {
+                // Disarmed, so the block does not go on summing frames under an earlier setup.
+                let _ = self.fabric.bus().write_reg(&sun::ctrl::REG, 0, 0);
+                return Err(why);
+            }
+        };
+        let bus = |e: skylux_bus::BusError| SunFallback::new("bus", e.to_string());
+        let frames = self
+            .fabric
+            .bus()
+            .read_reg(&sun::frames::REG, 0)
+            .map_err(bus)?;
+        armed.frames_before = sun::frames::COUNT.get(frames) as u16;
+        self.fabric
+            .sun_configure(&armed.config, armed.index, true)
+            .map_err(bus)?;
+        Ok(armed)
+    }
+
+    /// The search, the sun's frame and the accumulators' settings for a capture at `at`: the
+    /// exposure index to arm and the frames that index arms (`frames_before` left at 0).
+    fn sun_setup(&self, at: DateTime<FixedOffset>) -> Result<SunArmed, SunFallback> {
+        let not_armed = |why: String| SunFallback::new("not_armed", why);
+        let arming = self
+            .settings
+            .sun
+            .as_ref()
+            .ok_or_else(|| not_armed("no site or camera to predict the sun".into()))?;
+        let p = &self.plan;
+        let k = (0..p.slots.len())
+            .min_by(|&a, &b| {
+                (p.exposures_us[a] * p.gains[a]).total_cmp(&(p.exposures_us[b] * p.gains[b]))
+            })
+            .ok_or_else(|| not_armed("no exposure".into()))?;
+        // The accumulators match the exposure's index within its opening's table, so every
+        // frame of that index is armed, and the sums left are the last one's: it must be k's.
+        let index_of = |j: usize| {
+            p.openings
+                .iter()
+                .find(|r| r.contains(&j))
+                .map(|r| j - r.start)
+        };
+        let index = index_of(k).ok_or_else(|| not_armed("exposure outside the plan".into()))?;
+        let peers: Vec<usize> = (0..p.slots.len())
+            .filter(|&j| index_of(j) == Some(index))
+            .collect();
+        if peers.last() != Some(&k) {
+            return Err(not_armed(format!(
+                "exposure {k}, the shortest, is not the last of index {index} in its opening"
+            )));
+        }
+        let spa = solar_position(at.with_timezone(&chrono::Utc), &arming.site, None)
+            .map_err(|e| not_armed(format!("solar position: {e}")))?;
+        if spa.direction().z <= 0.0 {
+            return Err(not_armed(format!(
+                "the sun is below the horizon (SPA altitude {:.2} deg)",
+                spa.altitude_deg()
+            )));
+        }
+        let readout = self.capture_config(at).readout;
+        let search = FabricSunSearch::around(
+            spa.direction(),
+            arming.max_offset_deg,
+            &arming.camera,
+            &readout,
+        )
+        .ok_or_else(|| not_armed("the predicted sun is outside the lens".into()))?;
+        let exposure = SunExposure {
+            exposure_s: p.exposures_us[k] * 1e-6,
+            gain: p.gains[k],
+        };
+        let groups = ((p.width_px / 2) as usize, (p.height_px / 2) as usize);
+        let config = search
+            .config(&arming.camera, &readout, groups, &exposure)
+            .map_err(|e| not_armed(e.to_string()))?;
+        Ok(SunArmed {
+            search,
+            exposure,
+            config,
+            index: index as u8,
+            frames_before: 0,
+            frames_expected: peers.len() as u16,
+        })
+    }
+
+    /// The sums the armed capture left, if they are the armed frames' and could be a frame's.
+    fn read_sun(
+        &mut self,
+        armed: Result<SunArmed, SunFallback>,
+    ) -> Result<FabricSunReading, SunFallback> {
+        let armed = armed?;
+        let (sums, frames) = self.fabric.sun_read().map_err(|e| match e {
+            SunReadError::Bus(e) => SunFallback::new("bus", e.to_string()),
+            e @ SunReadError::Unsettled => SunFallback::new("unsettled", e.to_string()),
+        })?;
+        let counted = frames.wrapping_sub(armed.frames_before);
+        if counted != armed.frames_expected {
+            return Err(SunFallback::new(
+                "stale",
+                format!(
+                    "sun.frames counted {counted} frames, {} armed",
+                    armed.frames_expected
+                ),
+            ));
+        }
+        check_sums(&armed.config, &sums).map_err(|e| SunFallback::new("inconsistent", e))?;
+        Ok(FabricSunReading {
+            search: armed.search,
+            exposure: armed.exposure,
+            config: armed.config,
+            sums,
+        })
     }
 
     /// `capture.toml` of the capture taken at `at`.
@@ -985,6 +1164,7 @@ pub fn fabric_settings(
         // The simulated sensor renders its register window as active coordinates.
         active_origin: if sim { (0, 0) } else { (16, 54) },
         map: None,
+        sun: None,
     }
 }
 

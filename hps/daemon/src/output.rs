@@ -476,7 +476,9 @@ impl Output {
                 glare.image = Some(rel);
             }
         }
-        if let (Some((config, frames)), true) = (capture, self.max_captures > 0) {
+        // A fabric map has no raw frames to keep (its capture only names the map's readout).
+        let kept = capture.filter(|(_, frames)| self.max_captures > 0 && !frames.is_empty());
+        if let Some((config, frames)) = kept {
             let rel = format!("{CAPTURES_DIR}/{stamp}");
             let existed = self.dir.join(&rel).exists();
             self.write_capture(stamp, &record.time, config, frames)?;

@@ -49,6 +49,46 @@ pub struct FabricMapCapture {
     pub hdr: skylux_regmap::hdr_values::HdrConfig,
     pub raw_width: usize,
     pub raw_height: usize,
+    /// The sun accumulators over the set's shortest exposure (issue 22 item 2), or why they
+    /// have nothing to believe (not armed, a fault on `sun.*`): the cycle then scans the map.
+    pub sun: Result<FabricSunReading, SunFallback>,
+}
+
+/// What the sun accumulators measured, with how they were set up.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FabricSunReading {
+    pub search: skylux_hps::sun::FabricSunSearch,
+    /// The frame they summed: the shortest exposure as the sensor ran it.
+    pub exposure: skylux_hps::sun::SunExposure,
+    pub config: skylux_regmap::sun_values::SunConfig,
+    /// Checked against `config` (`sun::check_sums`).
+    pub sums: skylux_regmap::sun_values::SunSums,
+}
+
+/// Why the sun of a map-mode capture was not taken from the accumulators: a short stable tag
+/// (for the record and the metrics) and the details.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SunFallback {
+    /// `not_armed`, `bus`, `unsettled`, `stale`, `inconsistent` (the source's); `none`,
+    /// `saturated`, `undersampled`, `scattered`, `not_measurable` (the cycle's, from the
+    /// sums).
+    pub tag: &'static str,
+    pub detail: String,
+}
+
+impl SunFallback {
+    pub fn new(tag: &'static str, detail: impl Into<String>) -> Self {
+        Self {
+            tag,
+            detail: detail.into(),
+        }
+    }
+}
+
+impl std::fmt::Display for SunFallback {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {}", self.tag, self.detail)
+    }
 }
 
 impl CaptureSet {

@@ -14,8 +14,12 @@ mod common;
 
 use common::*;
 use skylux_bus::DmaMemory;
+use skylux_hps::camera::{direction_from_alt_az, CameraModel};
 use skylux_hps::fpga::Fabric;
+use skylux_hps::hdr::{read_exr, GroupGeometry};
+use skylux_hps::sun::{extract_sun, ExtractedSun, NoSun, SunSearch};
 use skylux_regmap::descriptor::{self, Descriptor};
+use skylux_rtl::sun::golden::accumulate;
 use skylux_sim::fabric_model::{fabric_model, FabricModelConfig, ModelMemory, ModelRegisters};
 use skylux_sim::mt9p031::{Mt9p031, SceneSource};
 use skyluxd::config::{Config, Overrides};
@@ -356,6 +360,19 @@ fn model_map_is_the_golden_selection_and_raw_captures_come_between() {
             (162, 122, 324, 244)
         );
         assert_eq!(m.map.words, golden_map(&device, &m.hdr, &frames));
+        // The sun accumulators were armed for the shortest exposure (the set's last frame) and
+        // what the source read back is the RTL's golden sums of that frame's grouped words
+        // under the settings it armed them with.
+        let reading = m.sun.as_ref().expect("the accumulators' reading");
+        assert_eq!(reading.exposure.exposure_s, e[4] * 1e-6);
+        let sums_of = |k: usize| accumulate(&reading.config, &golden_words(&device, &frames[k]));
+        eprintln!("sun accumulators: {:?}", reading.sums);
+        assert_eq!(reading.sums, sums_of(4));
+        assert_ne!(
+            reading.sums,
+            sums_of(3),
+            "the shortest frame's, not another's"
+        );
         let mut per_exposure = [0usize; 8];
         for &w in &m.map.words {
             per_exposure[usize::from(skylux_regmap::words::hdr_map::exposure_index(w))] += 1;
@@ -484,10 +501,44 @@ const FABRIC_OUTDOOR_TOLERANCE: f64 = 0.05;
 /// the world traced directly (issue 24: 5 %).
 const FABRIC_INTERIOR_TOLERANCE: f64 = 0.05;
 
+/// The HPS's own scan (`sun::extract_sun`, as the model's terms search) of the map a record
+/// kept, read back from its EXR (device and readout in its header), around SPA's sun.
+fn scan_of_kept_map(out: &std::path::Path, r: &serde_json::Value) -> Result<ExtractedSun, NoSun> {
+    let path = out.join(r["map"].as_str().expect("a kept map"));
+    let (map, device, readout) = read_exr(&path).unwrap();
+    let geometry = GroupGeometry::new(
+        &CameraModel::new(device),
+        &readout,
+        2 * map.width,
+        2 * map.height,
+    );
+    let spa = direction_from_alt_az(
+        r["sun"]["spa_altitude_deg"].as_f64().unwrap(),
+        r["sun"]["spa_azimuth_deg"].as_f64().unwrap(),
+    );
+    extract_sun(
+        &map,
+        &geometry,
+        &SunSearch {
+            predicted_direction: Some(spa),
+            max_offset_deg: skylux_hps::model::SUN_MAX_OFFSET_DEG,
+            ..Default::default()
+        },
+    )
+}
+
 /// The records of `cycles` cycles of `skyluxd --sim` on the fabric model, 3 h apart from 09:00,
 /// read with `[fabric] bin = bin`, with the example camera or, with `bare_sensor`, the same
-/// camera without its ND filter (response cg 1 instead of 10).
-fn daemon_day(sky: &str, cycles: u64, bin: u32, bare_sensor: bool) -> Vec<serde_json::Value> {
+/// camera without its ND filter (response cg 1 instead of 10), with the example's hourly raw
+/// capture or, with `maps_only`, none; each with the HPS's scan of the map it kept
+/// ([`scan_of_kept_map`]).
+fn daemon_day(
+    sky: &str,
+    cycles: u64,
+    bin: u32,
+    bare_sensor: bool,
+    maps_only: bool,
+) -> Vec<(serde_json::Value, Result<ExtractedSun, NoSun>)> {
     let tmp = tempfile::tempdir().unwrap();
     let out = tmp.path().join("out");
     let log = tmp.path().join("stderr.log");
@@ -499,6 +550,9 @@ fn daemon_day(sky: &str, cycles: u64, bin: u32, bare_sensor: bool) -> Vec<serde_
         ("bin = 4 ".into(), format!("bin = {bin} ")),
         ("sky = \"clear\"".into(), format!("sky = \"{sky}\"")),
     ];
+    if maps_only {
+        replace.push(("raw_every_s = 3600 ".into(), "# raw_every_s = 3600 ".into()));
+    }
     if bare_sensor {
         let hps = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
         let example = std::fs::read_to_string(hps.join("daemon/device.toml")).unwrap();
@@ -537,14 +591,17 @@ fn daemon_day(sky: &str, cycles: u64, bin: u32, bare_sensor: bool) -> Vec<serde_
             let r: serde_json::Value = serde_json::from_str(l).unwrap();
             assert_eq!(r["source"], "fabric-model");
             eprintln!(
-                "{}: {:.0} lx measured, {:.0} lx world, capture {} ms, sun {}",
+                "{}: {:.0} lx measured, {:.0} lx world, capture {} ms, sun {} from {} ({})",
                 r["time"],
                 r["outdoor_horizontal_lux"],
                 r["truth_outdoor_horizontal_lux"],
                 r["durations_ms"]["capture_ms"],
-                r["sun"]["flags"]
+                r["sun"]["flags"],
+                r["sun_source"],
+                r["sun_fallback"]
             );
-            r
+            let scan = scan_of_kept_map(&out, &r);
+            (r, scan)
         })
         .collect()
 }
@@ -568,11 +625,18 @@ fn daemon_day(sky: &str, cycles: u64, bin: u32, bare_sensor: bool) -> Vec<serde_
 #[test]
 fn skyluxd_runs_daylight_cycles_on_the_fabric_model_at_full_frame() {
     for sky in ["clear", "overcast"] {
-        let records = daemon_day(sky, 3, 4, false);
+        let day = daemon_day(sky, 3, 4, false, false);
         // The example's map mode with a raw capture an hour: the first cycle (at start) is a
         // map, the next two (3 h apart) raw, each kept in campaign format; maps keep none.
-        let made: Vec<&str> = records.iter().map(|r| r["hdr"].as_str().unwrap()).collect();
+        let made: Vec<&str> = day
+            .iter()
+            .map(|(r, _)| r["hdr"].as_str().unwrap())
+            .collect();
         assert_eq!(made, ["fabric", "hps", "hps"], "{sky}");
+        for (r, scan) in &day {
+            sun_source_is_the_accumulators_in_map_mode(sky, r, scan);
+        }
+        let records: Vec<serde_json::Value> = day.into_iter().map(|(r, _)| r).collect();
         for r in &records {
             assert_eq!(r["capture"].is_null(), r["hdr"] == "fabric", "{r}");
             let measured = r["outdoor_horizontal_lux"].as_f64().unwrap();
@@ -599,7 +663,7 @@ fn skyluxd_runs_daylight_cycles_on_the_fabric_model_at_full_frame() {
         }
     }
     for (bin, bare_sensor, flag) in [(4, true, "not_measurable"), (1, false, "undersampled")] {
-        let r = &daemon_day("clear", 1, bin, bare_sensor)[0];
+        let (r, _) = &daemon_day("clear", 1, bin, bare_sensor, false)[0];
         assert_eq!(
             r["sun"]["flags"],
             serde_json::json!([format!("no_sun:{flag}")]),
@@ -614,6 +678,65 @@ fn skyluxd_runs_daylight_cycles_on_the_fabric_model_at_full_frame() {
             "{flag}: {measured} vs {truth}"
         );
     }
+}
+
+/// A clear day in maps only (no raw capture), 09:00 to 18:00 every 3 h, the sun from 17° to
+/// 60° up: every cycle's sun is the accumulators', within 0.05° and 1 % of the HPS's scan of
+/// the same map (issue 22 item 2), and the outdoor value the world's within 5 %.
+#[test]
+fn skyluxd_takes_the_sun_from_the_fabric_through_a_clear_day() {
+    let day = daemon_day("clear", 4, 4, false, true);
+    for (r, scan) in &day {
+        assert_eq!(r["hdr"], "fabric", "{r}");
+        sun_source_is_the_accumulators_in_map_mode("clear", r, scan);
+        let measured = r["outdoor_horizontal_lux"].as_f64().unwrap();
+        let truth = r["truth_outdoor_horizontal_lux"].as_f64().unwrap();
+        assert!(
+            (measured / truth - 1.0).abs() < FABRIC_OUTDOOR_TOLERANCE,
+            "{}: {measured} lx vs {truth} lx",
+            r["time"]
+        );
+    }
+}
+
+/// Where a record's sun came from (issue 22 item 2). A map under the clear sky: from the
+/// fabric's accumulators, within 0.05° and 1 % (direct-normal illuminance, so disk luminance)
+/// of the HPS's own scan of the same map; under the overcast sky the accumulators count no
+/// group and the HPS scans the map, finding no sun either. Raw captures: the HPS's scan, with
+/// no fallback to explain.
+fn sun_source_is_the_accumulators_in_map_mode(
+    sky: &str,
+    r: &serde_json::Value,
+    scan: &Result<ExtractedSun, NoSun>,
+) {
+    if r["hdr"] == "hps" {
+        assert_eq!(r["sun_source"], "hps", "{r}");
+        assert!(r.get("sun_fallback").is_none(), "{r}");
+        return;
+    }
+    if sky == "overcast" {
+        assert_eq!(r["sun_source"], "hps", "{r}");
+        assert_eq!(r["sun_fallback"]["reason"], "none", "{r}");
+        assert!(scan.is_err(), "{scan:?}");
+        return;
+    }
+    assert_eq!(r["sun_source"], "fabric", "{r}");
+    assert!(r.get("sun_fallback").is_none(), "{r}");
+    let scan = scan.as_ref().expect("the HPS's scan finds the sun");
+    let s = &r["sun"];
+    let direction = direction_from_alt_az(
+        s["extracted_altitude_deg"].as_f64().unwrap(),
+        s["extracted_azimuth_deg"].as_f64().unwrap(),
+    );
+    let off_deg = direction.angle_between(scan.direction).to_degrees();
+    let rel = s["direct_normal_lux"].as_f64().unwrap() / scan.direct_normal_illuminance_lux - 1.0;
+    eprintln!(
+        "{}: the accumulators' sun {off_deg:.4} deg and {:+.3} % from the HPS's scan",
+        r["time"],
+        100.0 * rel
+    );
+    assert!(off_deg <= 0.05, "{off_deg} deg: {r}");
+    assert!(rel.abs() <= 0.01, "{rel:+}: {r}");
 }
 
 /// `skyluxd --sim` on the fabric model (full frame, skip 8: 324 x 244 samples) with the
@@ -848,4 +971,82 @@ fn fault_dma_bus_timeout_in_map_mode() {
         "dma_bus_timeout",
         "held waitrequest longer than dma.bus_timeout (1000000 system clocks)",
     );
+}
+
+/// A fault on the sun page (`kind`) at the second capture of two maps (the example's readout,
+/// binned 4 x 4 at skip 4, so the accumulators measure the clear sun): the first cycle's sun
+/// is the accumulators'; the second's falls back to the HPS's scan of the map, which still
+/// finds the sun, and says why (`sun_fallback.reason` = `reason`, in the record and in
+/// `/v1/metrics`); no cycle fails.
+fn sun_fault_falls_back_to_the_scan(kind: &str, reason: &str) {
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("out");
+    let log = tmp.path().join("stderr.log");
+    let extra = format!("[[sim.fault]]\nattempt = 2\nkind = \"{kind}\"\n");
+    let config = config_with(
+        tmp.path(),
+        &[
+            ("source = \"sim\"", "source = \"fabric-model\""),
+            ("raw_every_s = 3600 ", "# raw_every_s = 3600 "),
+        ],
+        &extra,
+    );
+    let mut child = SimRun::new(&config, &out)
+        .cycles(2)
+        .clock("2017-05-08T11:00:00+02:00", 3600)
+        .serve_after()
+        .start(&log);
+    let results = out.join("results.jsonl");
+    until(Duration::from_secs(120), &log, || {
+        (complete_lines(&results).len() >= 2).then_some(())
+    });
+    let address = std::fs::read_to_string(out.join("api.address")).unwrap();
+    let metrics = until(Duration::from_secs(20), &log, || {
+        let (code, body) = http_get(address.trim(), "/v1/metrics");
+        assert_eq!(code, 200, "{body}");
+        body.contains("skyluxd_sun_fabric_fallbacks_total{")
+            .then_some(body)
+    });
+    signal(&child, libc::SIGTERM);
+    assert_eq!(wait(&mut child, Duration::from_secs(20)).code(), Some(0));
+    let text = std::fs::read_to_string(&log).unwrap();
+    assert!(!text.contains("panicked"), "{text}");
+    assert!(!text.contains("cycle failed"), "{text}");
+    assert!(
+        text.lines()
+            .any(|l| l.contains("sun accumulators: fault") && l.contains(reason)),
+        "{text}"
+    );
+    let records: Vec<serde_json::Value> = complete_lines(&results)
+        .iter()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(records.len(), 2);
+    for r in &records {
+        assert_eq!(r["hdr"], "fabric", "{r}");
+        assert_eq!(r["sun"]["extracted"], true, "{r}");
+    }
+    assert_eq!(records[0]["sun_source"], "fabric", "{}", records[0]);
+    assert!(records[0].get("sun_fallback").is_none());
+    let r = &records[1];
+    eprintln!("{kind}: {}", r["sun_fallback"]);
+    assert_eq!(r["sun_source"], "hps", "{r}");
+    assert_eq!(r["sun_fallback"]["reason"], reason, "{r}");
+    for line in [
+        format!("skyluxd_sun_fabric_fallbacks_total{{reason=\"{reason}\"}} 1"),
+        "skyluxd_sun_source_total{source=\"fabric\"} 1".to_string(),
+        "skyluxd_sun_source_total{source=\"hps\"} 1".to_string(),
+    ] {
+        assert!(metrics.lines().any(|l| l == line), "{line}:\n{metrics}");
+    }
+}
+
+#[test]
+fn fault_sun_garbage_falls_back_to_the_scan() {
+    sun_fault_falls_back_to_the_scan("sun_garbage", "inconsistent");
+}
+
+#[test]
+fn fault_sun_stale_falls_back_to_the_scan() {
+    sun_fault_falls_back_to_the_scan("sun_stale", "stale");
 }

@@ -5,7 +5,8 @@
 //! the words are formed (raw: two 12-bit samples per word, `skylux_regmap::words::raw`;
 //! grouped: the RTL's golden model `skylux_rtl::bayer::golden`), words that find the FIFOs
 //! full during a port stall are lost (`FIFO_OVERFLOW`), and the frame goes to the DMA with its
-//! checksum; with `hdr.ctrl.ENABLE` in grouped mode it opens as a map frame (`super::dma`).
+//! checksum; with `hdr.ctrl.ENABLE` in grouped mode it opens as a map frame (`super::dma`),
+//! and armed for the sun accumulators it is summed as the ingest hands it over (`super::sun`).
 //! Needed so the frames and the capture status the drivers read are the hardware's.
 
 use super::{FabricModel, HardwareFault};
@@ -35,6 +36,8 @@ pub struct FrameRx {
     pub dma_taken: bool,
     /// Taken as a map frame (`hdr.ctrl.ENABLE`, grouped mode).
     pub map: Option<super::dma::MapFrame>,
+    /// The sun accumulators take the frame (`super::sun`).
+    pub sun_armed: bool,
     pub tag_index: u32,
     pub tag_frame: u32,
     pub tag_time: u64,
@@ -96,6 +99,7 @@ impl FabricModel {
             };
             self.dma.hdr.open(thresholds)
         });
+        let sun_armed = dma_enabled && self.sun_armed(raw, self.seq.tag_index);
         let s = &self.seq;
         self.capture.current = Some(FrameRx {
             samples,
@@ -104,6 +108,7 @@ impl FabricModel {
             bayer,
             dma_taken: dma_enabled,
             map,
+            sun_armed,
             tag_index: s.tag_index,
             tag_frame: s.tag_frame,
             tag_time: s.tag_time,
@@ -239,6 +244,7 @@ impl FabricModel {
                 lines: saturate12(lines.into()),
                 raw: rx.bayer.raw,
                 map: rx.map,
+                sun_armed: rx.sun_armed,
                 tag_index: rx.tag_index,
                 tag_frame: rx.tag_frame,
                 tag_time: rx.tag_time,
@@ -279,6 +285,7 @@ impl FabricModel {
                 lines: 0,
                 raw: rx.bayer.raw,
                 map: rx.map,
+                sun_armed: rx.sun_armed,
                 tag_index: rx.tag_index,
                 tag_frame: rx.tag_frame,
                 tag_time: rx.tag_time,

@@ -28,6 +28,8 @@ pub struct FrameOut {
     pub raw: bool,
     /// A map frame: its place in the set and the thresholds, latched when it opened.
     pub map: Option<MapFrame>,
+    /// The sun accumulators take its words (`super::sun`).
+    pub sun_armed: bool,
     pub tag_index: u32,
     pub tag_frame: u32,
     pub tag_time: u64,
@@ -115,6 +117,10 @@ impl FabricModel {
     /// The ingest hands a frame over; it is in memory after its last bursts and the
     /// descriptor.
     pub(super) fn dma_frame(&mut self, frame: FrameOut) {
+        // The accumulators sit beside the ingest: by the frame's end they hold its sums.
+        if frame.sun_armed {
+            self.sun_frame(&frame.words);
+        }
         // The remainder burst (at most MAX_BURST_BEATS) and the descriptor burst.
         let beats = (frame.words.len() as u64).div_ceil(2).min(MAX_BURST_BEATS);
         let mut done_at = self.now + frame.ready_after + beats + DESCRIPTOR_BEATS + 2;

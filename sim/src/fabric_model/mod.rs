@@ -20,7 +20,8 @@
 //! Blocks, one file each: [`i2c`] (the register-transaction master), [`sequencer`] (exposure
 //! sequencer and lens shield with its open-time interlock), [`sensor`] (the MT9P031's
 //! snapshot time line), [`capture`] (window checks, raw/grouped words, the clock-domain
-//! FIFO), [`dma`] (ring slots, payload, descriptor and checksum; the `hdr.*` map frames).
+//! FIFO), [`dma`] (ring slots, payload, descriptor and checksum; the `hdr.*` map frames),
+//! [`sun`] (the `sun.*` accumulators over the armed frame's grouped words).
 //! Faults are injected at their source ([`HardwareFault`]): the drivers see only what the
 //! hardware would show.
 
@@ -29,6 +30,7 @@ pub mod dma;
 pub mod i2c;
 pub mod sensor;
 pub mod sequencer;
+pub mod sun;
 
 use crate::bus::RegisterFileModel;
 use crate::mt9p031::Mt9p031;
@@ -93,6 +95,12 @@ pub enum HardwareFault {
     /// The next two frames are written into each other's slots (the ring pointer glitches):
     /// frames delivered out of order.
     SwapSlots,
+    /// The sun accumulators' result registers read all ones until [`FabricModel::clear_faults`]
+    /// ([`sun::SunFault::Garbage`]).
+    SunGarbage,
+    /// The sun accumulators skip armed frames until [`FabricModel::clear_faults`]: their sums
+    /// and `sun.frames` stay the last frame's ([`sun::SunFault::Stale`]).
+    SunStale,
 }
 
 /// The model's state: every block and the frame buffer.
@@ -111,6 +119,7 @@ pub struct FabricModel {
     pub timeline: sensor::SensorTimeline,
     pub capture: capture::CaptureBlock,
     pub dma: dma::DmaEngine,
+    pub sun: sun::SunBlock,
     /// The frame faults waiting for the next frame (applied in order, one frame each unless
     /// they combine).
     pub pending_frame_faults: Vec<HardwareFault>,
@@ -147,6 +156,7 @@ impl FabricModel {
             timeline: sensor::SensorTimeline::default(),
             capture: capture::CaptureBlock::default(),
             dma: dma::DmaEngine::default(),
+            sun: sun::SunBlock::default(),
             pending_frame_faults: Vec::new(),
             log: ModelLog::default(),
         }
@@ -161,6 +171,8 @@ impl FabricModel {
             HardwareFault::SdaStuckLow => self.sensor.i2c.fault = I2cFault::SdaStuckLow,
             HardwareFault::SclStuckLow => self.sensor.i2c.fault = I2cFault::SclStuckLow,
             HardwareFault::NackRegister(r) => self.i2c.nack_register = Some(r),
+            HardwareFault::SunGarbage => self.sun.fault = Some(sun::SunFault::Garbage),
+            HardwareFault::SunStale => self.sun.fault = Some(sun::SunFault::Stale),
             other => self.pending_frame_faults.push(other),
         }
     }
@@ -169,6 +181,7 @@ impl FabricModel {
     pub fn clear_faults(&mut self) {
         self.sensor.i2c.fault = crate::mt9p031::I2cFault::None;
         self.i2c.nack_register = None;
+        self.sun.fault = None;
         self.pending_frame_faults.clear();
     }
 
@@ -230,7 +243,7 @@ impl FabricModel {
 
     /// RO fields of the block at `offset` as they are now.
     fn refresh_inputs(&mut self, offset: u32) {
-        use skylux_regmap::{capture, dma, i2c, seq};
+        use skylux_regmap::{capture, dma, i2c, seq, sun};
         match offset & !(skylux_regmap::BLOCK_SPAN_BYTES - 1) {
             b if b == sys::BLOCK.base => {
                 let now = self.now;
@@ -245,6 +258,7 @@ impl FabricModel {
             b if b == seq::BLOCK.base => self.sequencer_inputs(),
             b if b == capture::BLOCK.base => self.capture_inputs(),
             b if b == dma::BLOCK.base => self.dma_inputs(),
+            b if b == sun::BLOCK.base => self.sun_inputs(),
             _ => {}
         }
     }

@@ -20,6 +20,9 @@ pub struct CaptureData {
     pub raw_height: usize,
     /// The sun from SPA (geometric, as the engine's sun).
     pub spa_sun: DVec3,
+    /// The sun measured without a scan of the map (the fabric's accumulators, issue 22
+    /// item 2), taken as found; `None`: `extract_sun` searches the map for it.
+    pub sun: Option<crate::sun::ExtractedSun>,
 }
 
 /// Reads and merges every capture of the campaign with the declared camera.
@@ -57,6 +60,7 @@ pub fn load_captures_with(
             readout: merged.capture.readout,
             map: merged.map,
             spa_sun: spa.direction(),
+            sun: None,
         });
     }
     Ok(out)

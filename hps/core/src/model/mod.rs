@@ -16,4 +16,4 @@ pub use error::ModelError;
 pub use measured_sky::{install_measured_sky, remove_measured_sky};
 pub use prediction::{parts, predict, ModelState};
 pub use room::Room;
-pub use terms::{capture_terms, CaptureTerms, SunMissing};
+pub use terms::{capture_terms, CaptureTerms, SunMissing, SUN_MAX_OFFSET_DEG};

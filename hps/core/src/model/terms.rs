@@ -17,6 +17,11 @@ use glam::DVec3;
 /// measured.
 pub const MIN_COVERAGE: f64 = 0.3;
 
+/// How far from SPA's sun the model looks for the disk, degrees: the camera's orientation as
+/// declared may be off by this much before the orientation effect refits it. The fabric's
+/// accumulators are given a window of the same reach (`skyluxd`).
+pub const SUN_MAX_OFFSET_DEG: f64 = 12.0;
+
 /// Why a capture has no extracted sun.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum SunMissing {
@@ -184,11 +189,16 @@ fn terms_of(
     let sensors = room.sensors.len();
     let search = SunSearch {
         predicted_direction: Some(c.spa_sun),
-        max_offset_deg: 12.0,
+        max_offset_deg: SUN_MAX_OFFSET_DEG,
         ..Default::default()
     };
     let found = if c.spa_sun.z > 0.0 {
-        match extract_sun(&c.map, geometry, &search) {
+        // A sun measured elsewhere (the fabric's accumulators) spares the scan of the map.
+        let found = match &c.sun {
+            Some(s) => Ok(s.clone()),
+            None => extract_sun(&c.map, geometry, &search),
+        };
+        match found {
             Ok(s) if s.direct_normal_illuminance_lux.is_finite() => Ok(s),
             Ok(_) => Err(SunMissing::NotMeasurable),
             Err(e) => Err(SunMissing::NotFound(e)),

@@ -17,7 +17,8 @@ pub use extract::{
     SOLAR_DISK_SR, SUNSHINE_THRESHOLD_CD_M2,
 };
 pub use fabric::{
-    fabric_background_cd_m2, sun_from_fabric, FabricSun, FabricSunSearch, SunExposure,
+    check_sums, fabric_background_cd_m2, sun_from_fabric, FabricSun, FabricSunSearch, SunExposure,
+    FABRIC_THRESHOLD_CD_M2,
 };
 pub use michalsky::solar_position_michalsky;
 pub use orientation::{

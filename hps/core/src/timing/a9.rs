@@ -89,6 +89,13 @@
 //!   **estimate** of 40 core cycles a line (the PL310's by-address operation is a register
 //!   write and a wait on the outer controller, which runs slower than the core); no figure
 //!   for it was found published.
+//! - **\[A12\]** A register access over the lightweight HPS-to-FPGA bridge: an **estimate** of
+//!   1 µs. The access is a strongly ordered load (or store) that crosses the L3 interconnect
+//!   and the bridge (`l4_mp_clk` on the HPS side, `h2f_lw_axi_clk` on the fabric's; Cyclone V
+//!   HPS TRM 683126 §9.3.4, hardware-facts.md §3.1) to the register file's Avalon port
+//!   (`READ_LATENCY_CYCLES` at 100 MHz), and the core waits for it. The TRM gives no latency;
+//!   1 µs is the figure the daemon's fabric model charges a read
+//!   (`skyluxd::fabric_model_source::READ_CYCLES`), not measured on the board.
 
 /// The A9's clock, Hz \[A1\].
 pub const CLOCK_HZ: f64 = 925e6;
@@ -679,6 +686,89 @@ impl SunWork {
             + self.box_groups * sun::box_per_group().cycles()
             + self.ring_box_groups * sun::RING_PER_GROUP.cycles()
             + comparisons * sun::SORT_PER_COMPARISON.cycles()
+    }
+}
+
+/// One access to a fabric register over the lightweight bridge, seconds \[A12\] (**estimate**).
+pub const LW_BRIDGE_ACCESS_S: f64 = 1e-6;
+
+/// The sun from the fabric's accumulators (`sun::fabric`, `skyluxd`'s fabric source and cycle,
+/// issue 22 item 2), per capture.
+pub mod sun_fabric {
+    use super::{Ops, VDIV_F64_CYCLES, VSQRT_F64_CYCLES};
+    /// Register accesses: arming (`sun.frames` read, the four writes of
+    /// `Fabric::sun_configure`) and one consistent read (`Fabric::sun_read`: `sun.frames`,
+    /// the three 64-bit sums as six words, the count, the over-range count, the largest L, the
+    /// box's two words, `sun.frames` again): 5 + 13.
+    pub const REGISTER_ACCESSES: f64 = 18.0;
+    /// The arithmetic of one capture, *estimate* from the source: the solar position for the
+    /// prediction is left out (the cycle computes it in every mode). `FabricSunSearch::around`
+    /// and `config` and `sun_from_fabric` make three projections and three unprojections
+    /// through the lens: five θ(r) inversions of about six Newton steps (the lens polynomial,
+    /// its derivative and a `vdiv.f64`, some 60 instructions a step), about twelve calls of
+    /// libm's `sin`, `cos`, `atan2`, `acos` (some 150 instructions each on armhf, with their
+    /// range reduction), the vignetting polynomial, the centroid's two divisions and the
+    /// rotations: about 5000 instructions, 2000 load/store/VFP slots, the VFP pipeline held by
+    /// some 40 divisions and 8 square roots. (On this x86 machine the same arithmetic and the
+    /// ring's median take 3 µs: `sun_fabric_here_ms`.)
+    pub const ARITHMETIC: Ops = Ops::new(
+        5000.0,
+        2000.0,
+        40.0 * VDIV_F64_CYCLES + 8.0 * VSQRT_F64_CYCLES,
+        0.0,
+    );
+    /// `check_sums`: a dozen compares and six 128-bit multiplies (*estimate*).
+    pub const CHECK: Ops = Ops::new(100.0, 20.0, 0.0, 0.0);
+}
+
+/// The sun from the accumulators' sums: the register accesses \[A12\], the arithmetic, the
+/// circumsolar background from the map (`fabric_background_cd_m2`: `ring_median_cd_m2` over
+/// `ring_box_groups` groups, sorting `ring_values`, at the HPS search's costs per group and
+/// comparison) and the limb (`FabricSun::with_limb`: `limb_groups` groups of the dilated box,
+/// at the scan's cost per group of its box). Instead of [`sun_extraction`]'s scan of the whole
+/// map.
+pub fn sun_fabric(ring_box_groups: f64, ring_values: f64, limb_groups: f64) -> Stage {
+    let comparisons = if ring_values > 1.0 {
+        ring_values * ring_values.log2()
+    } else {
+        0.0
+    };
+    Stage {
+        name: "sun_fabric",
+        passes: vec![
+            Pass {
+                name: "arm and read the accumulators (lightweight bridge)",
+                bytes: Bytes::default(),
+                cycles: sun_fabric::REGISTER_ACCESSES * LW_BRIDGE_ACCESS_S * CLOCK_HZ,
+                parallel: false,
+            },
+            Pass {
+                name: "check the sums, the search window, centroid and calibration",
+                bytes: Bytes::default(),
+                cycles: sun_fabric::CHECK.cycles() + sun_fabric::ARITHMETIC.cycles(),
+                parallel: false,
+            },
+            Pass {
+                name: "limb: the map's groups around the box",
+                bytes: Bytes {
+                    dram_stream: (4.0 + 1.0 + 12.0 + 4.0) * limb_groups,
+                    ..Bytes::default()
+                },
+                cycles: limb_groups * sun::box_per_group().cycles(),
+                parallel: false,
+            },
+            Pass {
+                name: "background: the ring around the box (median)",
+                // Luminance, flag and direction per group of the ring's box, from the map.
+                bytes: Bytes {
+                    dram_stream: (4.0 + 1.0 + 12.0) * ring_box_groups,
+                    ..Bytes::default()
+                },
+                cycles: ring_box_groups * sun::RING_PER_GROUP.cycles()
+                    + comparisons * sun::SORT_PER_COMPARISON.cycles(),
+                parallel: false,
+            },
+        ],
     }
 }
 

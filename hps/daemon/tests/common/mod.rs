@@ -330,8 +330,27 @@ pub fn golden_map(
     hdr: &skylux_regmap::hdr_values::HdrConfig,
     frames: &[skylux_hps::campaign::RawFrame],
 ) -> Vec<u32> {
-    use skylux_rtl::bayer::golden::{expected_words, BayerConfig, Frame, Phase};
     use skylux_rtl::hdr::golden::{select, SetFrame};
+    let grouped: Vec<Vec<u32>> = frames.iter().map(|f| golden_words(device, f)).collect();
+    let set: Vec<SetFrame> = grouped
+        .iter()
+        .enumerate()
+        .map(|(k, words)| SetFrame {
+            exposure_index: k as u8,
+            first_of_set: k == 0,
+            words,
+        })
+        .collect();
+    select(hdr, &set)
+}
+
+/// The grouped words of `frame` (`skylux_rtl::bayer::golden`) with the grouping map mode
+/// programs for `device`.
+pub fn golden_words(
+    device: &skylux_hps::camera::DeviceConfig,
+    f: &skylux_hps::campaign::RawFrame,
+) -> Vec<u32> {
+    use skylux_rtl::bayer::golden::{expected_words, BayerConfig, Frame, Phase};
     let g = skyluxd::fabric_source::MapMode::of_device(
         device,
         skylux_hps::campaign::BayerPattern::GRBG,
@@ -347,25 +366,10 @@ pub fn golden_map(
         weight_b: g.weight_b_q2_14 as u16,
         raw: false,
     };
-    let grouped: Vec<Vec<u32>> = frames
-        .iter()
-        .map(|f| {
-            let frame = Frame {
-                width: f.width,
-                height: f.height,
-                samples: f.samples_dn.clone(),
-            };
-            expected_words(&frame, &bayer)
-        })
-        .collect();
-    let set: Vec<SetFrame> = grouped
-        .iter()
-        .enumerate()
-        .map(|(k, words)| SetFrame {
-            exposure_index: k as u8,
-            first_of_set: k == 0,
-            words,
-        })
-        .collect();
-    select(hdr, &set)
+    let frame = Frame {
+        width: f.width,
+        height: f.height,
+        samples: f.samples_dn.clone(),
+    };
+    expected_words(&frame, &bayer)
 }
