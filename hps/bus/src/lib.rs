@@ -35,6 +35,47 @@ pub trait DmaMemory {
     fn read_bytes(&mut self, offset: u64, buf: &mut [u8]) -> Result<(), BusError>;
     /// Copies `data` into the buffer at byte `offset`.
     fn write_bytes(&mut self, offset: u64, data: &[u8]) -> Result<(), BusError>;
+    /// Appends the `count` little-endian 32-bit words from byte `offset` to `words`. A
+    /// mapping reads them in place in one pass (no zeroed byte buffer, no second pass turning
+    /// bytes into words: two of the frame reader's three passes over a frame on the A9,
+    /// `timing::a9::hps_read`); this default goes through bytes.
+    fn read_words_le(
+        &mut self,
+        offset: u64,
+        count: usize,
+        words: &mut Vec<u32>,
+    ) -> Result<(), BusError> {
+        let mut bytes = vec![0u8; 4 * count];
+        self.read_bytes(offset, &mut bytes)?;
+        words.extend(
+            bytes
+                .chunks_exact(4)
+                .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]])),
+        );
+        Ok(())
+    }
+}
+
+/// Appends `count` little-endian words copied from `src` to `words`: the one pass of
+/// [`DmaMemory::read_words_le`] over a mapping, the C library's memcpy straight into the
+/// words (word and multiple loads from the mapping, as the byte copy did).
+///
+/// # Safety
+/// `src` must be valid for reads of `4 * count` bytes.
+pub(crate) unsafe fn append_words_le(words: &mut Vec<u32>, src: *const u8, count: usize) {
+    words.reserve(count);
+    let start = words.len();
+    // SAFETY: `reserve` made room for `count` more words after `start`; the caller vouches
+    // for `src`; every byte of the new words is written before `set_len`.
+    unsafe {
+        std::ptr::copy_nonoverlapping(src, words.as_mut_ptr().add(start).cast::<u8>(), 4 * count);
+        words.set_len(start + count);
+    }
+    if cfg!(target_endian = "big") {
+        for w in &mut words[start..] {
+            *w = u32::from_le(*w);
+        }
+    }
 }
 
 impl<T: RegisterBus + ?Sized> RegisterBus for &mut T {

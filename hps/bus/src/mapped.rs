@@ -138,4 +138,20 @@ impl DmaMemory for MappedWindow {
         std::sync::atomic::fence(std::sync::atomic::Ordering::SeqCst);
         Ok(())
     }
+
+    fn read_words_le(
+        &mut self,
+        offset: u64,
+        count: usize,
+        words: &mut Vec<u32>,
+    ) -> Result<(), BusError> {
+        let len = 4 * count as u64;
+        check_access(offset, len, self.size, 1)?;
+        std::sync::atomic::fence(std::sync::atomic::Ordering::SeqCst);
+        // The fabric does not write the range while it is read (the ring's descriptor said
+        // the slot is complete).
+        // SAFETY: `offset + len` is inside the mapping (checked above).
+        unsafe { crate::append_words_le(words, self.ptr(offset), count) };
+        Ok(())
+    }
 }

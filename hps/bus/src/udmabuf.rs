@@ -173,6 +173,25 @@ impl DmaMemory for UdmabufWindow {
         Ok(())
     }
 
+    fn read_words_le(
+        &mut self,
+        offset: u64,
+        count: usize,
+        words: &mut Vec<u32>,
+    ) -> Result<(), BusError> {
+        let len = 4 * count as u64;
+        check_access(offset, len, self.size, 1)?;
+        if count == 0 {
+            return Ok(());
+        }
+        // As `read_bytes`: the range invalidated first, then one pass reading it in place.
+        self.sync("sync_for_cpu", offset, len, FROM_DEVICE)?;
+        std::sync::atomic::fence(std::sync::atomic::Ordering::SeqCst);
+        // SAFETY: `offset + len` is inside the mapping (checked above).
+        unsafe { crate::append_words_le(words, self.ptr(offset), count) };
+        Ok(())
+    }
+
     fn write_bytes(&mut self, offset: u64, data: &[u8]) -> Result<(), BusError> {
         check_access(offset, data.len() as u64, self.size, 1)?;
         if data.is_empty() {
@@ -241,6 +260,17 @@ mod tests {
             UdmabufWindow::sync_command(256, 4, FROM_DEVICE)
         );
         assert!(w.read_bytes(4094, &mut buf).is_err(), "out of bounds");
+        // Words read in place: the same little-endian words, appended, the range invalidated.
+        w.write_bytes(1024, &[1, 0, 0, 0, 0xEF, 0xBE, 0xAD, 0xDE]).unwrap();
+        let mut words = vec![7u32];
+        w.read_words_le(1024, 2, &mut words).unwrap();
+        assert_eq!(words, [7, 1, 0xDEAD_BEEF]);
+        assert_eq!(
+            std::fs::read_to_string(class.join("sync_for_cpu")).unwrap(),
+            UdmabufWindow::sync_command(1024, 8, FROM_DEVICE)
+        );
+        assert!(w.read_words_le(4092, 2, &mut words).is_err(), "out of bounds");
+        assert_eq!(words.len(), 3, "nothing appended on an error");
     }
 
     #[test]

@@ -75,6 +75,22 @@ impl DmaMemory for Buffer {
         self.0[o..o + data.len()].copy_from_slice(data);
         Ok(())
     }
+    /// In place, as the mappings read (one pass, `timing::a9::hps_read`).
+    fn read_words_le(
+        &mut self,
+        offset: u64,
+        count: usize,
+        words: &mut Vec<u32>,
+    ) -> Result<(), BusError> {
+        skylux_bus::check_access(offset, 4 * count as u64, self.len_bytes(), 1)?;
+        let o = offset as usize;
+        words.extend(
+            self.0[o..o + 4 * count]
+                .chunks_exact(4)
+                .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]])),
+        );
+        Ok(())
+    }
 }
 
 /// Runs the budget; prints JSON (and a table unless `json`).

@@ -54,6 +54,17 @@ impl DmaMemory for DmaWindow {
             DmaWindow::Cached(w) => w.write_bytes(offset, data),
         }
     }
+    fn read_words_le(
+        &mut self,
+        offset: u64,
+        count: usize,
+        words: &mut Vec<u32>,
+    ) -> Result<(), BusError> {
+        match self {
+            DmaWindow::Uncached(w) => w.read_words_le(offset, count, words),
+            DmaWindow::Cached(w) => w.read_words_le(offset, count, words),
+        }
+    }
 }
 
 /// Why the windows could not be mapped.

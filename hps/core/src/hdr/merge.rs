@@ -381,11 +381,14 @@ impl Merger {
         signal_dn: f64,
         inverse_vignetting: f32,
     ) -> Option<(f32, f32)> {
-        let (tg, shot) = (*self.tg.get(k)?, self.shot_var_per_rate[k]);
-        let rate = signal_dn / tg;
-        let inv = tg * tg / (rate.max(0.0) * shot + self.floor_var);
+        let (inv_tg, shot) = (*self.inv_tg.get(k)?, self.shot_var_per_rate[k]);
+        // One division and one square root a group (the A9's VFP holds the pipeline 20 and
+        // 28 cycles for them: `timing::a9::fabric_map`): the rate by the precomputed 1/(t g),
+        // and σ_rate = sqrt(rate⁺ shot + floor) / (t g), relative to |rate|.
+        let rate = signal_dn * inv_tg;
         let luminance = (self.cg * rate * inverse_vignetting as f64) as f32;
-        Some((luminance, ((1.0 / inv).sqrt() / rate.abs()) as f32))
+        let sigma = (rate.max(0.0) * shot + self.floor_var).sqrt() * inv_tg / rate.abs();
+        Some((luminance, sigma as f32))
     }
 
     /// Merges group row `gy`: a first pass per exposure over the row's groups (the frame's

@@ -287,27 +287,9 @@ pub fn hps_read(frames: f64, words_per_frame: f64) -> Stage {
         name: "hps_read",
         passes: vec![
             Pass {
-                name: "zero the payload buffer (vec![0u8; 4n]: calloc)",
-                bytes: Bytes {
-                    dram_fill: bytes,
-                    ..Bytes::default()
-                },
-                cycles: 0.0,
-                parallel: false,
-            },
-            Pass {
-                name: "copy out of the uncached ring (memcpy)",
+                name: "copy out of the uncached ring into words (memcpy, read_words_le)",
                 bytes: Bytes {
                     uncached_read: bytes,
-                    ..Bytes::default()
-                },
-                cycles: 0.0,
-                parallel: false,
-            },
-            Pass {
-                name: "bytes to words (collect, compiled to memcpy)",
-                bytes: Bytes {
-                    dram_stream: 2.0 * bytes,
                     ..Bytes::default()
                 },
                 cycles: 0.0,
@@ -345,41 +327,22 @@ pub fn hps_read(frames: f64, words_per_frame: f64) -> Stage {
 }
 
 /// Map mode's ring read (`[fabric] hdr = "fabric"`, issue 22 item 1): the one map of `words`
-/// words, copied out of the uncached ring into words; no checksum (a map carries none) and no
-/// unpacking (the words go to `hdr::fabric_map` as they are).
+/// words, copied out of the uncached ring straight into words (`DmaMemory::read_words_le`: no
+/// zeroed byte buffer, no pass from bytes to words); no unpacking (the words go to
+/// `hdr::fabric_map` as they are).
 pub fn hps_read_map(words: f64) -> Stage {
     let bytes = 4.0 * words;
     Stage {
         name: "hps_read_map",
-        passes: vec![
-            Pass {
-                name: "zero the payload buffer (vec![0u8; 4n]: calloc)",
-                bytes: Bytes {
-                    dram_fill: bytes,
-                    ..Bytes::default()
-                },
-                cycles: 0.0,
-                parallel: false,
+        passes: vec![Pass {
+            name: "copy out of the uncached ring into words (memcpy, read_words_le)",
+            bytes: Bytes {
+                uncached_read: bytes,
+                ..Bytes::default()
             },
-            Pass {
-                name: "copy out of the uncached ring (memcpy)",
-                bytes: Bytes {
-                    uncached_read: bytes,
-                    ..Bytes::default()
-                },
-                cycles: 0.0,
-                parallel: false,
-            },
-            Pass {
-                name: "bytes to words (collect, compiled to memcpy)",
-                bytes: Bytes {
-                    dram_stream: 2.0 * bytes,
-                    ..Bytes::default()
-                },
-                cycles: 0.0,
-                parallel: false,
-            },
-        ],
+            cycles: 0.0,
+            parallel: false,
+        }],
     }
 }
 
@@ -421,16 +384,12 @@ pub fn hps_read_map_cached(words: f64) -> Stage {
 pub mod fabric_map {
     use super::{Ops, VDIV_F64_CYCLES, VSQRT_F64_CYCLES};
     /// A valid group: the word's fields and the usable test (about 15 integer instructions),
-    /// `Merger::single`: `vdiv.f64` for the rate, one for the inverse variance, one for the
-    /// sigma's 1/inv, a `vsqrt.f64`, four `vmul.f64`/`vmla.f64`, two conversions and the three
-    /// stores: about 45 instructions, 25 load/store/VFP slots, the VFP pipeline held by the
-    /// three divisions and the square root.
-    pub const VALID_GROUP: Ops = Ops::new(
-        45.0,
-        25.0,
-        3.0 * VDIV_F64_CYCLES + VSQRT_F64_CYCLES + 8.0,
-        0.0,
-    );
+    /// `Merger::single`: the rate by the precomputed 1/(t g) (`vmul.f64`), one `vsqrt.f64`
+    /// and one `vdiv.f64` for the relative sigma, four `vmul.f64`/`vmla.f64`, two
+    /// conversions and the three stores: about 45 instructions, 25 load/store/VFP slots, the
+    /// VFP pipeline held by the division and the square root.
+    pub const VALID_GROUP: Ops =
+        Ops::new(45.0, 25.0, VDIV_F64_CYCLES + VSQRT_F64_CYCLES + 8.0, 0.0);
     /// A flagged group: the fields, the usable test and the flag's store.
     pub const FLAGGED_GROUP: Ops = Ops::new(20.0, 4.0, 0.0, 0.0);
 }
@@ -866,31 +825,31 @@ mod tests {
         assert!(big.memory_s() > big.compute_s());
     }
 
-    /// One frame of 1,000 words: the passes' memory in microseconds by hand, the checksum's
-    /// and the unpacking's compute (2 and 2.5 cycles a word) under their memory.
+    /// One frame of 1,000 words: the passes' memory in microseconds by hand (the words read
+    /// in place: no zeroed byte buffer, no conversion pass), the checksum's and the
+    /// unpacking's compute (2 and 2.5 cycles a word) under their memory.
     #[test]
     fn hps_read_of_one_small_frame() {
         let s = hps_read(1.0, 1000.0);
         let fill = 4000.0 / DRAM_FILL_BYTES_PER_S;
         let uncached = 4000.0 / 64e6; // 62.5 µs
         assert!(close(uncached, 62.5e-6));
-        let stream = (8000.0 + 4000.0 + 8000.0) / 387.7e6;
-        assert!(close(s.memory_s(), 2.0 * fill + uncached + stream));
+        let stream = (4000.0 + 8000.0) / 387.7e6;
+        assert!(close(s.memory_s(), fill + uncached + stream));
         assert!(close(s.compute_s(), 4500.0 / 925e6));
         assert!(close(s.seconds(1), s.memory_s()));
-        assert_eq!(s.passes.len(), 6);
+        assert_eq!(s.passes.len(), 4);
     }
 
-    /// A map of 1,000 words read cached: the invalidation (125 lines × 40 cycles), a zero
-    /// fill, then 16,000 bytes of cached traffic (the copy and the conversion) instead of
-    /// the uncached read; faster than the uncached read.
+    /// A map of 1,000 words read cached: the invalidation (125 lines × 40 cycles), then
+    /// 8,000 bytes of cached traffic (the copy into words) instead of the uncached read;
+    /// faster than the uncached read.
     #[test]
     fn a_cached_map_read_invalidates_then_streams() {
         let s = hps_read_map_cached(1000.0);
-        assert_eq!(s.passes.len(), 4);
+        assert_eq!(s.passes.len(), 2);
         assert!(close(s.compute_s(), 125.0 * 40.0 / 925e6));
-        let fill = 4000.0 / DRAM_FILL_BYTES_PER_S;
-        assert!(close(s.memory_s(), fill + 16_000.0 / 387.7e6));
+        assert!(close(s.memory_s(), 8_000.0 / 387.7e6));
         assert!(s.seconds(1) < hps_read_map(1000.0).seconds(1));
     }
 
@@ -956,7 +915,7 @@ mod tests {
         assert_eq!(sun::candidate_valid().cycles(), 56.0);
         assert_eq!(sun::box_per_group().cycles(), 41.0);
         let read = hps_read(5.0, 1296.0 * 1944.0);
-        let uncached: f64 = read.passes[1].memory_s();
+        let uncached: f64 = read.passes[0].memory_s();
         assert!((uncached - 0.787).abs() < 0.001, "{uncached}");
     }
 }
