@@ -57,9 +57,11 @@ pub const BLOCKS: &[ExportedBlock] = &[
         name: "raybox_unit",
         verilog: fresh::<skylux_rtl::raybox::RayBoxUnit<{ skylux_rtl::raybox::DEFAULT_LANES }>>,
     },
+    // The BVH ray unit's traversal: `RAYS_IN_FLIGHT` rays interleaved (the one-ray
+    // `BvhTraversal` is not exported).
     ExportedBlock {
         name: "bvh_traversal",
-        verilog: fresh::<skylux_rtl::bvh::BvhTraversal>,
+        verilog: fresh::<skylux_rtl::bvh::BvhInterleaved>,
     },
 ];
 

@@ -1,5 +1,5 @@
-//! The BVH traversal core's Verilog (exported from a fresh instance) against its rust-hdl
-//! simulation: a recorded run (a real tree over random boxes in both orders, a chain deeper
+//! The BVH traversal core's Verilog (the exported `BvhInterleaved`, from a fresh instance)
+//! against its rust-hdl simulation: a recorded run (rays interleaved) (a real tree over random boxes in both orders, a chain deeper
 //! than the stack, a ring, hostile rays, random input gaps and output back-pressure, garbage
 //! on idle inputs), itself checked against `bvh_format::result_words`, replayed in Icarus;
 //! and a tampered Verilog caught.
@@ -9,10 +9,11 @@ use rand::{Rng, SeedableRng};
 use rust_hdl::prelude::*;
 use skylux_bitstream::xcheck::{self, Tool};
 use skylux_regmap::bvh_format::{
-    result_words, Order, RayF32, UnitNode, NODE_WORDS, RAY_WORDS, STACK_DEPTH,
+    result_tag, result_words, split_rays, Order, RayF32, UnitNode, NODE_WORDS, RAY_WORDS,
+    STACK_DEPTH,
 };
 use skylux_rtl::bvh::bench::{build_tree, chain, ring, Aabb, BvhBench};
-use skylux_rtl::bvh::BvhTraversal;
+use skylux_rtl::bvh::{BvhInterleaved, RAYS_IN_FLIGHT};
 
 /// A ray from a random origin toward `target` (grid steps).
 fn ray(rng: &mut StdRng, target: [i32; 3]) -> [u64; RAY_WORDS] {
@@ -55,6 +56,7 @@ fn bvh_traversal_verilog_equals_rust_hdl() {
     bench.driver.record();
     bench.idle(3);
     let mut candidates = 0;
+    let mut interleaved = 0;
     for (nodes, order) in [
         (tree.clone(), Order::NearFirst),
         (tree, Order::ChildOrder),
@@ -64,15 +66,11 @@ fn bvh_traversal_verilog_equals_rust_hdl() {
         let packed: Vec<[u64; NODE_WORDS]> = nodes.iter().map(UnitNode::pack).collect();
         bench.load(&packed);
         bench.configure(nodes.len(), order);
-        let rays: Vec<[u64; RAY_WORDS]> = (0..12)
+        let rays: Vec<[u64; RAY_WORDS]> = (0..2 * RAYS_IN_FLIGHT)
             .map(|_| {
                 let (lo, hi) = leaves[rng.gen_range(0..leaves.len())].1;
                 ray(&mut rng, std::array::from_fn(|i| lo[i] / 2 + hi[i] / 2))
             })
-            .collect();
-        let want: Vec<u64> = rays
-            .iter()
-            .flat_map(|r| result_words(&nodes, r, order))
             .collect();
         let mut gaps = StdRng::seed_from_u64(1);
         let mut ready = StdRng::seed_from_u64(2);
@@ -85,14 +83,31 @@ fn bvh_traversal_verilog_equals_rust_hdl() {
             )
             .expect("every ray ends");
         // The recorded run is itself right, so the replay compares against a meaningful trace.
-        assert_eq!(run.words, want, "rust-hdl vs golden, {} nodes", nodes.len());
+        let want: Vec<Vec<u64>> = rays
+            .iter()
+            .zip(&run.tags)
+            .map(|(r, &t)| result_words(&nodes, r, order, t))
+            .collect();
+        assert_eq!(
+            split_rays(&run.words, &run.tags),
+            Some(want),
+            "rust-hdl vs golden, {} nodes",
+            nodes.len()
+        );
         candidates += run.words.iter().filter(|&&w| w >> 63 == 0).count();
+        // A ray's candidate followed by another ray's word: the rays were interleaved.
+        interleaved += run
+            .words
+            .windows(2)
+            .filter(|w| w[0] >> 63 == 0 && result_tag(w[0]) != result_tag(w[1]))
+            .count();
         bench.idle(2);
     }
     assert!(candidates > 15, "too few candidates: {candidates}");
+    assert!(interleaved > 5, "rays hardly interleaved: {interleaved}");
 
     let trace = bench.driver.take_trace();
-    let mut fresh = BvhTraversal::default();
+    let mut fresh = BvhInterleaved::default();
     fresh.connect_all();
     let verilog = generate_verilog(&fresh);
     let report = xcheck::replay("bvh_traversal", &verilog, &trace).unwrap();
@@ -106,8 +121,8 @@ fn bvh_traversal_verilog_equals_rust_hdl() {
 
     // The stack overflow's refusal code changed (2 to 3) must be caught on the result data.
     let tampered = verilog.replacen(
-        "localparam  stack_overflow = 8'h2",
-        "localparam  stack_overflow = 8'h3",
+        "localparam  stack_overflow = 3'b10",
+        "localparam  stack_overflow = 3'b11",
         1,
     );
     assert_ne!(

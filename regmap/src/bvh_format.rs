@@ -45,20 +45,38 @@
 //!
 //! Traversal starts at node 0 (the HPS makes it hold the tree's root as its child 0).
 //!
-//! # Rays and results
+//! # Rays and results (format v2)
 //!
 //! A ray is [`RAY_WORDS`] words of f32 bit patterns: `origin x | origin y << 32`,
 //! `origin z | inv x << 32`, `inv y | inv z << 32`, `t_min | t_max << 32`. For each ray the
-//! unit writes its candidates, then one end word:
+//! unit writes its candidates as it finds them, then one end word; every word carries the
+//! ray's tag:
 //!
 //! ```text
-//! candidate  [31:0] t_near (2^-12 m, signed)  [45:32] leaf  [62:46] 0        [63] 0
-//! end        [31:0] candidates written        [39:32] refusal (0: none)    [63] 1
+//! candidate  [31:0] t_near (2^-12 m, signed)  [45:32] leaf  [53:46] tag  [62:54] 0  [63] 0
+//! end        [31:0] candidates written  [39:32] refusal (0: none)  [47:40] tag  [62:48] 0
+//!            [63] 1
 //! ```
 //!
-//! A refused ray (a value the grid cannot hold, a stack overflow, a reference outside the
-//! memory, a traversal longer than the memory) ends with its refusal code and the HPS answers
-//! it in software.
+//! **Tags.** A ray's tag is its sequence number modulo 256 ([`TAG_BITS`]): the number of rays
+//! the unit accepted before it since it was last idle. The unit is idle when it holds no ray
+//! word, traverses no ray and has no result word unread; its tag counter restarts at 0 on
+//! every such clock (power-up is one). So a HPS that sends a ray only after reading the end
+//! word of every ray it sent before numbers its rays 0, 1, 2, ... from that ray on, in the
+//! order it sends them.
+//!
+//! **Order.** The unit holds several rays at once (the RTL's `RAYS_IN_FLIGHT`, 8), so words
+//! of different rays may interleave in the output; each ray's own words keep their order
+//! (its candidates in the order of [`traverse`], then its end word). The unit holds far
+//! fewer than 256 rays, so a ray enters only after the end word of the ray 256 before it (the
+//! same tag) was written: each word belongs to the earliest ray of its tag whose end word has
+//! not come ([`split_rays`]).
+//!
+//! **Refusals.** A refused ray (a value the grid cannot hold, a stack overflow, a reference
+//! outside the memory, a traversal longer than the memory) ends with its refusal code. The
+//! candidates it found before the refusal were already streamed and are counted in its end
+//! word; the HPS discards them and answers the ray in software. So the end word always
+//! counts the candidate words written with its tag.
 
 use crate::raybox_format::{test, WorkItem, COORD_BITS, MANT_MAX};
 use alloc::vec::Vec;
@@ -88,6 +106,13 @@ pub const REF_LEAF: u16 = 1 << 14;
 pub const REF_INDEX_MASK: u16 = (1 << 14) - 1;
 /// Bit of a result word that marks a ray's end word.
 pub const RESULT_END_BIT: u32 = 63;
+/// Width of a ray's tag (module docs): 256 rays may be unanswered at once, far more than the
+/// unit holds.
+pub const TAG_BITS: u32 = 8;
+/// Where a candidate word's tag starts (after the leaf's 14 bits at 32).
+pub const CANDIDATE_TAG_SHIFT: u32 = 46;
+/// Where an end word's tag starts (after the refusal code at 32).
+pub const END_TAG_SHIFT: u32 = 40;
 
 /// Why the unit refused a ray (the end word's refusal code).
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -386,29 +411,47 @@ pub struct Candidate {
     pub t_near: i32,
 }
 
-/// Packs a candidate word.
-pub const fn pack_candidate(c: Candidate) -> u64 {
-    (c.t_near as u32 as u64) | (((c.leaf & REF_INDEX_MASK) as u64) << 32)
+/// Packs a candidate word of the ray tagged `tag`.
+pub const fn pack_candidate(c: Candidate, tag: u8) -> u64 {
+    (c.t_near as u32 as u64)
+        | (((c.leaf & REF_INDEX_MASK) as u64) << 32)
+        | ((tag as u64) << CANDIDATE_TAG_SHIFT)
 }
 
-/// Packs a ray's end word.
-pub const fn pack_end(candidates: u32, refusal: Option<Refusal>) -> u64 {
+/// Packs the end word of the ray tagged `tag`.
+pub const fn pack_end(candidates: u32, refusal: Option<Refusal>, tag: u8) -> u64 {
     let code = match refusal {
         Some(r) => r.code(),
         None => 0,
     };
-    (candidates as u64) | ((code as u64) << 32) | (1u64 << RESULT_END_BIT)
+    (candidates as u64)
+        | ((code as u64) << 32)
+        | ((tag as u64) << END_TAG_SHIFT)
+        | (1u64 << RESULT_END_BIT)
 }
 
 /// What a result word says.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum ResultWord {
-    Candidate(Candidate),
+    Candidate {
+        candidate: Candidate,
+        tag: u8,
+    },
     /// The ray's end: candidates written, refusal code (0: none).
     End {
         candidates: u32,
         refusal_code: u8,
+        tag: u8,
     },
+}
+
+impl ResultWord {
+    /// The tag of the ray the word belongs to.
+    pub const fn tag(&self) -> u8 {
+        match self {
+            ResultWord::Candidate { tag, .. } | ResultWord::End { tag, .. } => *tag,
+        }
+    }
 }
 
 pub const fn unpack_result(word: u64) -> ResultWord {
@@ -416,28 +459,37 @@ pub const fn unpack_result(word: u64) -> ResultWord {
         ResultWord::End {
             candidates: word as u32,
             refusal_code: (word >> 32) as u8,
+            tag: (word >> END_TAG_SHIFT) as u8,
         }
     } else {
-        ResultWord::Candidate(Candidate {
-            leaf: ((word >> 32) as u16) & REF_INDEX_MASK,
-            t_near: word as u32 as i32,
-        })
+        ResultWord::Candidate {
+            candidate: Candidate {
+                leaf: ((word >> 32) as u16) & REF_INDEX_MASK,
+                t_near: word as u32 as i32,
+            },
+            tag: (word >> CANDIDATE_TAG_SHIFT) as u8,
+        }
     }
 }
 
+/// The tag of any result word.
+pub const fn result_tag(word: u64) -> u8 {
+    unpack_result(word).tag()
+}
+
+/// One ray's traversal: the candidates in the order the unit writes them (up to the refusal
+/// point when refused), and the refusal.
+pub type Traversal = (Vec<Candidate>, Option<Refusal>);
+
 /// The golden model of one ray's traversal: the candidates in the order the unit writes
-/// them, or why it refused the ray (the candidates written before a refusal are dropped by
-/// the HPS, which answers the whole ray in software).
+/// them and, for a refused ray, why (its candidates found before the refusal are written
+/// too; the HPS drops them and answers the whole ray in software).
 ///
 /// Depth first from node 0: at a node, both valid children are tested; of those hit, the
 /// first in `order` is visited and the other pushed with its entry distance; a leaf visited
 /// or popped is written as a candidate. Each node visit counts; more visits than
 /// `nodes.len()` (a cycle in the references) refuses the ray.
-pub fn traverse(
-    nodes: &[UnitNode],
-    words: &[u64; RAY_WORDS],
-    order: Order,
-) -> Result<Vec<Candidate>, Refusal> {
+pub fn traverse(nodes: &[UnitNode], words: &[u64; RAY_WORDS], order: Order) -> Traversal {
     traverse_counting(nodes, words, order, &mut 0)
 }
 
@@ -448,9 +500,21 @@ pub fn traverse_counting(
     words: &[u64; RAY_WORDS],
     order: Order,
     visits: &mut usize,
-) -> Result<Vec<Candidate>, Refusal> {
-    let ray = grid_ray(words).ok_or(Refusal::Unrepresentable)?;
+) -> Traversal {
     let mut out = Vec::new();
+    let refusal = walk(nodes, words, order, visits, &mut out).err();
+    (out, refusal)
+}
+
+/// [`traverse_counting`]'s walk, writing candidates to `out` as found.
+fn walk(
+    nodes: &[UnitNode],
+    words: &[u64; RAY_WORDS],
+    order: Order,
+    visits: &mut usize,
+    out: &mut Vec<Candidate>,
+) -> Result<(), Refusal> {
+    let ray = grid_ray(words).ok_or(Refusal::Unrepresentable)?;
     let mut stack: Vec<(u16, i32)> = Vec::with_capacity(STACK_DEPTH);
     let mut current = 0usize;
     let start = *visits;
@@ -499,23 +563,49 @@ pub fn traverse_counting(
                 }
                 None => match stack.pop() {
                     Some(e) => next = Some(e),
-                    None => return Ok(out),
+                    None => return Ok(()),
                 },
             }
         }
     }
 }
 
-/// The result words the unit writes for one ray.
-pub fn result_words(nodes: &[UnitNode], words: &[u64; RAY_WORDS], order: Order) -> Vec<u64> {
-    match traverse(nodes, words, order) {
-        Ok(c) => {
-            let mut out: Vec<u64> = c.iter().map(|&c| pack_candidate(c)).collect();
-            out.push(pack_end(c.len() as u32, None));
-            out
-        }
-        Err(r) => alloc::vec![pack_end(0, Some(r))],
+/// The result words the unit writes for one ray tagged `tag`: its candidates (up to the
+/// refusal point when refused), then its end word counting them.
+pub fn result_words(
+    nodes: &[UnitNode],
+    words: &[u64; RAY_WORDS],
+    order: Order,
+    tag: u8,
+) -> Vec<u64> {
+    let (candidates, refusal) = traverse(nodes, words, order);
+    let mut out: Vec<u64> = candidates.iter().map(|&c| pack_candidate(c, tag)).collect();
+    out.push(pack_end(candidates.len() as u32, refusal, tag));
+    out
+}
+
+/// Splits a result stream into each ray's words, in arrival order, given the rays' tags in
+/// the order they were sent. Rays may share a tag (the count restarted, or came round after
+/// 256), but a ray's tag is reused only after its end word (the unit holds far fewer than
+/// 256 rays), so each word belongs to the earliest ray of its tag whose end word has not
+/// come. `None` when a word belongs to no ray.
+pub fn split_rays(words: &[u64], tags: &[u8]) -> Option<Vec<Vec<u64>>> {
+    let mut out: Vec<Vec<u64>> = alloc::vec![Vec::new(); tags.len()];
+    // Per tag, the rays carrying it, and how many of them have ended.
+    let mut rays: Vec<Vec<usize>> = alloc::vec![Vec::new(); 1 << TAG_BITS];
+    for (k, &t) in tags.iter().enumerate() {
+        rays[t as usize].push(k);
     }
+    let mut ended = alloc::vec![0usize; 1 << TAG_BITS];
+    for &w in words {
+        let tag = result_tag(w) as usize;
+        let ray = *rays[tag].get(ended[tag])?;
+        out[ray].push(w);
+        if w >> RESULT_END_BIT == 1 {
+            ended[tag] += 1;
+        }
+    }
+    Some(out)
 }
 
 #[cfg(test)]
@@ -562,14 +652,26 @@ mod tests {
             leaf: 0x3abc,
             t_near: -7,
         };
-        assert_eq!(unpack_result(pack_candidate(c)), ResultWord::Candidate(c));
+        let w = pack_candidate(c, 0xa5);
         assert_eq!(
-            unpack_result(pack_end(12, Some(Refusal::Runaway))),
-            ResultWord::End {
-                candidates: 12,
-                refusal_code: 4
+            unpack_result(w),
+            ResultWord::Candidate {
+                candidate: c,
+                tag: 0xa5
             }
         );
+        assert_eq!(w >> 54, 0, "bits [63:54] of a candidate are 0");
+        let e = pack_end(12, Some(Refusal::Runaway), 0xff);
+        assert_eq!(
+            unpack_result(e),
+            ResultWord::End {
+                candidates: 12,
+                refusal_code: 4,
+                tag: 0xff
+            }
+        );
+        assert_eq!(e, 12 | 4 << 32 | 0xff << 40 | 1 << 63);
+        assert_eq!(result_tag(e), 0xff);
     }
 
     #[test]
@@ -623,13 +725,14 @@ mod tests {
                 reference: [leaf(5), leaf(6)],
             },
         ];
-        let near_first = traverse(&nodes, &ray_x(), Order::NearFirst).unwrap();
+        let (near_first, refusal) = traverse(&nodes, &ray_x(), Order::NearFirst);
+        assert_eq!(refusal, None);
         assert_eq!(
             near_first.iter().map(|c| c.leaf).collect::<Vec<_>>(),
             [6, 5]
         );
         assert!(near_first[0].t_near <= 2 * 4096 && near_first[0].t_near > 2 * 4096 - 8);
-        let child_order = traverse(&nodes, &ray_x(), Order::ChildOrder).unwrap();
+        let (child_order, _) = traverse(&nodes, &ray_x(), Order::ChildOrder);
         assert_eq!(
             child_order.iter().map(|c| c.leaf).collect::<Vec<_>>(),
             [5, 6]
@@ -637,16 +740,18 @@ mod tests {
         // A ray 2 m off in y misses both leaves (and the root box).
         let mut off = ray_x();
         off[0] = 0f32.to_bits() as u64 | ((2.0f32.to_bits() as u64) << 32);
-        assert_eq!(traverse(&nodes, &off, Order::NearFirst), Ok(Vec::new()));
-        let words = result_words(&nodes, &ray_x(), Order::NearFirst);
+        assert_eq!(traverse(&nodes, &off, Order::NearFirst), (Vec::new(), None));
+        let words = result_words(&nodes, &ray_x(), Order::NearFirst, 7);
         assert_eq!(words.len(), 3);
         assert_eq!(
             unpack_result(words[2]),
             ResultWord::End {
                 candidates: 2,
-                refusal_code: 0
+                refusal_code: 0,
+                tag: 7
             }
         );
+        assert!(words.iter().all(|&w| result_tag(w) == 7));
     }
 
     #[test]
@@ -659,7 +764,7 @@ mod tests {
         }];
         assert_eq!(
             traverse(&self_loop, &ray_x(), Order::NearFirst),
-            Err(Refusal::Runaway)
+            (Vec::new(), Some(Refusal::Runaway))
         );
         let dangling = [UnitNode {
             reference: [node(9), 0],
@@ -667,13 +772,13 @@ mod tests {
         }];
         assert_eq!(
             traverse(&dangling, &ray_x(), Order::NearFirst),
-            Err(Refusal::BadReference)
+            (Vec::new(), Some(Refusal::BadReference))
         );
         let mut nan = ray_x();
         nan[3] = f32::NAN.to_bits() as u64;
         assert_eq!(
             traverse(&self_loop, &nan, Order::NearFirst),
-            Err(Refusal::Unrepresentable)
+            (Vec::new(), Some(Refusal::Unrepresentable))
         );
         // A chain deeper than the stack: every node pushes leaf 0 and descends.
         let chain: Vec<UnitNode> = (0..STACK_DEPTH as u16 + 2)
@@ -683,16 +788,50 @@ mod tests {
                 reference: [node(i + 1), leaf(0)],
             })
             .collect();
+        // Nothing is popped before the overflow, so no candidate is written.
         assert_eq!(
             traverse(&chain, &ray_x(), Order::ChildOrder),
-            Err(Refusal::StackOverflow)
+            (Vec::new(), Some(Refusal::StackOverflow))
         );
         assert_eq!(
-            unpack_result(result_words(&chain, &ray_x(), Order::ChildOrder)[0]),
+            unpack_result(result_words(&chain, &ray_x(), Order::ChildOrder, 3)[0]),
             ResultWord::End {
                 candidates: 0,
-                refusal_code: 2
+                refusal_code: 2,
+                tag: 3
             }
         );
+        // A ring whose nodes each write a leaf: the candidates before the runaway are
+        // written, counted by the refused end word.
+        let ring: Vec<UnitNode> = (0..3u16)
+            .map(|i| UnitNode {
+                lower: [everywhere.0; 2],
+                upper: [everywhere.1; 2],
+                reference: [leaf(10 + i), node((i + 1) % 3)],
+            })
+            .collect();
+        let (c, r) = traverse(&ring, &ray_x(), Order::ChildOrder);
+        assert_eq!(r, Some(Refusal::Runaway));
+        assert_eq!(c.iter().map(|c| c.leaf).collect::<Vec<_>>(), [10, 11, 12]);
+        let words = result_words(&ring, &ray_x(), Order::ChildOrder, 200);
+        assert_eq!(words.len(), 4);
+        assert_eq!(
+            unpack_result(words[3]),
+            ResultWord::End {
+                candidates: 3,
+                refusal_code: 4,
+                tag: 200
+            }
+        );
+        // Rays 0 and 256 share tag 0; ray 1 interleaves with ray 0.
+        let a = result_words(&ring, &ray_x(), Order::ChildOrder, 0);
+        let b = result_words(&ring, &ray_x(), Order::NearFirst, 1);
+        let mut stream = alloc::vec![a[0], b[0], a[1], b[1], b[2], a[2], a[3], b[3]];
+        stream.extend(&a);
+        let tags: Vec<u8> = (0..257).map(|k| k as u8).collect();
+        let split = split_rays(&stream, &tags).unwrap();
+        assert_eq!((&split[0], &split[1], &split[256]), (&a, &b, &a));
+        assert!(split[2..256].iter().all(Vec::is_empty));
+        assert_eq!(split_rays(&stream, &tags[..256]), None);
     }
 }

@@ -9,12 +9,12 @@ use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 use rust_hdl::prelude::*;
 use skylux_regmap::bvh_format::{
-    grid_ray, result_words, Order, RayF32, UnitNode, MAX_NODES, NODE_WORDS, RAY_WORDS,
+    grid_ray, result_words, split_rays, Order, RayF32, UnitNode, MAX_NODES, NODE_WORDS, RAY_WORDS,
     REF_INDEX_MASK, REF_LEAF, REF_VALID, STACK_DEPTH,
 };
 use skylux_regmap::raybox_format::{COORD_MAX, COORD_MIN};
-use skylux_rtl::bvh::bench::{build_tree, chain, ring, Aabb, BvhBench};
-use skylux_rtl::bvh::{BvhTraversal, RayFrontEnd, VISIT_CYCLES};
+use skylux_rtl::bvh::bench::{build_tree, chain, ring, Aabb, Bench, BvhBlock, Run};
+use skylux_rtl::bvh::{BvhInterleaved, BvhTraversal, RayFrontEnd, RAYS_IN_FLIGHT, VISIT_CYCLES};
 use skylux_rtl::drive::Driver;
 
 // ---- the front end ---------------------------------------------------------------------
@@ -292,15 +292,26 @@ fn random_batch(rng: &mut StdRng) -> Batch {
     }
 }
 
-fn expected(batch: &Batch) -> Vec<u64> {
-    batch
-        .rays
-        .iter()
-        .flat_map(|r| result_words(&batch.nodes, r, batch.order))
+/// Each ray's words, with the tags the run gave the rays.
+fn per_ray(
+    nodes: &[UnitNode],
+    rays: &[[u64; RAY_WORDS]],
+    order: Order,
+    tags: &[u8],
+) -> Vec<Vec<u64>> {
+    assert_eq!(rays.len(), tags.len());
+    rays.iter()
+        .zip(tags)
+        .map(|(r, &t)| result_words(nodes, r, order, t))
         .collect()
 }
 
-fn load(bench: &mut BvhBench, batch: &Batch) {
+/// The block's output split into rays by tag (words of different rays may interleave).
+fn split(run: &Run) -> Vec<Vec<u64>> {
+    split_rays(&run.words, &run.tags).expect("every word belongs to a ray of the batch")
+}
+
+fn load<B: BvhBlock>(bench: &mut Bench<B>, batch: &Batch) {
     let words: Vec<[u64; NODE_WORDS]> = batch
         .nodes
         .iter()
@@ -311,38 +322,71 @@ fn load(bench: &mut BvhBench, batch: &Batch) {
     bench.configure(batch.nodes.len(), batch.order);
 }
 
+/// Several batches through one instance (the node memory reloaded between them): each ray's
+/// words equal the golden model's, with random input gaps and output back-pressure.
+fn batches_equal_result_words<B: BvhBlock>(
+    seed: u64,
+    offer_p: f64,
+    ready_p: f64,
+    batches: usize,
+    rays: std::ops::Range<usize>,
+) -> Result<(), TestCaseError> {
+    let mut rng = StdRng::seed_from_u64(seed);
+    let mut bench = Bench::<B>::new(seed);
+    bench.idle(2);
+    for b in 0..batches {
+        let mut batch = random_batch(&mut rng);
+        let sample = if batch.nodes.is_empty() {
+            build_tree(&[(0, random_box(&mut rng))])
+        } else {
+            batch.nodes.clone()
+        };
+        let n = rng.gen_range(rays.clone());
+        while batch.rays.len() < n {
+            batch.rays.push(random_ray(&mut rng, &sample));
+        }
+        load(&mut bench, &batch);
+        let mut gaps = StdRng::seed_from_u64(seed ^ 0x5eed);
+        let mut ready = StdRng::seed_from_u64(seed ^ 0xbeef);
+        let run = bench
+            .run(
+                &batch.rays,
+                || gaps.gen_bool(offer_p),
+                || ready.gen_bool(ready_p),
+                2_000_000,
+            )
+            .expect("every ray ends");
+        let want = per_ray(&batch.nodes, &batch.rays, batch.order, &run.tags);
+        prop_assert_eq!(&split(&run), &want, "seed {} batch {}", seed, b);
+        bench.idle(3);
+        prop_assert!(!bench.busy(), "busy after the batch");
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(48))]
 
-    /// Several batches through one instance (the node memory reloaded between them): every
-    /// word equals the golden model's, with random input gaps and output back-pressure.
+    /// One ray in flight.
     #[test]
     fn traversal_equals_result_words(
         seed in any::<u64>(),
         offer_p in prop_oneof![Just(1.0f64), 0.2f64..1.0],
         ready_p in prop_oneof![Just(1.0f64), 0.1f64..1.0],
     ) {
-        let mut rng = StdRng::seed_from_u64(seed);
-        let mut bench = BvhBench::new(seed);
-        bench.idle(2);
-        for b in 0..3 {
-            let batch = random_batch(&mut rng);
-            load(&mut bench, &batch);
-            let want = expected(&batch);
-            let mut gaps = StdRng::seed_from_u64(seed ^ 0x5eed);
-            let mut ready = StdRng::seed_from_u64(seed ^ 0xbeef);
-            let run = bench
-                .run(
-                    &batch.rays,
-                    || gaps.gen_bool(offer_p),
-                    || ready.gen_bool(ready_p),
-                    2_000_000,
-                )
-                .expect("every ray ends");
-            prop_assert_eq!(&run.words, &want, "seed {} batch {}", seed, b);
-            bench.idle(3);
-            prop_assert!(!bench.busy(), "busy after the batch");
-        }
+        batches_equal_result_words::<BvhTraversal>(seed, offer_p, ready_p, 3, 1..8)?;
+    }
+
+    /// Rays interleaved: batches longer than the contexts, so rays enter as others end.
+    #[test]
+    fn interleaved_equals_result_words(
+        seed in any::<u64>(),
+        offer_p in prop_oneof![Just(1.0f64), 0.2f64..1.0],
+        ready_p in prop_oneof![Just(1.0f64), 0.1f64..1.0],
+    ) {
+        batches_equal_result_words::<BvhInterleaved>(
+            seed, offer_p, ready_p, 3, 1..3 * RAYS_IN_FLIGHT,
+        )?;
     }
 }
 
@@ -354,31 +398,44 @@ fn refusals_and_orders_all_occur_in_the_random_batches() {
     let mut codes = [0usize; 5];
     let mut candidates = 0;
     let mut swapped = 0;
+    let mut refused_with_candidates = 0;
     for _ in 0..400 {
         let batch = random_batch(&mut rng);
         for r in &batch.rays {
-            let words = result_words(&batch.nodes, r, batch.order);
-            codes[((words.last().unwrap() >> 32) & 0xff) as usize] += 1;
+            let words = result_words(&batch.nodes, r, batch.order, 0);
+            let code = ((words.last().unwrap() >> 32) & 0xff) as usize;
+            codes[code] += 1;
             candidates += words.len() - 1;
+            if code != 0 && words.len() > 1 {
+                refused_with_candidates += 1;
+            }
             let other = match batch.order {
                 Order::NearFirst => Order::ChildOrder,
                 Order::ChildOrder => Order::NearFirst,
             };
-            if result_words(&batch.nodes, r, other) != words {
+            if result_words(&batch.nodes, r, other, 0) != words {
                 swapped += 1;
             }
         }
     }
     assert!(
-        codes.iter().all(|&c| c > 5) && candidates > 500 && swapped > 20,
-        "{codes:?} {candidates} {swapped}"
+        codes.iter().all(|&c| c > 5)
+            && candidates > 500
+            && swapped > 20
+            && refused_with_candidates > 5,
+        "{codes:?} {candidates} {swapped} {refused_with_candidates}"
     );
 }
 
-/// Deep chains, a full memory of nodes and the largest result: the counters and the buffer
-/// at their limits.
+/// Deep chains, a full memory of nodes and the largest result: the counters and the output
+/// FIFO at their limits.
 #[test]
 fn limits() {
+    limits_on::<BvhTraversal>();
+    limits_on::<BvhInterleaved>();
+}
+
+fn limits_on<B: BvhBlock>() {
     let ray = RayF32 {
         origin_m: [0.5, -0.25, 0.125],
         inverse_direction: [1.0, f32::INFINITY, -4.0],
@@ -386,13 +443,13 @@ fn limits() {
         t_max_m: f32::INFINITY,
     }
     .pack();
-    let mut bench = BvhBench::new(3);
+    let mut bench = Bench::<B>::new(3);
     for (nodes, order) in [
         (chain(STACK_DEPTH), Order::ChildOrder),
         (chain(STACK_DEPTH + 1), Order::ChildOrder),
         (chain(STACK_DEPTH - 1), Order::NearFirst),
         // Every node's two children are leaves or the next node: MAX_NODES visits, about
-        // 2 × MAX_NODES candidates, more than half the result buffer.
+        // 2 × MAX_NODES candidates, the candidate counter's largest use.
         (
             (0..MAX_NODES as u16)
                 .map(|i| UnitNode {
@@ -428,12 +485,8 @@ fn limits() {
         let words: Vec<[u64; NODE_WORDS]> = nodes.iter().map(UnitNode::pack).collect();
         bench.load(&words);
         bench.configure(nodes.len(), order);
-        let rays = [ray, ray, ray];
-        let want: Vec<u64> = rays
-            .iter()
-            .flat_map(|r| result_words(&nodes, r, order))
-            .collect();
-        // Slow output (one word in three clocks): the buffer fills and the traversal waits.
+        let rays = [ray; RAYS_IN_FLIGHT + 2];
+        // Slow output (one word in three clocks): the FIFO fills and the traversal waits.
         let mut k = 0u64;
         let run = bench
             .run(
@@ -446,7 +499,8 @@ fn limits() {
                 1_000_000,
             )
             .expect("every ray ends");
-        assert_eq!(run.words, want, "{} nodes", nodes.len());
+        let want = per_ray(&nodes, &rays, order, &run.tags);
+        assert_eq!(split(&run), want, "{} nodes", nodes.len());
     }
 }
 
@@ -511,7 +565,7 @@ fn visits_and_pops(nodes: &[UnitNode], words: &[u64; RAY_WORDS], order: Order) -
 #[test]
 fn cycles_per_ray_and_per_visit() {
     let mut rng = StdRng::seed_from_u64(40);
-    let mut bench = BvhBench::new(40);
+    let mut bench = Bench::<BvhTraversal>::new(40);
     let (mut cycles, mut rays_done, mut visits, mut pops) = (0u64, 0u64, 0u64, 0u64);
     const BATCHES: u64 = 6;
     for _ in 0..BATCHES {
@@ -529,11 +583,10 @@ fn cycles_per_ray_and_per_visit() {
         bench.load(&words);
         bench.configure(nodes.len(), Order::NearFirst);
         let run = bench.run(&rays, || true, || true, 1_000_000).unwrap();
-        let want: Vec<u64> = rays
-            .iter()
-            .flat_map(|r| result_words(&nodes, r, Order::NearFirst))
-            .collect();
-        assert_eq!(run.words, want);
+        // No input gaps: the tags run 0, 1, 2, ...
+        assert!(run.tags.iter().enumerate().all(|(k, &t)| t == k as u8));
+        let want = per_ray(&nodes, &rays, Order::NearFirst, &run.tags);
+        assert_eq!(split(&run), want);
         for r in &rays {
             let (v, p) = visits_and_pops(&nodes, r, Order::NearFirst);
             visits += v;
@@ -556,10 +609,99 @@ fn cycles_per_ray_and_per_visit() {
     assert!(cycles >= visits * VISIT_CYCLES as u64);
 }
 
+/// Rays interleaved, on the same trees and rays as `cycles_per_ray_and_per_visit` (no
+/// back-pressure, no input gaps). Structural facts checked, not timings: one operation (a
+/// node visit, a pop or an end word) issues a clock at most; and on every clock where all
+/// `RAYS_IN_FLIGHT` contexts hold a ray one issues, because at most `PIPELINE_CLOCKS`
+/// contexts can be busy (issued within the last `PIPELINE_CLOCKS` clocks) and the FIFO
+/// always has room when every word is taken.
+#[test]
+fn interleaved_cycles_per_ray_and_visits_per_clock() {
+    let mut rng = StdRng::seed_from_u64(40);
+    let mut bench = Bench::<BvhInterleaved>::new(40);
+    let (mut cycles, mut rays_done, mut visits, mut pops) = (0u64, 0u64, 0u64, 0u64);
+    let (mut full, mut issued_full, mut issued, mut visit_issues) = (0u64, 0u64, 0u64, 0u64);
+    let mut held = 0u64;
+    const BATCHES: u64 = 6;
+    for _ in 0..BATCHES {
+        let leaves: Vec<(u16, Aabb)> = (0..40).map(|k| (k, random_box(&mut rng))).collect();
+        let nodes = build_tree(&leaves);
+        let rays: Vec<[u64; RAY_WORDS]> = (0..50)
+            .map(|_| loop {
+                let r = random_ray(&mut rng, &nodes);
+                if grid_ray(&r).is_some() {
+                    break r;
+                }
+            })
+            .collect();
+        let words: Vec<[u64; NODE_WORDS]> = nodes.iter().map(UnitNode::pack).collect();
+        bench.load(&words);
+        bench.configure(nodes.len(), Order::NearFirst);
+        let run = bench
+            .run_observed(
+                &rays,
+                || true,
+                || true,
+                1_000_000,
+                |d| {
+                    let n = d.rays_held();
+                    held += n as u64;
+                    issued += u64::from(d.issuing());
+                    visit_issues += u64::from(d.issuing_visit());
+                    if n == RAYS_IN_FLIGHT {
+                        full += 1;
+                        issued_full += u64::from(d.issuing());
+                    }
+                },
+            )
+            .unwrap();
+        assert!(run.tags.iter().enumerate().all(|(k, &t)| t == k as u8));
+        let want = per_ray(&nodes, &rays, Order::NearFirst, &run.tags);
+        assert_eq!(split(&run), want);
+        for r in &rays {
+            let (v, p) = visits_and_pops(&nodes, r, Order::NearFirst);
+            visits += v;
+            pops += p;
+        }
+        cycles += run.cycles;
+        rays_done += rays.len() as u64;
+        bench.idle(4);
+    }
+    println!(
+        "{RAYS_IN_FLIGHT} rays in flight: {rays_done} rays, {visits} node visits ({:.2} a ray), \
+         {pops} pops: {cycles} clocks, {:.1} a ray, {:.2} node visits a clock; \
+         {:.2} rays held on average, all contexts held on {full} clocks ({:.0}%)",
+        visits as f64 / rays_done as f64,
+        cycles as f64 / rays_done as f64,
+        visits as f64 / cycles as f64,
+        held as f64 / cycles as f64,
+        100.0 * full as f64 / cycles as f64,
+    );
+    // Every visit, pop and end word is one issue, each on its own clock.
+    assert_eq!(visit_issues, visits);
+    assert_eq!(issued, visits + pops + rays_done);
+    assert!(cycles >= issued);
+    assert!(full > 0, "the contexts never filled");
+    assert_eq!(
+        issued_full, full,
+        "a clock with every context held issued nothing"
+    );
+}
+
 #[test]
 fn exports_verilog() {
-    let mut u = BvhTraversal::default();
-    u.connect_all();
-    let v = generate_verilog(&u);
-    assert!(v.contains("result_ready") && v.contains("diff * $signed(mant)"));
+    for v in [
+        generate_verilog(&{
+            let mut u = BvhTraversal::default();
+            u.connect_all();
+            u
+        }),
+        generate_verilog(&{
+            let mut u = BvhInterleaved::default();
+            u.connect_all();
+            u
+        }),
+    ] {
+        assert!(v.contains("result_ready") && v.contains("diff * $signed(mant)"));
+    }
 }

@@ -261,7 +261,8 @@ mod tests {
         );
         assert!(w.read_bytes(4094, &mut buf).is_err(), "out of bounds");
         // Words read in place: the same little-endian words, appended, the range invalidated.
-        w.write_bytes(1024, &[1, 0, 0, 0, 0xEF, 0xBE, 0xAD, 0xDE]).unwrap();
+        w.write_bytes(1024, &[1, 0, 0, 0, 0xEF, 0xBE, 0xAD, 0xDE])
+            .unwrap();
         let mut words = vec![7u32];
         w.read_words_le(1024, 2, &mut words).unwrap();
         assert_eq!(words, [7, 1, 0xDEAD_BEEF]);
@@ -269,7 +270,10 @@ mod tests {
             std::fs::read_to_string(class.join("sync_for_cpu")).unwrap(),
             UdmabufWindow::sync_command(1024, 8, FROM_DEVICE)
         );
-        assert!(w.read_words_le(4092, 2, &mut words).is_err(), "out of bounds");
+        assert!(
+            w.read_words_le(4092, 2, &mut words).is_err(),
+            "out of bounds"
+        );
         assert_eq!(words.len(), 3, "nothing appended on an error");
     }
 

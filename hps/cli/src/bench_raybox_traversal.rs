@@ -1,6 +1,7 @@
 //! `skylux bench raybox`, the traversal part (issue 22 item 4): a ray unit that holds the
 //! room's tree in block RAM and traverses it itself, **sized and projected from measured
-//! traversal counts**; no such unit is built yet. The counts come from an illuminance run on
+//! traversal counts**, before the unit was built (the built unit: `bench_raybox_unit`). The
+//! counts come from an illuminance run on
 //! each room (`engine::traversal_stats`): the engine's traversals, and a sample of them again
 //! on a tree of one primitive a leaf (the unit's), where the unit would traverse each query
 //! over its whole interval and send every crossed leaf as a candidate, and the HPS would test
@@ -20,7 +21,7 @@ pub(crate) const A9_HZ: f64 = 925e6;
 pub(crate) const A9_CORES: f64 = 2.0;
 /// Cortex-A9 cycles per f64 slab test (`bench_raybox::A9_CYCLES_PER_TEST`, an estimate from
 /// the operation mix).
-const A9_CYCLES_PER_BOX: f64 = 60.0;
+pub(crate) const A9_CYCLES_PER_BOX: f64 = 60.0;
 /// **Estimate**: the software traversal's own work per interior node besides its two box
 /// tests (load the pair of boxes, order the children, push or pop the stack): about 20
 /// instructions, single-issue bound by their loads.
@@ -315,8 +316,8 @@ pub fn run(paths: u32) -> anyhow::Result<serde_json::Value> {
         }));
     }
     Ok(serde_json::json!({
-        "status": "modelled: a design sized and projected from measured traversal counts; no \
-                   RTL of it yet (issue 22 item 4)",
+        "status": "modelled: the sizing from measured traversal counts that came before the \
+                   unit was built (issue 22 item 4; the built unit: bvh_unit)",
         "rooms": out,
         "constants": {
             "a9_cycles_per_box": A9_CYCLES_PER_BOX,

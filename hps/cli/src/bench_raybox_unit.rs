@@ -2,13 +2,13 @@
 //! illuminance run goes through the unit's golden model attached to the engine
 //! (`World::attach_bvh_unit`; bit-identical to software, `tests/tests/bvh_unit_rooms.rs`),
 //! which counts what the unit and the HPS do per ray; a sample of the run's rays is then
-//! timed on the cycle-accurate RTL block (`skylux_rtl::raybox::BvhTraversal`) loaded with the
-//! room's tree. The projection takes the least of three rates: the fabric's (measured cycles
+//! timed on the cycle-accurate RTL block (`skylux_rtl::bvh::BvhInterleaved`, rays
+//! interleaved) loaded with the room's tree. The projection takes the least of three rates: the fabric's (measured cycles
 //! a ray), the port's (beats a ray) and the HPS's (its share of a ray, every constant sourced
 //! or marked an estimate), against the A9 software estimate of the same run.
 
 use crate::bench_raybox_traversal::{
-    a9_cycles, bench_rooms, load_room, A9_CORES, A9_CYCLES_PER_CANDIDATE_READ,
+    a9_cycles, bench_rooms, load_room, A9_CORES, A9_CYCLES_PER_BOX, A9_CYCLES_PER_CANDIDATE_READ,
     A9_CYCLES_PER_PRIMITIVE, A9_HZ, A9_STREAM_BYTES_PER_S, FABRIC_HZ,
 };
 use anyhow::Context;
@@ -17,7 +17,9 @@ use skylux_hps::engine::{illuminance, openings, traversal_stats, Settings, World
 use skylux_hps::fpga::bvh_unit::{
     BvhUnitBackend, BvhUnitError, GoldenBvhUnit, NodeWords, RayWords,
 };
-use skylux_regmap::bvh_format::{result_words, traverse_counting, Order, UnitNode, RAY_WORDS};
+use skylux_regmap::bvh_format::{
+    result_words, split_rays, traverse_counting, Order, UnitNode, RAY_WORDS,
+};
 use skylux_rtl::bvh::bench::BvhBench;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, RwLock};
@@ -84,6 +86,8 @@ struct UnitCounts {
     node_visits_per_ray: f64,
     candidates_per_ray: f64,
     primitives_per_ray: f64,
+    /// f64 box tests of candidates near the interval's end (`engine::bvh_unit::FAR_END_M`).
+    far_end_box_tests_per_ray: f64,
     closest_share: f64,
     primitives_per_closest_ray: f64,
     primitives_per_shadow_ray: f64,
@@ -108,6 +112,7 @@ impl UnitCounts {
             "node_visits_per_ray": self.node_visits_per_ray,
             "candidates_per_ray": self.candidates_per_ray,
             "primitives_per_ray": self.primitives_per_ray,
+            "far_end_box_tests_per_ray": self.far_end_box_tests_per_ray,
             "closest_share": self.closest_share,
             "primitives_per_closest_ray": self.primitives_per_closest_ray,
             "primitives_per_shadow_ray": self.primitives_per_shadow_ray,
@@ -138,12 +143,13 @@ fn project(counts: &UnitCounts, rtl: &RtlTiming, a9_cycles_per_query: f64) -> se
     let hps_cycles = A9_CYCLES_PER_RAY_SENT
         + (counts.candidates_per_ray + 1.0) * read_cycles_per_beat
         + counts.candidates_per_ray * A9_CYCLES_PER_CANDIDATE_READ
-        + counts.primitives_per_ray * A9_CYCLES_PER_PRIMITIVE;
+        + counts.primitives_per_ray * A9_CYCLES_PER_PRIMITIVE
+        + counts.far_end_box_tests_per_ray * A9_CYCLES_PER_BOX;
     let hps = A9_CORES * A9_HZ / hps_cycles;
     let projected = fabric.min(port).min(hps);
     let a9 = A9_CORES * A9_HZ / a9_cycles_per_query;
     let bound = if projected == fabric {
-        "the fabric (one ray in flight)"
+        "the fabric (rays interleaved)"
     } else if projected == port {
         "the 64-bit f2sdram port"
     } else {
@@ -212,6 +218,7 @@ pub fn run(paths: u32) -> anyhow::Result<serde_json::Value> {
                 .unwrap_or(0)),
             candidates_per_ray: per(unit.stats.candidates.load(Ordering::Relaxed)),
             primitives_per_ray: per(unit.stats.primitives.load(Ordering::Relaxed)),
+            far_end_box_tests_per_ray: per(unit.stats.far_end_box_tests.load(Ordering::Relaxed)),
             closest_share: per(closest_rays),
             primitives_per_closest_ray: closest_primitives as f64 / closest_rays.max(1) as f64,
             primitives_per_shadow_ray: (primitives - closest_primitives) as f64
@@ -247,8 +254,9 @@ pub fn run(paths: u32) -> anyhow::Result<serde_json::Value> {
 }
 
 /// Times `rays` on the cycle-accurate block loaded with `nodes`: each order's rays as one
-/// batch streamed back to back, results always taken (the fabric's own rate), the words
-/// compared with the golden model's.
+/// batch streamed back to back from an idle block (tags 0, 1, ...), results always taken (the
+/// fabric's own rate), each ray's words (told apart by tag: rays may interleave) compared
+/// with the golden model's.
 pub fn time_on_rtl(nodes: &[NodeWords], rays: &[(Order, RayWords)]) -> anyhow::Result<RtlTiming> {
     let unpacked: Vec<UnitNode> = nodes
         .iter()
@@ -271,12 +279,10 @@ pub fn time_on_rtl(nodes: &[NodeWords], rays: &[(Order, RayWords)]) -> anyhow::R
         if batch.is_empty() {
             continue;
         }
-        let mut golden = Vec::new();
         for ray in &batch {
             let mut visits = 0;
             let _ = traverse_counting(&unpacked, ray, order, &mut visits);
             timing.node_visits += visits as u64;
-            golden.extend(result_words(&unpacked, ray, order));
         }
         let mut bench = BvhBench::new(0x5eed);
         bench.idle(2);
@@ -290,7 +296,15 @@ pub fn time_on_rtl(nodes: &[NodeWords], rays: &[(Order, RayWords)]) -> anyhow::R
             .context("the RTL block did not finish the batch")?;
         timing.cycles += run.cycles;
         timing.result_words += run.words.len() as u64;
-        timing.matches_golden &= run.words == golden;
+        // The tags the block gave (0, 1, ... modulo 256: the rays come back to back).
+        let golden: Vec<Vec<u64>> = batch
+            .iter()
+            .zip(&run.tags)
+            .map(|(ray, &tag)| result_words(&unpacked, ray, order, tag))
+            .collect();
+        timing.matches_golden &= run.tags.len() == batch.len()
+            && run.tags.iter().enumerate().all(|(k, &t)| t == k as u8)
+            && split_rays(&run.words, &run.tags) == Some(golden);
     }
     Ok(timing)
 }

@@ -1,13 +1,14 @@
 //! The traversal core: the node memory, one ray in flight through two slab lanes (one per
-//! child), the per-ray stack and the result buffer. Its output is
-//! `skylux_regmap::bvh_format::result_words`, word for word.
+//! child), the per-ray stack and a small output FIFO. Its output is
+//! `skylux_regmap::bvh_format::result_words` (format v2: tagged words, candidates streamed
+//! as found), word for word.
 
 use super::front::{RayFrontEnd, CB3, MB3, SB3};
 use crate::raybox::SlabLane;
 use rust_hdl::prelude::*;
 use skylux_regmap::bvh_format::{
-    Refusal, MAX_NODES, NODE_INDEX_BITS, NODE_WORDS, RAY_WORDS, REF_INDEX_MASK, REF_LEAF,
-    REF_VALID, RESULT_END_BIT, STACK_DEPTH,
+    Refusal, CANDIDATE_TAG_SHIFT, END_TAG_SHIFT, MAX_NODES, NODE_INDEX_BITS, NODE_WORDS, RAY_WORDS,
+    REF_INDEX_MASK, REF_LEAF, REF_VALID, RESULT_END_BIT, STACK_DEPTH, TAG_BITS,
 };
 use skylux_regmap::raybox_format::T_BITS;
 
@@ -24,14 +25,18 @@ const SP_BITS: usize = STACK_ADDRESS_BITS + 1;
 /// A stack entry: `[31:0]` t_near, `[47:32]` reference; its bits [45:0] are a candidate
 /// word's.
 const ENTRY_BITS: usize = 48;
-/// The result buffer holds 2^11 entries: a ray writes at most 2 × `MAX_NODES` candidates
-/// (each visit takes at most one child and pushes at most one) and its end word, so a ray
-/// always fits behind the words already committed and the buffer cannot deadlock.
-pub const RESULT_BUFFER_BITS: usize = 11;
+/// The output FIFO holds 2^4 words: candidates stream out as found (format v2), so it only
+/// smooths the reader's pauses; the traversal waits while it is full.
+pub const RESULT_BUFFER_BITS: usize = 4;
 const POINTER_BITS: usize = RESULT_BUFFER_BITS + 1;
-/// A buffered result word: its bits [45:0], and the end bit at 46.
-const RESULT_BITS: usize = 47;
-const CANDIDATE_COUNT_BITS: usize = RESULT_BUFFER_BITS;
+/// Width of a ray's tag (`bvh_format::TAG_BITS`).
+const TAG_WIDTH: usize = TAG_BITS as usize;
+/// A FIFO word: the result word's bits [53:0] (a candidate's fields and tag; an end word's
+/// use [47:0]), and the end bit at 54.
+const RESULT_BITS: usize = 55;
+/// A ray writes at most 2 × `MAX_NODES` candidates (each visit takes at most one child and
+/// pushes at most one), under 2^11.
+const CANDIDATE_COUNT_BITS: usize = 11;
 
 // The field positions below are written for these formats.
 const _: () = assert!(
@@ -43,7 +48,9 @@ const _: () = assert!(
         && REF_LEAF == 1 << 14
         && REF_INDEX_MASK as usize == (1 << INDEX_BITS) - 1
         && RESULT_END_BIT == 63
-        && 2 * MAX_NODES < 1 << RESULT_BUFFER_BITS
+        && CANDIDATE_TAG_SHIFT == 46
+        && END_TAG_SHIFT == 40
+        && TAG_WIDTH == 8
         && 2 * MAX_NODES < 1 << CANDIDATE_COUNT_BITS
         && TB == 32,
     "the traversal follows skylux_regmap::bvh_format"
@@ -74,14 +81,16 @@ pub enum TraversalState {
 /// - Rays: `RAY_WORDS` words on `ray_data`, each taken on a clock with `ray_valid` and
 ///   `ray_ready` high. The next ray is taken while one is traversed.
 /// - Results: `result_data` is valid with `result_valid` and taken with `result_ready`.
-///   A ray's candidates go to a buffer and are released with its end word, or dropped on
-///   a refusal (the end word alone), so the output is `result_words` exactly.
+///   A ray's candidates go out as found, then its end word (counting them, refused or not),
+///   each word with the ray's tag: the output is `result_words` exactly.
+/// - Tags: `tag_count` restarts at 0 on every clock `busy` is low and counts the rays taken
+///   (`bvh_format`'s rule).
 ///
 /// Timing (one ray in flight): a node visit takes `VISIT_CYCLES` clocks (the node memory is
 /// read at the address of the next visit, so only the lanes' `LANE_LATENCY` adds), an entry
 /// taken from the stack one clock, a ray 3 more (its start, the empty stack, its end word).
-/// The next ray's words are taken during the traversal; its result words leave 2 clocks
-/// after its end word is written.
+/// The next ray's words are taken during the traversal; a word leaves 2 clocks after it is
+/// written.
 #[derive(LogicBlock)]
 pub struct BvhTraversal {
     pub clock: Signal<In, Clock>,
@@ -138,9 +147,11 @@ pub struct BvhTraversal {
     pushed_entry: DFF<Bits<ENTRY_BITS>>,
     refusal: DFF<Bits<8>>,
     candidates: DFF<Bits<CANDIDATE_COUNT_BITS>>,
-    // Result buffer: [read, commit) is released, [commit, write) the current ray's.
+    /// The ray being traversed's tag, and the next ray's.
+    tag: DFF<Bits<TAG_WIDTH>>,
+    tag_count: DFF<Bits<TAG_WIDTH>>,
+    // Output FIFO: [read, write) holds words written at earlier edges.
     write_ptr: DFF<Bits<POINTER_BITS>>,
-    commit_ptr: DFF<Bits<POINTER_BITS>>,
     read_ptr: DFF<Bits<POINTER_BITS>>,
     head_valid: DFF<Bit>,
 
@@ -151,8 +162,7 @@ pub struct BvhTraversal {
     read_ptr_next: Signal<Local, Bits<POINTER_BITS>>,
     fill: Signal<Local, Bits<POINTER_BITS>>,
     room: Signal<Local, Bit>,
-    end_ptr: Signal<Local, Bits<POINTER_BITS>>,
-    end_fill: Signal<Local, Bits<POINTER_BITS>>,
+    is_busy: Signal<Local, Bit>,
     limit_index: Signal<Local, Bits<INDEX_BITS>>,
     hit0: Signal<Local, Bit>,
     hit1: Signal<Local, Bit>,
@@ -230,8 +240,9 @@ impl Default for BvhTraversal {
             pushed_entry: Default::default(),
             refusal: Default::default(),
             candidates: Default::default(),
+            tag: Default::default(),
+            tag_count: Default::default(),
             write_ptr: Default::default(),
-            commit_ptr: Default::default(),
             read_ptr: Default::default(),
             head_valid: Default::default(),
             current_next: Default::default(),
@@ -240,8 +251,7 @@ impl Default for BvhTraversal {
             read_ptr_next: Default::default(),
             fill: Default::default(),
             room: Default::default(),
-            end_ptr: Default::default(),
-            end_fill: Default::default(),
+            is_busy: Default::default(),
             limit_index: Default::default(),
             hit0: Default::default(),
             hit1: Default::default(),
@@ -296,8 +306,9 @@ impl Logic for BvhTraversal {
             pushed_entry,
             refusal,
             candidates,
+            tag,
+            tag_count,
             write_ptr,
-            commit_ptr,
             read_ptr,
             head_valid
         );
@@ -393,8 +404,6 @@ impl Logic for BvhTraversal {
         self.results.write_data.next = 0.into();
         self.fill.next = self.write_ptr.q.val() - self.read_ptr.q.val();
         self.room.next = self.fill.val() != self.buffer_size.val();
-        self.end_ptr.next = self.write_ptr.q.val();
-        self.end_fill.next = 0.into();
         self.limit_index.next = bit_cast::<INDEX_BITS, NODE_COUNT_BITS>(self.node_limit.q.val());
 
         // The lanes' answers for the node's two children, as stack entries.
@@ -427,6 +436,8 @@ impl Logic for BvhTraversal {
             TraversalState::Idle => {
                 if self.ray_full.q.val() {
                     self.ray_full.d.next = false;
+                    self.tag.d.next = self.tag_count.q.val();
+                    self.tag_count.d.next = self.tag_count.q.val() + 1;
                     self.origin.d.next = self.front.origin.val();
                     self.mant.d.next = self.front.mant.val();
                     self.shift.d.next = self.front.shift.val();
@@ -513,35 +524,25 @@ impl Logic for BvhTraversal {
                 }
             }
             TraversalState::EndWord => {
-                // A refused ray's candidates are dropped: its end word goes where they began.
-                if self.refusal.q.val().any() {
-                    self.end_ptr.next = self.commit_ptr.q.val();
-                }
-                self.end_fill.next = self.end_ptr.val() - self.read_ptr.q.val();
-                if self.end_fill.val() != self.buffer_size.val() {
+                // The candidates written, refused or not.
+                if self.room.val() {
                     self.results.write_enable.next = true;
-                    self.results.write_address.next =
-                        self.end_ptr.val().get_bits::<RESULT_BUFFER_BITS>(0);
                     self.results.write_data.next = self.end_flag.val()
-                        | (bit_cast::<RESULT_BITS, 8>(self.refusal.q.val()) << 32);
-                    if !self.refusal.q.val().any() {
-                        self.results.write_data.next = self.end_flag.val()
-                            | bit_cast::<RESULT_BITS, CANDIDATE_COUNT_BITS>(
-                                self.candidates.q.val(),
-                            );
-                    }
-                    self.write_ptr.d.next = self.end_ptr.val() + 1;
-                    self.commit_ptr.d.next = self.end_ptr.val() + 1;
+                        | bit_cast::<RESULT_BITS, CANDIDATE_COUNT_BITS>(self.candidates.q.val())
+                        | (bit_cast::<RESULT_BITS, 8>(self.refusal.q.val()) << 32)
+                        | (bit_cast::<RESULT_BITS, TAG_WIDTH>(self.tag.q.val()) << 40);
+                    self.write_ptr.d.next = self.write_ptr.q.val() + 1;
                     self.state.d.next = TraversalState::Idle;
                 }
             }
         }
 
-        // ---- a candidate into the buffer ------------------------------------------------
+        // ---- a candidate into the FIFO ------------------------------------------------
         if self.emit.val() {
             self.results.write_enable.next = true;
             self.results.write_data.next =
-                bit_cast::<RESULT_BITS, 46>(self.emit_entry.val().get_bits::<46>(0));
+                bit_cast::<RESULT_BITS, 46>(self.emit_entry.val().get_bits::<46>(0))
+                    | (bit_cast::<RESULT_BITS, TAG_WIDTH>(self.tag.q.val()) << 46);
             self.write_ptr.d.next = self.write_ptr.q.val() + 1;
             self.candidates.d.next = self.candidates.q.val() + 1;
         }
@@ -558,26 +559,31 @@ impl Logic for BvhTraversal {
         self.sp_below.next = self.sp_next.val() - 1;
         self.stack.read_address.next = self.sp_below.val().get_bits::<STACK_ADDRESS_BITS>(0);
 
-        // ---- results out: the buffer read at the next clock's pointer --------------------
+        // ---- results out: the FIFO read at the next clock's pointer ----------------------
         self.read_ptr_next.next = self.read_ptr.q.val();
         if self.head_valid.q.val() & self.result_ready.val() {
             self.read_ptr_next.next = self.read_ptr.q.val() + 1;
         }
         self.read_ptr.d.next = self.read_ptr_next.val();
         self.results.read_address.next = self.read_ptr_next.val().get_bits::<RESULT_BUFFER_BITS>(0);
-        // Words before the commit pointer were written at an earlier edge.
-        self.head_valid.d.next = self.read_ptr_next.val() != self.commit_ptr.q.val();
+        // Words before the write pointer were written at an earlier edge.
+        self.head_valid.d.next = self.read_ptr_next.val() != self.write_ptr.q.val();
         self.head.next = 0.into();
         if self.head_valid.q.val() {
             self.head.next = self.results.read_data.val();
         }
         self.result_valid.next = self.head_valid.q.val();
-        self.result_data.next = bit_cast::<64, 46>(self.head.val().get_bits::<46>(0))
-            | (bit_cast::<64, 1>(self.head.val().get_bits::<1>(46)) << 63);
+        self.result_data.next = bit_cast::<64, 54>(self.head.val().get_bits::<54>(0))
+            | (bit_cast::<64, 1>(self.head.val().get_bits::<1>(54)) << 63);
 
-        self.busy.next = (self.state.q.val() != TraversalState::Idle)
+        self.is_busy.next = (self.state.q.val() != TraversalState::Idle)
             | self.ray_full.q.val()
             | self.ray_word_index.q.val().any()
             | (self.read_ptr.q.val() != self.write_ptr.q.val());
+        self.busy.next = self.is_busy.val();
+        // The tag rule: restart while idle (a ray is taken only while busy).
+        if !self.is_busy.val() {
+            self.tag_count.d.next = 0.into();
+        }
     }
 }

@@ -6,8 +6,8 @@
 //! golden model ([`GoldenBvhUnit`]) answers bit for bit as the unit does.
 
 use skylux_regmap::bvh_format::{
-    pack_candidate, pack_end, traverse_counting, Order, UnitNode, MAX_NODES, NODE_WORDS, RAY_WORDS,
-    RESULT_END_BIT,
+    pack_candidate, pack_end, result_tag, traverse_counting, Order, UnitNode, MAX_NODES,
+    NODE_WORDS, RAY_WORDS, RESULT_END_BIT,
 };
 use std::sync::atomic::{AtomicU64, Ordering};
 
@@ -29,6 +29,8 @@ pub enum BvhUnitError {
     NoEnd { words: usize },
     #[error("the BVH unit's end word counts {counted} candidates, {written} were written")]
     CountMismatch { counted: u32, written: usize },
+    #[error("a BVH unit result word carries tag {found}, its ray's end word {expected}")]
+    TagMismatch { found: u8, expected: u8 },
     #[error("BVH unit fault: {0}")]
     Fault(String),
 }
@@ -37,7 +39,8 @@ pub enum BvhUnitError {
 pub trait BvhUnitBackend: Send + Sync {
     /// Loads the node memory (node 0 first).
     fn load(&mut self, nodes: &[NodeWords]) -> Result<(), BvhUnitError>;
-    /// Appends the unit's result words for one ray (its candidates, then its end word).
+    /// Appends the unit's result words for one ray (its candidates, then its end word; for a
+    /// refused ray the candidates found before the refusal, which the caller ignores).
     fn traverse(
         &self,
         order: Order,
@@ -46,7 +49,8 @@ pub trait BvhUnitBackend: Send + Sync {
     ) -> Result<(), BvhUnitError>;
 }
 
-/// The golden model as a backend.
+/// The golden model as a backend. It answers each ray alone, as a unit that was idle before
+/// the ray (`bvh_format`'s tag rule), so every word carries tag 0.
 #[derive(Debug, Default)]
 pub struct GoldenBvhUnit {
     nodes: Vec<UnitNode>,
@@ -80,20 +84,19 @@ impl BvhUnitBackend for GoldenBvhUnit {
             return Err(BvhUnitError::Empty);
         }
         let mut visits = 0;
-        match traverse_counting(&self.nodes, ray, order, &mut visits) {
-            Ok(c) => {
-                results.extend(c.iter().map(|&c| pack_candidate(c)));
-                results.push(pack_end(c.len() as u32, None));
-            }
-            Err(r) => results.push(pack_end(0, Some(r))),
-        }
+        let (candidates, refusal) = traverse_counting(&self.nodes, ray, order, &mut visits);
+        results.extend(candidates.iter().map(|&c| pack_candidate(c, GOLDEN_TAG)));
+        results.push(pack_end(candidates.len() as u32, refusal, GOLDEN_TAG));
         self.node_visits.fetch_add(visits as u64, Ordering::Relaxed);
         Ok(())
     }
 }
 
+/// The tag of every word the golden backend writes (it answers one ray after an idle unit).
+pub const GOLDEN_TAG: u8 = 0;
+
 /// Checks that `words` is one ray's complete answer: candidates, then an end word counting
-/// them. Returns the end word.
+/// them (refused or not), all with the end word's tag. Returns the end word.
 pub fn check_answer(words: &[u64]) -> Result<u64, BvhUnitError> {
     let Some((&end, candidates)) = words.split_last() else {
         return Err(BvhUnitError::NoEnd { words: 0 });
@@ -102,9 +105,15 @@ pub fn check_answer(words: &[u64]) -> Result<u64, BvhUnitError> {
     if !is_end(end) || candidates.iter().any(|&w| is_end(w)) {
         return Err(BvhUnitError::NoEnd { words: words.len() });
     }
+    let expected = result_tag(end);
+    if let Some(&w) = candidates.iter().find(|&&w| result_tag(w) != expected) {
+        return Err(BvhUnitError::TagMismatch {
+            found: result_tag(w),
+            expected,
+        });
+    }
     let counted = end as u32;
-    let refused = (end >> 32) as u8 != 0;
-    if !refused && counted as usize != candidates.len() {
+    if counted as usize != candidates.len() {
         return Err(BvhUnitError::CountMismatch {
             counted,
             written: candidates.len(),
@@ -116,7 +125,7 @@ pub fn check_answer(words: &[u64]) -> Result<u64, BvhUnitError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use skylux_regmap::bvh_format::{pack_candidate, pack_end, Candidate};
+    use skylux_regmap::bvh_format::{Candidate, Refusal};
 
     #[test]
     fn load_refuses_bad_memories() {
@@ -144,13 +153,27 @@ mod tests {
 
     #[test]
     fn answers_are_checked() {
-        let c = pack_candidate(Candidate { leaf: 3, t_near: 9 });
-        assert!(check_answer(&[c, pack_end(1, None)]).is_ok());
+        let c = pack_candidate(Candidate { leaf: 3, t_near: 9 }, 5);
+        assert!(check_answer(&[c, pack_end(1, None, 5)]).is_ok());
+        // A refused ray's end word counts the candidates written before the refusal.
+        let refused = pack_end(1, Some(Refusal::Runaway), 5);
+        assert_eq!(check_answer(&[c, refused]), Ok(refused));
         assert_eq!(
-            check_answer(&[c, c, pack_end(1, None)]),
+            check_answer(&[c, c, pack_end(1, None, 5)]),
             Err(BvhUnitError::CountMismatch {
                 counted: 1,
                 written: 2
+            })
+        );
+        assert_eq!(
+            check_answer(&[pack_end(0, Some(Refusal::StackOverflow), 5)]).map(|_| ()),
+            Ok(())
+        );
+        assert_eq!(
+            check_answer(&[c, pack_end(1, None, 6)]),
+            Err(BvhUnitError::TagMismatch {
+                found: 5,
+                expected: 6
             })
         );
         assert_eq!(check_answer(&[c]), Err(BvhUnitError::NoEnd { words: 1 }));
