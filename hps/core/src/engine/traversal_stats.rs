@@ -231,9 +231,14 @@ pub fn measure(
     counter.counting.store(true, Ordering::Relaxed);
     super::illuminance(&world, sensors, settings, &|_, _| {})?;
     let unit_tree = Bvh::build_with_leaf_size(&world.primitive_bounds(), 1);
-    let unit = Arc::new(Counter::default());
+    let counting = || {
+        let c = Counter::default();
+        c.counting.store(true, Ordering::Relaxed);
+        Arc::new(c)
+    };
+    let unit = counting();
     let test = CountingBoxTest(unit.clone());
-    let (whole, pruned) = (Arc::new(Counter::default()), Arc::new(Counter::default()));
+    let (whole, pruned) = (counting(), counting());
     let (whole_test, pruned_test) = (
         CountingBoxTest(whole.clone()),
         CountingBoxTest(pruned.clone()),
