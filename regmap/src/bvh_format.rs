@@ -78,7 +78,7 @@
 //! word; the HPS discards them and answers the ray in software. So the end word always
 //! counts the candidate words written with its tag.
 
-use crate::raybox_format::{test, WorkItem, COORD_BITS, MANT_MAX};
+use crate::raybox_format::{test, three, unthree, WorkItem, MANT_MAX};
 use alloc::vec::Vec;
 
 /// 64-bit words per node.
@@ -160,28 +160,6 @@ pub struct UnitNode {
     pub lower: [[i32; 3]; 2],
     pub upper: [[i32; 3]; 2],
     pub reference: [u16; 2],
-}
-
-const fn mask(bits: u32) -> u64 {
-    (1u64 << bits) - 1
-}
-
-const fn sext(v: u64, bits: u32) -> i32 {
-    (((v & mask(bits)) << (64 - bits)) as i64 >> (64 - bits)) as i32
-}
-
-const fn three(v: [i32; 3]) -> u64 {
-    (v[0] as u64 & mask(COORD_BITS))
-        | ((v[1] as u64 & mask(COORD_BITS)) << COORD_BITS)
-        | ((v[2] as u64 & mask(COORD_BITS)) << (2 * COORD_BITS))
-}
-
-const fn unthree(w: u64) -> [i32; 3] {
-    [
-        sext(w, COORD_BITS),
-        sext(w >> COORD_BITS, COORD_BITS),
-        sext(w >> (2 * COORD_BITS), COORD_BITS),
-    ]
 }
 
 impl UnitNode {

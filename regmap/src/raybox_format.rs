@@ -106,22 +106,22 @@ pub struct TestResult {
     pub t_near: i32,
 }
 
-const fn mask(bits: u32) -> u64 {
+pub(crate) const fn mask(bits: u32) -> u64 {
     (1u64 << bits) - 1
 }
 
 /// Sign-extends the low `bits` bits of `v`.
-const fn sext(v: u64, bits: u32) -> i32 {
+pub(crate) const fn sext(v: u64, bits: u32) -> i32 {
     (((v & mask(bits)) << (64 - bits)) as i64 >> (64 - bits)) as i32
 }
 
-const fn three(v: [i32; 3]) -> u64 {
+pub(crate) const fn three(v: [i32; 3]) -> u64 {
     (v[0] as u64 & mask(COORD_BITS))
         | ((v[1] as u64 & mask(COORD_BITS)) << COORD_BITS)
         | ((v[2] as u64 & mask(COORD_BITS)) << (2 * COORD_BITS))
 }
 
-const fn unthree(w: u64) -> [i32; 3] {
+pub(crate) const fn unthree(w: u64) -> [i32; 3] {
     [
         sext(w, COORD_BITS),
         sext(w >> COORD_BITS, COORD_BITS),
