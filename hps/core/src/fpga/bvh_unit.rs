@@ -179,4 +179,31 @@ mod tests {
         assert_eq!(check_answer(&[c]), Err(BvhUnitError::NoEnd { words: 1 }));
         assert_eq!(check_answer(&[]), Err(BvhUnitError::NoEnd { words: 0 }));
     }
+
+    proptest::proptest! {
+        /// Whatever words a faulty unit writes, the check answers without a panic, and what it
+        /// accepts is one ray's answer: one end word, last, counting the words before it, all
+        /// of one tag.
+        #[test]
+        fn any_words_are_checked_without_panic(
+            words in proptest::collection::vec(proptest::prelude::any::<u64>(), 0..12),
+            end_last in proptest::prelude::any::<bool>(),
+        ) {
+            let mut words = words;
+            if end_last && !words.is_empty() {
+                let n = words.len() as u64 - 1;
+                let last = words.len() - 1;
+                words[last] = (words[last] & !0xFFFF_FFFF) | n | (1 << RESULT_END_BIT);
+            }
+            if let Ok(end) = check_answer(&words) {
+                proptest::prop_assert_eq!(Some(&end), words.last());
+                proptest::prop_assert_eq!(end as u32 as usize, words.len() - 1);
+                proptest::prop_assert!(words.iter().all(|&w| result_tag(w) == result_tag(end)));
+                proptest::prop_assert_eq!(
+                    words.iter().filter(|&&w| w >> RESULT_END_BIT == 1).count(),
+                    1
+                );
+            }
+        }
+    }
 }
